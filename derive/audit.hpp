@@ -1,0 +1,28 @@
+// The derivation audit, for people (Markdown) and for machines (JSON). Both are pure functions of
+// the derivation: no timestamps, no paths, stable order.
+#pragma once
+
+#include "derivation.hpp"
+
+#include <string>
+
+namespace billiards::derive {
+
+/// The paper the audit checks, cited in every output.
+inline constexpr const char* paper_citation = "S. T. Parkin, \"Billiard Ball Physics\", 2023";
+/// What the paper's model covers.
+inline constexpr const char* model_scope =
+    "frictionless, spinless balls in instantaneous contact (perfectly elastic)";
+
+/// The GiNaC library version the derivation ran with, e.g. "1.8.6".
+std::string ginac_version();
+
+std::string audit_markdown(const Derivation& derivation);
+std::string audit_json(const Derivation& derivation);
+
+/// The latex of what the audit shows for each side of a claim: the display form when one is set,
+/// otherwise the expression itself.
+std::string paper_latex(const Claim& claim);
+std::string derived_latex(const Claim& claim);
+
+}  // namespace billiards::derive

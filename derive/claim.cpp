@@ -1,0 +1,104 @@
+#include "claim.hpp"
+
+#include "algebra.hpp"
+
+#include <algorithm>
+#include <numeric>
+
+namespace billiards::derive {
+
+using GiNaC::ex;
+
+namespace {
+
+// Zero of a single difference: normal() brings it to numerator/denominator; the numerator is then
+// reduced modulo each constraint (n·n = 1). Returns what is left, 0 when the identity holds.
+ex identity_residual(const ex& difference, const GiNaC::lst& constraints) {
+  const ex numerator_denominator = GiNaC::normal(difference).numer_denom();
+  ex numerator = numerator_denominator.op(0).expand();
+  for (const ex& relation : constraints) numerator = reduce_modulo(numerator, relation);
+  return GiNaC::normal(numerator / numerator_denominator.op(1));
+}
+
+// Componentwise residuals of two expressions that are both lists, or both single expressions.
+ex residual_of(const ex& derived, const ex& paper, const GiNaC::lst& constraints) {
+  if (GiNaC::is_a<GiNaC::lst>(derived) != GiNaC::is_a<GiNaC::lst>(paper)) return derived - paper;
+  if (!GiNaC::is_a<GiNaC::lst>(derived)) return identity_residual(derived - paper, constraints);
+  if (derived.nops() != paper.nops()) return derived - paper;
+  GiNaC::lst residuals;
+  for (std::size_t i = 0; i < derived.nops(); ++i) {
+    residuals.append(identity_residual(derived.op(i) - paper.op(i), constraints));
+  }
+  return residuals;
+}
+
+bool all_zero(const ex& residual) {
+  if (!GiNaC::is_a<GiNaC::lst>(residual)) return residual.is_zero();
+  return std::all_of(residual.begin(), residual.end(), [](const ex& r) { return r.is_zero(); });
+}
+
+// The paper's elements permuted so that they pair with the derived ones, when some order does.
+ex residual_as_sets(const ex& derived, const ex& paper, const GiNaC::lst& constraints) {
+  if (!GiNaC::is_a<GiNaC::lst>(derived) || !GiNaC::is_a<GiNaC::lst>(paper) ||
+      derived.nops() != paper.nops()) {
+    return residual_of(derived, paper, constraints);
+  }
+  std::vector<std::size_t> order(paper.nops());
+  std::iota(order.begin(), order.end(), 0);
+  ex first_residual;
+  bool first = true;
+  do {
+    GiNaC::lst permuted;
+    for (std::size_t i : order) permuted.append(paper.op(i));
+    const ex residual = residual_of(derived, permuted, constraints);
+    if (all_zero(residual)) return residual;
+    if (first) first_residual = residual;
+    first = false;
+  } while (std::next_permutation(order.begin(), order.end()));
+  return first_residual;
+}
+
+}  // namespace
+
+void check(Claim& claim) {
+  switch (claim.comparison) {
+    case Comparison::assumption:
+      claim.verdict = Verdict::assumption;
+      claim.residual = 0;
+      return;
+    case Comparison::nonnegative:
+      claim.verdict = is_manifestly_nonnegative(claim.derived_expression) ? Verdict::verified
+                                                                          : Verdict::failed;
+      claim.residual = claim.verdict == Verdict::verified ? ex(0) : GiNaC::factor(claim.derived_expression);
+      return;
+    case Comparison::identity:
+      claim.residual = residual_of(claim.derived_expression, claim.paper_expression, claim.constraints);
+      break;
+    case Comparison::same_set:
+      claim.residual =
+          residual_as_sets(claim.derived_expression, claim.paper_expression, claim.constraints);
+      break;
+  }
+  claim.verdict = all_zero(claim.residual) ? Verdict::verified : Verdict::failed;
+}
+
+std::string to_string(Verdict verdict) {
+  switch (verdict) {
+    case Verdict::verified: return "verified";
+    case Verdict::failed: return "failed";
+    case Verdict::assumption: return "assumption";
+  }
+  return "failed";
+}
+
+std::string to_string(Comparison comparison) {
+  switch (comparison) {
+    case Comparison::identity: return "identity";
+    case Comparison::same_set: return "same set";
+    case Comparison::nonnegative: return "sign";
+    case Comparison::assumption: return "assumption";
+  }
+  return "identity";
+}
+
+}  // namespace billiards::derive

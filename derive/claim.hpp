@@ -1,0 +1,53 @@
+// A claim is data: what the paper prints, what the program derived, how the two are compared, and
+// the verdict. One small function, check(), decides every verdict.
+#pragma once
+
+#include <ginac/ginac.h>
+
+#include <string>
+#include <vector>
+
+namespace billiards::derive {
+
+enum class Verdict { verified, failed, assumption };
+
+/// How check() compares the derived expression with the paper's.
+enum class Comparison {
+  /// derived − paper is exactly zero (componentwise for lists) after normal(), and after reducing
+  /// the numerator modulo the claim's `constraints` (e.g. n·n = 1) when there are any.
+  identity,
+  /// derived and paper are lists holding the same elements in some order, each pair an identity.
+  same_set,
+  /// derived factors into positive constants, positive symbols and even powers: it is ≥ 0.
+  nonnegative,
+  /// Not checked: a modelling assumption, stated with its reason.
+  assumption,
+};
+
+struct Claim {
+  std::string id;         ///< stable and descriptive, e.g. "discriminant.factored"
+  std::string section;    ///< the audit section (a step of the derivation) it belongs to
+  std::string paper;      ///< where it stands in the paper; empty when the paper does not state it
+  std::string statement;  ///< one sentence a reader can check
+  std::string method;     ///< how the derived side was obtained and compared, in words
+  Comparison comparison = Comparison::identity;
+  GiNaC::ex paper_expression;    ///< typed exactly as the paper prints it
+  GiNaC::ex derived_expression;  ///< computed by the derivation, never typed
+  GiNaC::lst constraints;        ///< relations x² == r imposed by substitution before comparing
+  GiNaC::ex paper_display;       ///< shown in the audit instead of paper_expression when set
+  GiNaC::ex derived_display;     ///< shown in the audit instead of derived_expression when set
+  std::string note;              ///< where the paper is imprecise, or what the claim adds
+  std::vector<std::string> depends_on;  ///< definitions and claims it rests on
+
+  Verdict verdict = Verdict::failed;  ///< set by check()
+  GiNaC::ex residual = 0;             ///< set by check(): what is left of derived − paper
+};
+
+/// Decides `claim.verdict` and `claim.residual`. Never throws for an expression it cannot reduce:
+/// anything that is not shown to be zero is a failure, with the residual to show for it.
+void check(Claim& claim);
+
+std::string to_string(Verdict verdict);
+std::string to_string(Comparison comparison);
+
+}  // namespace billiards::derive

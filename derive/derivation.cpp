@@ -1,0 +1,862 @@
+#include "derivation.hpp"
+
+#include "algebra.hpp"
+
+#include <algorithm>
+#include <set>
+#include <stdexcept>
+
+namespace billiards::derive {
+
+using GiNaC::ex;
+using GiNaC::lst;
+using GiNaC::numeric;
+
+namespace {
+
+// The scalar names of the derivation. Static: GiNaC tells symbols apart by identity, so every step
+// (and every run in one process) must use the same ones.
+struct Symbols {
+  GiNaC::possymbol m1{"m1", "m_1"};
+  GiNaC::possymbol m2{"m2", "m_2"};
+  GiNaC::realsymbol v1n{"v1n", "(v_1 \\cdot n)"};
+  GiNaC::realsymbol v2n{"v2n", "(v_2 \\cdot n)"};
+  GiNaC::realsymbol x1n{"x1n", "(x_1 \\cdot n)"};
+  GiNaC::realsymbol x2n{"x2n", "(x_2 \\cdot n)"};
+  GiNaC::realsymbol relative_normal_speed{"s", "((v_2 - v_1) \\cdot n)"};
+  GiNaC::realsymbol head_on_speed{"c", "c"};
+  GiNaC::possymbol inverse_m2{"epsilon", "\\varepsilon"};
+  // The paper's shorthand, P·n and K∥, as printed; replaced by their definitions before comparing.
+  GiNaC::symbol Pn{"Pn", "(P \\cdot n)"};
+  GiNaC::symbol K_parallel{"Kpar", "K^{\\parallel}"};
+  // Display-only names for vectors, so the audit shows vector equations as the paper writes them.
+  GiNaC::symbol v1{"v1", "\\mathbf{v}_1"};
+  GiNaC::symbol v2{"v2", "\\mathbf{v}_2"};
+  GiNaC::symbol x1{"x1", "\\mathbf{x}_1"};
+  GiNaC::symbol x2{"x2", "\\mathbf{x}_2"};
+  GiNaC::symbol n{"n", "\\mathbf{n}"};
+  GiNaC::symbol x1_parallel_squared{"x1par2", "(x_1^{\\parallel})^2"};
+  GiNaC::symbol P_parallel_dot_x1_parallel{"Ppar_x1par", "P^{\\parallel} \\cdot x_1^{\\parallel}"};
+  GiNaC::symbol P_parallel_squared{"Ppar2", "(P^{\\parallel})^2"};
+  GiNaC::symbol P_of_x{"P_x", "P(x_1, x_2)"};
+  GiNaC::symbol P_split{"P_split", "P(x_1^{\\parallel}, x_2^{\\parallel}) + P(x_1^{\\perp}, x_2^{\\perp})"};
+  GiNaC::symbol K_of_x{"K_x", "K(x_1, x_2)"};
+  GiNaC::symbol K_of_x_parallel{"K_xpar", "K(x_1^{\\parallel}, x_2^{\\parallel})"};
+  GiNaC::symbol K_split{"K_split", "K(x_1^{\\parallel}, x_2^{\\parallel}) + K(x_1^{\\perp}, x_2^{\\perp})"};
+  GiNaC::symbol a_par_dot_b_perp{"apar_bperp", "a^{\\parallel} \\cdot b^{\\perp}"};
+};
+
+const Symbols& symbols() {
+  static const Symbols instance;
+  return instance;
+}
+
+// P and K applied to vectors (a scalar is a one-component vector), with the definitions' coefficients.
+Vec momentum(const Definitions& d, const Vec& a, const Vec& b) {
+  const Symbols& s = symbols();
+  return add(scale(d.momentum_coefficient_1 * s.m1, a), scale(d.momentum_coefficient_2 * s.m2, b));
+}
+
+ex kinetic(const Definitions& d, const Vec& a, const Vec& b) {
+  const Symbols& s = symbols();
+  return d.kinetic_coefficient_1 * s.m1 * dot(a, a) + d.kinetic_coefficient_2 * s.m2 * dot(b, b);
+}
+
+ex scalar_momentum(const Definitions& d, const ex& a, const ex& b) { return momentum(d, {a}, {b})[0]; }
+ex scalar_kinetic(const Definitions& d, const ex& a, const ex& b) { return kinetic(d, {a}, {b}); }
+
+// The vectors of one dimension, in components.
+struct Space {
+  std::size_t dimension;
+  Vec v1, v2, n, x1, x2;
+  ex unit_normal;  // n_d² == 1 − Σ n_i²
+  std::string suffix;
+
+  explicit Space(std::size_t d)
+      : dimension(d),
+        v1(component_symbols("v1", "v_1", d)),
+        v2(component_symbols("v2", "v_2", d)),
+        n(component_symbols("n", "n", d)),
+        x1(component_symbols("x1", "x_1", d)),
+        x2(component_symbols("x2", "x_2", d)),
+        unit_normal(unit_normal_relation(n)),
+        suffix(std::string(".").append(std::to_string(d)).append("d")) {}
+
+  // A scalar of the derivation (in v1·n, v2·n) written in this space's components.
+  ex components_of(const ex& scalar) const {
+    const Symbols& s = symbols();
+    return scalar.subs(lst{s.v1n == dot(v1, n), s.v2n == dot(v2, n)});
+  }
+  // The velocity v + κ n for a ball whose new normal component is `normal` (a scalar).
+  Vec after_collision(const Vec& v, const ex& normal) const {
+    return add(perpendicular_part(v, n), scale(components_of(normal), n));
+  }
+};
+
+lst concatenate(const Vec& a, const Vec& b) {
+  lst all = to_lst(a);
+  for (const ex& component : b) all.append(component);
+  return all;
+}
+
+class Recorder {
+ public:
+  explicit Recorder(Derivation& derivation) : derivation_(derivation) {}
+
+  void section(std::string id, std::string title, std::string text) {
+    current_section_ = id;
+    derivation_.sections.push_back({std::move(id), std::move(title), std::move(text)});
+  }
+
+  const Claim& add(Claim claim) {
+    claim.section = current_section_;
+    for (const std::string& upstream : claim.depends_on) {
+      if (!known(upstream)) {
+        throw std::logic_error("claim " + claim.id + " depends on unknown " + upstream);
+      }
+    }
+    check(claim);
+    derivation_.claims.push_back(std::move(claim));
+    return derivation_.claims.back();
+  }
+
+ private:
+  bool known(const std::string& id) const {
+    const auto& claims = derivation_.claims;
+    const auto& premises = derivation_.premises;
+    return std::any_of(claims.begin(), claims.end(), [&](const Claim& c) { return c.id == id; }) ||
+           std::any_of(premises.begin(), premises.end(), [&](const Premise& p) { return p.id == id; });
+  }
+
+  Derivation& derivation_;
+  std::string current_section_;
+};
+
+const char* const unit_normal_method = "; n·n = 1 imposed by substituting n_last² → 1 − Σ n_i²";
+
+}  // namespace
+
+Derivation derive_paper(const Definitions& definitions) {
+  const Symbols& s = symbols();
+  const Definitions& d = definitions;
+  const Space plane(2);
+  const Space space(3);
+  Derivation result;
+  Recorder record(result);
+
+  // ---- Premises ------------------------------------------------------------------------------
+  {
+    const ex a = GiNaC::symbol("a"), b = GiNaC::symbol("b");
+    result.premises = {
+        {"definition.momentum", "P(a, b) = m1 a + m2 b: the total momentum of the two balls.",
+         scalar_momentum(d, a, b)},
+        {"definition.kinetic_energy",
+         "K(a, b) = ½ m1 a² + ½ m2 b²: their total kinetic energy (a² = a·a).",
+         scalar_kinetic(d, a, b)},
+        {"definition.split",
+         "a∥ = (a·n) n and a⊥ = a − a∥ for a unit contact normal n (n·n = 1); vectors are kept in "
+         "symbolic components in 2-D and 3-D, never a chosen numeric n.",
+         ex(0)},
+        {"definition.conservation",
+         "Momentum is conserved, P(v1, v2) = P(x1, x2); for a perfectly elastic collision so is the "
+         "kinetic energy, K(v1, v2) = K(x1, x2).",
+         ex(0)},
+    };
+  }
+
+  // ---- The split along and across n ----------------------------------------------------------
+  record.section("split", "Splitting P and K along and across n",
+                 "The paper: \"it is not hard to show that P(x1, x2) = P(x1∥, x2∥) + P(x1⊥, x2⊥)\" "
+                 "and the same for K. Shown in full components.");
+  for (const Space* sp : {&plane, &space}) {
+    const Vec x1_par = parallel_part(sp->x1, sp->n), x2_par = parallel_part(sp->x2, sp->n);
+    const Vec x1_perp = perpendicular_part(sp->x1, sp->n), x2_perp = perpendicular_part(sp->x2, sp->n);
+    record.add({
+        .id = "split.momentum" + sp->suffix,
+        .paper = "p. 1, the split of P (\"it is not hard to show that\")",
+        .statement = "P(x1, x2) = P(x1∥, x2∥) + P(x1⊥, x2⊥) in " + std::to_string(sp->dimension) +
+                     "-D components.",
+        .method = "identity after expand(), componentwise",
+        .comparison = Comparison::identity,
+        .paper_expression = to_lst(momentum(d, sp->x1, sp->x2)),
+        .derived_expression = to_lst(add(momentum(d, x1_par, x2_par), momentum(d, x1_perp, x2_perp))),
+        .paper_display = s.P_of_x,
+        .derived_display = s.P_split,
+        .note = "P is linear, so the split holds for any n; it needs only a = a∥ + a⊥.",
+        .depends_on = {"definition.momentum", "definition.split"},
+    });
+    record.add({
+        .id = "split.kinetic_cross_term" + sp->suffix,
+        .paper = "p. 1, footnote 1 (\"P and K are bilinear functions\")",
+        .statement = "a∥·b⊥ = 0 for any a, b when n·n = 1: the cross terms of K vanish.",
+        .method = std::string("identity after expand()") + unit_normal_method,
+        .comparison = Comparison::identity,
+        .paper_expression = 0,
+        .derived_expression = dot(x1_par, x2_perp),
+        .constraints = lst{sp->unit_normal},
+        .paper_display = 0,
+        .derived_display = s.a_par_dot_b_perp,
+        .note = "The footnote calls P and K \"bilinear\". P is linear and K is a quadratic form; "
+                "K(a, b) splits because (a∥ + a⊥)² = (a∥)² + 2 a∥·a⊥ + (a⊥)² and the cross term "
+                "a∥·a⊥ is zero when n is a unit vector.",
+        .depends_on = {"definition.split"},
+    });
+    record.add({
+        .id = "split.kinetic" + sp->suffix,
+        .paper = "p. 1, the split of K (\"it is not hard to show that\")",
+        .statement = "K(x1, x2) = K(x1∥, x2∥) + K(x1⊥, x2⊥) in " + std::to_string(sp->dimension) +
+                     "-D components, given n·n = 1.",
+        .method = std::string("identity after expand()") + unit_normal_method,
+        .comparison = Comparison::identity,
+        .paper_expression = kinetic(d, sp->x1, sp->x2),
+        .derived_expression = kinetic(d, x1_par, x2_par) + kinetic(d, x1_perp, x2_perp),
+        .constraints = lst{sp->unit_normal},
+        .paper_display = s.K_of_x,
+        .derived_display = s.K_split,
+        .note = "Holds only because n is a unit vector: without n·n = 1 the parallel part carries a "
+                "factor (n·n)² and the cross terms do not cancel.",
+        .depends_on = {"definition.kinetic_energy", "definition.split", "split.kinetic_cross_term" + sp->suffix},
+    });
+  }
+
+  // ---- Frictionless contact ------------------------------------------------------------------
+  record.section("tangential", "Frictionless contact: the tangential parts are unchanged",
+                 "The paper makes \"a physics-based argument that we must have v1⊥ = x1⊥ and "
+                 "v2⊥ = x2⊥\". This is a modelling assumption, not a consequence of the "
+                 "conservation laws.");
+  record.add({
+      .id = "assumption.tangential_velocity_unchanged",
+      .paper = "p. 1, \"after making a physics-based argument\"",
+      .statement = "x1⊥ = v1⊥ and x2⊥ = v2⊥: the contact exerts no force across n.",
+      .method = "assumption",
+      .comparison = Comparison::assumption,
+      .paper_expression = lst{s.x1 - s.v1, s.x2 - s.v2},
+      .derived_expression = lst{s.x1 - s.v1, s.x2 - s.v2},
+      .paper_display = lst{s.x1 - s.v1, s.x2 - s.v2},
+      .derived_display = lst{s.x1 - s.v1, s.x2 - s.v2},
+      .note = "Physical reason: smooth (frictionless), spinless balls in instantaneous contact push "
+              "on each other only along the contact normal, so no impulse acts across n. Momentum "
+              "and energy conservation alone do not force it: they are four scalar equations in 3-D "
+              "for six unknown components. With friction or spin the tangential parts change.",
+      .depends_on = {},
+  });
+
+  // ---- Conservation along n ------------------------------------------------------------------
+  record.section("along_n", "Conservation reduces to the parts along n",
+                 "With the tangential parts unchanged, x_i = v_i⊥ + (x_i·n) n, and the conservation "
+                 "laws become P(v1∥, v2∥) = P(x1∥, x2∥) and K(v1∥, v2∥) = K(x1∥, x2∥).");
+  {
+    const Vec x1 = space.after_collision(space.v1, s.x1n), x2 = space.after_collision(space.v2, s.x2n);
+    const Vec v1_par = parallel_part(space.v1, space.n), v2_par = parallel_part(space.v2, space.n);
+    const Vec x1_par = parallel_part(x1, space.n), x2_par = parallel_part(x2, space.n);
+    record.add({
+        .id = "along_n.momentum",
+        .paper = "p. 1, \"our preservation equations become\" (momentum)",
+        .statement = "P(v1, v2) − P(x1, x2) = P(v1∥, v2∥) − P(x1∥, x2∥) when x_i⊥ = v_i⊥ (3-D).",
+        .method = std::string("identity after expand(), componentwise") + unit_normal_method,
+        .comparison = Comparison::identity,
+        .paper_expression = to_lst(subtract(momentum(d, v1_par, v2_par), momentum(d, x1_par, x2_par))),
+        .derived_expression = to_lst(subtract(momentum(d, space.v1, space.v2), momentum(d, x1, x2))),
+        .constraints = lst{space.unit_normal},
+        .depends_on = {"definition.conservation", "split.momentum.3d",
+                       "assumption.tangential_velocity_unchanged"},
+    });
+    record.add({
+        .id = "along_n.kinetic_energy",
+        .paper = "p. 1, \"our preservation equations become\" (kinetic energy)",
+        .statement = "K(v1, v2) − K(x1, x2) = K(v1∥, v2∥) − K(x1∥, x2∥) when x_i⊥ = v_i⊥ (3-D).",
+        .method = std::string("identity after expand()") + unit_normal_method,
+        .comparison = Comparison::identity,
+        .paper_expression = kinetic(d, v1_par, v2_par) - kinetic(d, x1_par, x2_par),
+        .derived_expression = kinetic(d, space.v1, space.v2) - kinetic(d, x1, x2),
+        .constraints = lst{space.unit_normal},
+        .depends_on = {"definition.conservation", "split.kinetic.3d",
+                       "assumption.tangential_velocity_unchanged"},
+    });
+    record.add({
+        .id = "along_n.momentum_is_along_n",
+        .paper = "p. 1, the notation P·n",
+        .statement = "P∥ = P(v1∥, v2∥) = (P·n) n with P·n = m1 (v1·n) + m2 (v2·n): momentum along n "
+                     "is one scalar equation.",
+        .method = "identity after expand(), componentwise",
+        .comparison = Comparison::identity,
+        .paper_expression = to_lst(scale(dot(momentum(d, space.v1, space.v2), space.n), space.n)),
+        .derived_expression = to_lst(momentum(d, v1_par, v2_par)),
+        .note = "The paper writes P·n for P(v1, v2)·n, the total momentum along n.",
+        .depends_on = {"definition.momentum", "definition.split"},
+    });
+    record.add({
+        .id = "along_n.kinetic_energy_in_normal_components",
+        .paper = "p. 1, K∥ = K(v1∥, v2∥)",
+        .statement = "K∥ = K(v1∥, v2∥) = ½ m1 (v1·n)² + ½ m2 (v2·n)² given n·n = 1.",
+        .method = std::string("identity after expand()") + unit_normal_method,
+        .comparison = Comparison::identity,
+        .paper_expression = space.components_of(scalar_kinetic(d, s.v1n, s.v2n)),
+        .derived_expression = kinetic(d, v1_par, v2_par),
+        .constraints = lst{space.unit_normal},
+        .depends_on = {"definition.kinetic_energy", "definition.split"},
+    });
+  }
+
+  // ---- The quadratic in x1·n -----------------------------------------------------------------
+  record.section("quadratic", "The quadratic in x1·n",
+                 "Solve momentum conservation along n for x2·n, substitute into energy conservation "
+                 "and read the coefficients off with coeff().");
+  // The paper's shorthand P·n and K∥, replaced by their definitions before any comparison.
+  const ex paper_shorthand = lst{s.Pn == scalar_momentum(d, s.v1n, s.v2n),
+                                 s.K_parallel == scalar_kinetic(d, s.v1n, s.v2n)};
+  const ex x2n_solved = GiNaC::lsolve(
+      scalar_momentum(d, s.x1n, s.x2n) == scalar_momentum(d, s.v1n, s.v2n), s.x2n);
+  record.add({
+      .id = "quadratic.x2_from_momentum",
+      .paper = "p. 1, \"Solving for x2∥ in the momentum preservation equation\"",
+      .statement = "x2·n = (P·n − m1 (x1·n)) / m2.",
+      .method = "lsolve() of P(x1·n, x2·n) = P(v1·n, v2·n) for x2·n; identity after normal()",
+      .comparison = Comparison::identity,
+      .paper_expression = ((s.Pn - s.m1 * s.x1n) / s.m2).subs(paper_shorthand),
+      .derived_expression = x2n_solved,
+      .paper_display = (s.Pn - s.m1 * s.x1n) / s.m2,
+      .note = "The paper states this step in words only; it is the vector equation "
+              "x2∥ = (P∥ − m1 x1∥)/m2 along n.",
+      .depends_on = {"along_n.momentum", "along_n.momentum_is_along_n"},
+  });
+  // The quadratic as the paper first writes it, in vectors: K(x1∥, x2∥) − K∥ with x2∥ from momentum.
+  {
+    const Vec v1_par = parallel_part(space.v1, space.n), v2_par = parallel_part(space.v2, space.n);
+    const Vec x1_par = scale(s.x1n, space.n);
+    const Vec P_par = momentum(d, v1_par, v2_par);
+    // x2∥ lies along n, with the normal component momentum conservation gave.
+    const Vec x2_par = scale(space.components_of(x2n_solved), space.n);
+    const ex derived_vector_form = kinetic(d, x1_par, x2_par) - kinetic(d, v1_par, v2_par);
+    const ex paper_vector_form = numeric(1, 2) * s.m1 * (1 + s.m1 / s.m2) * dot(x1_par, x1_par) -
+                                 s.m1 / s.m2 * dot(P_par, x1_par) + dot(P_par, P_par) / (2 * s.m2) -
+                                 kinetic(d, v1_par, v2_par);
+    record.add({
+        .id = "quadratic.vector_form",
+        .paper = "p. 1, the first quadratic (in x1∥)",
+        .statement = "K(x1∥, x2∥) − K∥ = ½ m1 (1 + m1/m2)(x1∥)² − (m1/m2) P∥·x1∥ + (P∥)²/(2 m2) − K∥ "
+                     "(3-D components).",
+        .method = std::string("substitution of x2∥ into K; identity after normal()") + unit_normal_method,
+        .comparison = Comparison::identity,
+        .paper_expression = paper_vector_form,
+        .derived_expression = derived_vector_form,
+        .constraints = lst{space.unit_normal},
+        .paper_display = numeric(1, 2) * s.m1 * (1 + s.m1 / s.m2) * s.x1_parallel_squared -
+                         s.m1 / s.m2 * s.P_parallel_dot_x1_parallel +
+                         s.P_parallel_squared / (2 * s.m2) - s.K_parallel,
+        .derived_display = s.K_of_x_parallel - s.K_parallel,
+        .note = "(x1∥)² means x1∥·x1∥ and P∥ = P(v1∥, v2∥).",
+        .depends_on = {"quadratic.x2_from_momentum", "along_n.kinetic_energy"},
+    });
+  }
+  const ex quadratic =
+      (scalar_kinetic(d, s.x1n, x2n_solved) - scalar_kinetic(d, s.v1n, s.v2n)).expand();
+  {
+    const ex paper_scalar_form = numeric(1, 2) * s.m1 * (1 + s.m1 / s.m2) * GiNaC::pow(s.x1n, 2) -
+                                 s.m1 / s.m2 * s.Pn * s.x1n + GiNaC::pow(s.Pn, 2) / (2 * s.m2) -
+                                 s.K_parallel;
+    record.add({
+        .id = "quadratic.in_normal_component",
+        .paper = "p. 1, the second quadratic (\"a quadratic equation in the variable x1·n\")",
+        .statement = "The quadratic is one in x1·n: ½ m1 (1 + m1/m2)(x1·n)² − (m1/m2)(P·n)(x1·n) + "
+                     "(P·n)²/(2 m2) − K∥ (checked in 3-D components).",
+        .method = std::string("the scalar quadratic, written in components, against the paper's; "
+                              "identity after normal()") +
+                  unit_normal_method,
+        .comparison = Comparison::identity,
+        .paper_expression = space.components_of(paper_scalar_form.subs(paper_shorthand)),
+        .derived_expression = space.components_of(quadratic),
+        .constraints = lst{space.unit_normal},
+        .paper_display = paper_scalar_form,
+        .derived_display = quadratic,
+        .depends_on = {"quadratic.vector_form"},
+    });
+    struct Coefficient {
+      const char* id;
+      const char* name;
+      int power;
+      ex printed;
+    };
+    const Coefficient coefficients[] = {
+        {"quadratic.coefficient_a", "A, of (x1·n)²", 2, numeric(1, 2) * s.m1 * (1 + s.m1 / s.m2)},
+        {"quadratic.coefficient_b", "B, of x1·n", 1, -s.m1 / s.m2 * s.Pn},
+        {"quadratic.coefficient_c", "C, the constant term", 0,
+         GiNaC::pow(s.Pn, 2) / (2 * s.m2) - s.K_parallel},
+    };
+    for (const Coefficient& c : coefficients) {
+      record.add({
+          .id = c.id,
+          .paper = "p. 1, the quadratic in x1·n",
+          .statement = std::string("The coefficient ") + c.name + " equals the paper's.",
+          .method = "coeff() of the derived quadratic; identity after normal()",
+          .comparison = Comparison::identity,
+          .paper_expression = c.printed.subs(paper_shorthand),
+          .derived_expression = quadratic.coeff(s.x1n, c.power),
+          .paper_display = c.printed,
+          .derived_display = GiNaC::normal(quadratic.coeff(s.x1n, c.power)),
+          .depends_on = {"quadratic.in_normal_component"},
+      });
+    }
+  }
+  const ex A = quadratic.coeff(s.x1n, 2), B = quadratic.coeff(s.x1n, 1), C = quadratic.coeff(s.x1n, 0);
+
+  // ---- The discriminant ----------------------------------------------------------------------
+  record.section("discriminant", "The discriminant", "D = B² − 4AC from the coefficients read off.");
+  const ex D = GiNaC::normal(B * B - 4 * A * C);
+  const ex relative = s.v2n - s.v1n;  // (v2 − v1)·n
+  {
+    const ex paper_first = 2 * s.m1 * (1 + s.m1 / s.m2) * s.K_parallel - s.m1 / s.m2 * GiNaC::pow(s.Pn, 2);
+    const ex paper_expanded = GiNaC::pow(s.m1, 2) * (GiNaC::pow(s.v1n, 2) + GiNaC::pow(s.v2n, 2) -
+                                                     2 * s.v1n * s.v2n);
+    const ex paper_factored = GiNaC::pow(s.m1, 2) * GiNaC::pow(relative, 2);
+    const std::vector<std::string> from_coefficients = {
+        "quadratic.coefficient_a", "quadratic.coefficient_b", "quadratic.coefficient_c"};
+    record.add({
+        .id = "discriminant.paper_form",
+        .paper = "p. 1, \"if we examine the discriminant D\"",
+        .statement = "B² − 4AC = 2 m1 (1 + m1/m2) K∥ − (m1/m2)(P·n)².",
+        .method = "B² − 4AC from the coefficients; identity after normal()",
+        .comparison = Comparison::identity,
+        .paper_expression = paper_first.subs(paper_shorthand),
+        .derived_expression = D,
+        .paper_display = paper_first,
+        .derived_display = D,
+        .depends_on = from_coefficients,
+    });
+    record.add({
+        .id = "discriminant.expanded",
+        .paper = "p. 1, \"If we continue to expand this\"",
+        .statement = "D = m1² ((v1·n)² + (v2·n)² − 2 (v1·n)(v2·n)).",
+        .method = "identity after normal()",
+        .comparison = Comparison::identity,
+        .paper_expression = paper_expanded,
+        .derived_expression = D,
+        .paper_display = paper_expanded,
+        .derived_display = D,
+        .depends_on = from_coefficients,
+    });
+    record.add({
+        .id = "discriminant.factored",
+        .paper = "p. 2, \"it is clear that this factors as\"",
+        .statement = "D = m1² ((v2 − v1)·n)².",
+        .method = "identity after normal(); factor() of D shown as derived",
+        .comparison = Comparison::identity,
+        .paper_expression = paper_factored,
+        .derived_expression = D,
+        .paper_display = paper_factored,
+        .derived_display = GiNaC::factor(D),
+        .depends_on = from_coefficients,
+    });
+    record.add({
+        .id = "discriminant.nonnegative",
+        .paper = "p. 2, \"Immediately we see that D ≥ 0\"",
+        .statement = "D ≥ 0: it factors as m1² times a square, so the quadratic always has a real root.",
+        .method = "sign: factor() of D is a product of even powers and positive factors",
+        .comparison = Comparison::nonnegative,
+        .paper_expression = paper_factored,
+        .derived_expression = D,
+        .paper_display = paper_factored,
+        .derived_display = GiNaC::factor(D),
+        .note = "Masses are positive (GiNaC possymbol); D = 0 exactly when (v2 − v1)·n = 0, a "
+                "grazing contact, where both roots coincide and nothing happens.",
+        .depends_on = {"discriminant.factored"},
+    });
+  }
+
+  // ---- The roots -----------------------------------------------------------------------------
+  record.section("roots", "The roots",
+                 "The quadratic formula (−B ± √D)/(2A), with √D = m1 |(v2 − v1)·n| for m1 > 0.");
+  const ex root_of_D = square_root_of_perfect_square(D);
+  const lst roots{GiNaC::normal((-B + root_of_D) / (2 * A)), GiNaC::normal((-B - root_of_D) / (2 * A))};
+  // The paper's roots, as printed, with |(v2 − v1)·n|.
+  const ex printed_abs = s.m2 * GiNaC::abs(relative);
+  const lst paper_roots{(s.Pn + printed_abs) / (s.m1 + s.m2), (s.Pn - printed_abs) / (s.m1 + s.m2)};
+  const lst paper_roots_no_abs{(s.Pn + s.m2 * relative) / (s.m1 + s.m2),
+                               (s.Pn - s.m2 * relative) / (s.m1 + s.m2)};
+  // Cases on the sign of (v2 − v1)·n: write v2·n = v1·n + s and resolve every |…| for s ≥ 0, s < 0.
+  const auto in_case = [&](const ex& e, int sign) {
+    return GiNaC::normal(resolve_absolute_values(
+        e.subs(paper_shorthand).subs(s.v2n == s.v1n + s.relative_normal_speed), s.relative_normal_speed,
+        sign));
+  };
+  const auto in_case_lst = [&](const lst& l, int sign) {
+    lst out;
+    for (const ex& e : l) out.append(in_case(e, sign));
+    return out;
+  };
+  struct SignCase {
+    const char* suffix;
+    const char* words;
+    int sign;
+  };
+  const SignCase sign_cases[] = {{"relative_speed_nonnegative", "(v2 − v1)·n ≥ 0", +1},
+                                 {"relative_speed_negative", "(v2 − v1)·n < 0", -1}};
+  for (const SignCase& c : sign_cases) {
+    record.add({
+        .id = std::string("roots.quadratic_formula.") + c.suffix,
+        .paper = "p. 2, \"Applying our quadratic formula\"",
+        .statement = std::string("For ") + c.words +
+                     ", the roots (−B ± √D)/(2A) are (P·n ± m2 |(v2 − v1)·n|)/(m1 + m2), sign for sign.",
+        .method = "quadratic formula with √D from factor(); v2·n = v1·n + s, |…| resolved for the "
+                  "sign of s; identity after normal()",
+        .comparison = Comparison::identity,
+        .paper_expression = in_case_lst(paper_roots, c.sign),
+        .derived_expression = in_case_lst(roots, c.sign),
+        .paper_display = paper_roots,
+        .derived_display = roots,
+        .depends_on = {"discriminant.factored", "discriminant.nonnegative"},
+    });
+    record.add({
+        .id = std::string("roots.absolute_value_dropped.") + c.suffix,
+        .paper = "p. 2, \"we could drop the absolute value because of the plus or minus\"",
+        .statement = std::string("For ") + c.words +
+                     ", the set of roots equals {(P·n ± m2 (v2 − v1)·n)/(m1 + m2)}: dropping |…| "
+                     "only swaps the two roots.",
+        .method = "same set: identity after normal() for some pairing",
+        .comparison = Comparison::same_set,
+        .paper_expression = in_case_lst(paper_roots_no_abs, c.sign),
+        .derived_expression = in_case_lst(roots, c.sign),
+        .paper_display = paper_roots_no_abs,
+        .derived_display = roots,
+        .note = c.sign > 0 ? "Here the pairing is sign for sign." : "Here ± pair crosswise.",
+        .depends_on = {std::string("roots.quadratic_formula.") + c.suffix},
+    });
+  }
+  // The roots with |…| dropped, as derived: the s ≥ 0 case, written back in v2·n.
+  const auto without_abs = [&](const ex& root) {
+    return GiNaC::normal(in_case(root, +1).subs(s.relative_normal_speed == relative));
+  };
+  const ex plus_root = without_abs(roots.op(0)), minus_root = without_abs(roots.op(1));
+
+  // ---- The general solution ------------------------------------------------------------------
+  record.section("general", "Putting it together",
+                 "x1 = v1⊥ + (x1·n) n with either root (3-D components).");
+  {
+    const ex printed_coefficient_plus = (s.Pn + s.m2 * relative) / (s.m1 + s.m2) - s.v1n;
+    const ex printed_coefficient_minus = (s.Pn - s.m2 * relative) / (s.m1 + s.m2) - s.v1n;
+    const auto paper_x1 = [&](const ex& coefficient) {
+      return add(space.v1, scale(space.components_of(coefficient.subs(paper_shorthand)), space.n));
+    };
+    record.add({
+        .id = "general.x1_both_roots",
+        .paper = "p. 2, \"Putting it all together now\"",
+        .statement = "x1 = v1 + ((P·n ± m2 (v2 − v1)·n)/(m1 + m2) − v1·n) n for either root.",
+        .method = std::string("x1 = v1⊥ + (x1·n) n with each root; identity after normal(), "
+                              "componentwise") +
+                  unit_normal_method,
+        .comparison = Comparison::identity,
+        .paper_expression = concatenate(paper_x1(printed_coefficient_plus), paper_x1(printed_coefficient_minus)),
+        .derived_expression = concatenate(space.after_collision(space.v1, plus_root),
+                                          space.after_collision(space.v1, minus_root)),
+        .constraints = lst{space.unit_normal},
+        .paper_display = lst{s.v1 + printed_coefficient_plus * s.n, s.v1 + printed_coefficient_minus * s.n},
+        .derived_display = lst{s.v1 + (plus_root - s.v1n) * s.n, s.v1 + (minus_root - s.v1n) * s.n},
+        .depends_on = {"roots.absolute_value_dropped.relative_speed_nonnegative",
+                       "roots.absolute_value_dropped.relative_speed_negative",
+                       "assumption.tangential_velocity_unchanged"},
+    });
+  }
+
+  // ---- Root selection ------------------------------------------------------------------------
+  record.section("selection", "Choosing the root",
+                 "The paper rejects the \"−\" root because x1 would not depend on v2. A stronger "
+                 "criterion: the \"−\" root is the state before the collision.");
+  const ex x2_of = [&](const ex& x1n) { return GiNaC::normal(x2n_solved.subs(s.x1n == x1n)); }(minus_root);
+  record.add({
+      .id = "selection.minus_root_independent_of_v2",
+      .paper = "p. 2, \"x1 no longer becomes dependent upon v2\"",
+      .statement = "The \"−\" root does not depend on v2·n (the paper's argument).",
+      .method = "diff() of the \"−\" root by v2·n; identity after normal()",
+      .comparison = Comparison::identity,
+      .paper_expression = 0,
+      .derived_expression = GiNaC::diff(minus_root, s.v2n),
+      .derived_display = GiNaC::diff(minus_root, s.v2n),
+      .depends_on = {"general.x1_both_roots"},
+  });
+  record.add({
+      .id = "selection.minus_root_is_no_collision",
+      .paper = "p. 2, the negative case",
+      .statement = "The \"−\" root gives x1·n = v1·n and x2·n = v2·n: x1 = v1 and x2 = v2, no momentum "
+                   "exchanged — the state before the collision, which trivially conserves everything.",
+      .method = "the \"−\" root and x2·n from momentum; identity after normal()",
+      .comparison = Comparison::identity,
+      .paper_expression = lst{s.v1n, s.v2n},
+      .derived_expression = lst{minus_root, x2_of},
+      .paper_display = lst{s.v1n, s.v2n},
+      .derived_display = lst{minus_root, x2_of},
+      .note = "Stronger than the paper's intuition: the \"−\" root is not merely implausible, it is "
+              "the trivial solution that every pair of conservation laws admits.",
+      .depends_on = {"general.x1_both_roots", "quadratic.x2_from_momentum"},
+  });
+  const ex x2n_selected = GiNaC::normal(x2n_solved.subs(s.x1n == plus_root));
+  record.add({
+      .id = "selection.plus_root_reverses_relative_normal_velocity",
+      .paper = "p. 2, \"the case we care about must be the positive case\"",
+      .statement = "The \"+\" root reverses the relative normal velocity: (x2 − x1)·n = −(v2 − v1)·n.",
+      .method = "the \"+\" root and x2·n from momentum; identity after normal()",
+      .comparison = Comparison::identity,
+      .paper_expression = -relative,
+      .derived_expression = x2n_selected - plus_root,
+      .derived_display = GiNaC::normal(x2n_selected - plus_root),
+      .note = "A perfectly elastic collision in Newton's sense (restitution 1): the balls separate as "
+              "fast as they approached.",
+      .depends_on = {"general.x1_both_roots", "quadratic.x2_from_momentum"},
+  });
+  result.selected = {plus_root, x2n_selected};
+
+  // ---- The collision formula -----------------------------------------------------------------
+  record.section("result", "The collision formula",
+                 "The selected root in the paper's expanded and simplified forms, x2 by symmetry, "
+                 "and independence of the sign of n (3-D components).");
+  const Vec x1_selected = space.after_collision(space.v1, plus_root);
+  const Vec x2_selected = space.after_collision(space.v2, x2n_selected);
+  const ex simplified_coefficient = 2 * s.m2 / (s.m1 + s.m2) * relative;
+  const auto paper_simplified = [&](const Space& sp) {
+    return add(sp.v1, scale(sp.components_of(simplified_coefficient), sp.n));
+  };
+  {
+    const ex expanded_coefficient =
+        2 * s.m2 / (s.m1 + s.m2) * s.v2n + ((s.m1 - s.m2) / (s.m1 + s.m2) - 1) * s.v1n;
+    record.add({
+        .id = "result.x1_expanded_form",
+        .paper = "p. 2, \"In that case, we get\"",
+        .statement = "x1 = v1 + (2m2/(m1 + m2) (v2·n) + ((m1 − m2)/(m1 + m2) − 1)(v1·n)) n.",
+        .method = "x1 = v1⊥ + (x1·n) n with the \"+\" root; identity after normal(), componentwise",
+        .comparison = Comparison::identity,
+        .paper_expression = to_lst(add(space.v1, scale(space.components_of(expanded_coefficient), space.n))),
+        .derived_expression = to_lst(x1_selected),
+        .constraints = lst{space.unit_normal},
+        .paper_display = s.v1 + expanded_coefficient * s.n,
+        .derived_display = s.v1 + GiNaC::normal(plus_root - s.v1n) * s.n,
+        .depends_on = {"selection.plus_root_reverses_relative_normal_velocity",
+                       "selection.minus_root_is_no_collision"},
+    });
+    record.add({
+        .id = "result.x1_simplified_form",
+        .paper = "p. 2, \"The equation simplifies further as\"",
+        .statement = "x1 = v1 + (2 m2/(m1 + m2)) ((v2 − v1)·n) n.",
+        .method = "identity after normal(), componentwise",
+        .comparison = Comparison::identity,
+        .paper_expression = to_lst(paper_simplified(space)),
+        .derived_expression = to_lst(x1_selected),
+        .constraints = lst{space.unit_normal},
+        .paper_display = s.v1 + simplified_coefficient * s.n,
+        .derived_display = s.v1 + GiNaC::normal(plus_root - s.v1n) * s.n,
+        .depends_on = {"result.x1_expanded_form"},
+    });
+  }
+  // The paper: "By symmetry ... Just replace subscript 1 with 2 and vice-versa."
+  const auto swap_balls = [&](const Space& sp) {
+    GiNaC::exmap swap{{s.m1, s.m2}, {s.m2, s.m1}};
+    for (std::size_t i = 0; i < sp.dimension; ++i) {
+      swap[sp.v1[i]] = sp.v2[i];
+      swap[sp.v2[i]] = sp.v1[i];
+    }
+    return swap;
+  };
+  record.add({
+      .id = "result.x2_by_symmetry",
+      .paper = "p. 1, \"By symmetry of the preservation equations\"",
+      .statement = "x2 from momentum conservation equals the paper's x1 with subscripts 1 and 2 "
+                   "swapped: x2 = v2 + (2 m1/(m1 + m2)) ((v1 − v2)·n) n.",
+      .method = "x2 = v2⊥ + (x2·n) n with x2·n from momentum; the paper's x1 with 1 ↔ 2 by "
+                "simultaneous subs(); identity after normal(), componentwise",
+      .comparison = Comparison::identity,
+      .paper_expression = to_lst(paper_simplified(space)).subs(swap_balls(space)),
+      .derived_expression = to_lst(x2_selected),
+      .constraints = lst{space.unit_normal},
+      .paper_display = s.v2 + 2 * s.m1 / (s.m1 + s.m2) * (s.v1n - s.v2n) * s.n,
+      .derived_display = s.v2 + GiNaC::normal(x2n_selected - s.v2n) * s.n,
+      .depends_on = {"result.x1_simplified_form", "quadratic.x2_from_momentum"},
+  });
+  {
+    GiNaC::exmap flip;
+    for (const ex& component : space.n) flip[component] = -component;
+    record.add({
+        .id = "result.independent_of_normal_sign",
+        .paper = "p. 2, \"it didn't matter which direction n pointed\"",
+        .statement = "Replacing n by −n leaves x1 and x2 unchanged.",
+        .method = "subs() n → −n in the derived x1, x2; identity after normal(), componentwise",
+        .comparison = Comparison::identity,
+        .paper_expression = concatenate(x1_selected, x2_selected),
+        .derived_expression = concatenate(x1_selected, x2_selected).subs(flip),
+        .depends_on = {"result.x1_simplified_form", "result.x2_by_symmetry"},
+    });
+  }
+
+  // ---- The paper's sanity checks -------------------------------------------------------------
+  record.section("sanity", "The paper's sanity checks",
+                 "Equal masses with the first ball at rest, then head-on (3-D components).");
+  {
+    GiNaC::exmap at_rest{{s.m2, s.m1}};
+    for (const ex& component : space.v1) at_rest[component] = 0;
+    const Vec v2_par = parallel_part(space.v2, space.n);
+    record.add({
+        .id = "sanity.equal_masses_at_rest.x1",
+        .paper = "p. 2, \"m1 = m2 and v1 = 0\"",
+        .statement = "m1 = m2, v1 = 0: x1 = (v2·n) n = v2∥.",
+        .method = std::string("subs() into the derived x1; identity after normal()") + unit_normal_method,
+        .comparison = Comparison::identity,
+        .paper_expression = to_lst(v2_par),
+        .derived_expression = to_lst(x1_selected).subs(at_rest),
+        .constraints = lst{space.unit_normal},
+        .paper_display = s.v2n * s.n,
+        .depends_on = {"result.x1_simplified_form"},
+    });
+    record.add({
+        .id = "sanity.equal_masses_at_rest.x2",
+        .paper = "p. 2, \"we find that x2 = v2 − v2∥\"",
+        .statement = "m1 = m2, v1 = 0: x2 = v2 − v2∥.",
+        .method = std::string("subs() into the derived x2; identity after normal()") + unit_normal_method,
+        .comparison = Comparison::identity,
+        .paper_expression = to_lst(subtract(space.v2, v2_par)),
+        .derived_expression = to_lst(x2_selected).subs(at_rest),
+        .constraints = lst{space.unit_normal},
+        .paper_display = s.v2 - s.v2n * s.n,
+        .depends_on = {"result.x2_by_symmetry"},
+    });
+    GiNaC::exmap head_on = at_rest;
+    for (std::size_t i = 0; i < space.dimension; ++i) head_on[space.v2[i]] = s.head_on_speed * space.n[i];
+    const Vec v2_head_on = scale(s.head_on_speed, space.n);
+    record.add({
+        .id = "sanity.head_on.x1",
+        .paper = "p. 2, \"If the first ball was hit head-on\"",
+        .statement = "m1 = m2, v1 = 0, v2 = c n: x1 = v2, the first ball takes all the velocity.",
+        .method = std::string("subs() into the derived x1; identity after normal()") + unit_normal_method,
+        .comparison = Comparison::identity,
+        .paper_expression = to_lst(v2_head_on),
+        .derived_expression = to_lst(x1_selected).subs(head_on),
+        .constraints = lst{space.unit_normal},
+        .paper_display = s.v2,
+        .depends_on = {"sanity.equal_masses_at_rest.x1"},
+    });
+    record.add({
+        .id = "sanity.head_on.x2",
+        .paper = "p. 2, \"we get x2 = 0\"",
+        .statement = "m1 = m2, v1 = 0, v2 = c n: x2 = 0, the second ball stops.",
+        .method = std::string("subs() into the derived x2; identity after normal()") + unit_normal_method,
+        .comparison = Comparison::identity,
+        .paper_expression = to_lst(scale(0, space.n)),
+        .derived_expression = to_lst(x2_selected).subs(head_on),
+        .constraints = lst{space.unit_normal},
+        .paper_display = 0,
+        .depends_on = {"sanity.equal_masses_at_rest.x2"},
+    });
+  }
+
+  // ---- The cushion ---------------------------------------------------------------------------
+  record.section("cushion", "The cushion: m2 → ∞ with v2 = 0",
+                 "The limit is taken as a series in ε = 1/m2 about 0; the reflection is checked "
+                 "against the geometric-algebra sandwich −n v1 n computed with GiNaC's Clifford "
+                 "algebra.");
+  {
+    GiNaC::exmap wall{{s.m2, 1 / s.inverse_m2}};
+    for (const ex& component : space.v2) wall[component] = 0;
+    lst limit;
+    for (const ex& component : x1_selected) {
+      const ex in_epsilon = GiNaC::normal(component.subs(wall));
+      limit.append(GiNaC::series_to_poly(in_epsilon.series(s.inverse_m2 == 0, 1)));
+    }
+    const Vec reflection = subtract(space.v1, scale(2 * dot(space.v1, space.n), space.n));
+    record.add({
+        .id = "cushion.limit",
+        .paper = "p. 2, \"we take the limit as m2 goes to ∞, and let v2 = 0\"",
+        .statement = "With v2 = 0, x1 → v1 − 2 (v1·n) n as m2 → ∞.",
+        .method = "series() in ε = 1/m2 about 0 to order ε⁰ of each component; identity after normal()",
+        .comparison = Comparison::identity,
+        .paper_expression = to_lst(reflection),
+        .derived_expression = limit,
+        .constraints = lst{space.unit_normal},
+        .paper_display = s.v1 - 2 * s.v1n * s.n,
+        .note = "v2 = 0 matters: the limit of x1 for a moving wall is v1 + 2((v2 − v1)·n) n.",
+        .depends_on = {"result.x1_simplified_form"},
+    });
+    for (const Space* sp : {&plane, &space}) {
+      const GiNaC::varidx mu(GiNaC::symbol("mu"), static_cast<unsigned>(sp->dimension));
+      GiNaC::lst ones;
+      for (std::size_t i = 0; i < sp->dimension; ++i) ones.append(1);
+      const ex e = GiNaC::clifford_unit(mu, GiNaC::diag_matrix(ones));
+      const ex n_ga = GiNaC::lst_to_clifford(to_lst(sp->n), e);
+      const ex v_ga = GiNaC::lst_to_clifford(to_lst(sp->v1), e);
+      const ex sandwich = GiNaC::clifford_to_lst((-n_ga * v_ga * n_ga).expand(), e, true);
+      record.add({
+          .id = "cushion.reflection_is_sandwich" + sp->suffix,
+          .paper = "p. 2, \"= −n v1 n, which we clearly recognize as a reflection\"",
+          .statement = "v1 − 2 (v1·n) n = −n v1 n in geometric algebra (" + std::to_string(sp->dimension) +
+                       "-D), given n² = 1.",
+          .method = std::string("Clifford product with lst_to_clifford() over a Euclidean metric, read "
+                                "back with clifford_to_lst()") +
+                    unit_normal_method,
+          .comparison = Comparison::identity,
+          .paper_expression = to_lst(subtract(sp->v1, scale(2 * dot(sp->v1, sp->n), sp->n))),
+          .derived_expression = sandwich,
+          .constraints = lst{sp->unit_normal},
+          .paper_display = s.v1 - 2 * s.v1n * s.n,
+          .derived_display = -s.n * s.v1 * s.n,
+          .note = "In geometric algebra n v n = 2 (n·v) n − (n·n) v, so −n v n is the reflection in "
+                  "the plane normal to n only when n² = n·n = 1.",
+          .depends_on = {"cushion.limit"},
+      });
+    }
+  }
+
+  // ---- End to end ----------------------------------------------------------------------------
+  record.section("conservation", "End to end: the result conserves momentum and kinetic energy",
+                 "The final x1, x2 in full symbolic components, substituted into P and K.");
+  for (const Space* sp : {&plane, &space}) {
+    const Vec x1 = sp->after_collision(sp->v1, plus_root), x2 = sp->after_collision(sp->v2, x2n_selected);
+    record.add({
+        .id = "conservation.momentum" + sp->suffix,
+        .paper = "p. 1, P(v1, v2) = P(x1, x2)",
+        .statement = "P(x1, x2) = P(v1, v2) for the final x1, x2 (" + std::to_string(sp->dimension) + "-D).",
+        .method = "identity after normal(), componentwise",
+        .comparison = Comparison::identity,
+        .paper_expression = to_lst(momentum(d, sp->v1, sp->v2)),
+        .derived_expression = to_lst(momentum(d, x1, x2)),
+        .constraints = lst{sp->unit_normal},
+        .depends_on = {"result.x1_simplified_form", "result.x2_by_symmetry", "definition.conservation"},
+    });
+    record.add({
+        .id = "conservation.kinetic_energy" + sp->suffix,
+        .paper = "p. 1, K(v1, v2) = K(x1, x2)",
+        .statement = "K(x1, x2) = K(v1, v2) for the final x1, x2 (" + std::to_string(sp->dimension) +
+                     "-D), given n·n = 1.",
+        .method = std::string("identity after normal()") + unit_normal_method,
+        .comparison = Comparison::identity,
+        .paper_expression = kinetic(d, sp->v1, sp->v2),
+        .derived_expression = kinetic(d, x1, x2),
+        .constraints = lst{sp->unit_normal},
+        .depends_on = {"result.x1_simplified_form", "result.x2_by_symmetry", "definition.conservation"},
+    });
+  }
+  return result;
+}
+
+Summary summarize(const std::vector<Claim>& claims) {
+  Summary summary;
+  for (const Claim& claim : claims) {
+    switch (claim.verdict) {
+      case Verdict::verified: ++summary.verified; break;
+      case Verdict::failed: ++summary.failed; break;
+      case Verdict::assumption: ++summary.assumption; break;
+    }
+  }
+  return summary;
+}
+
+std::vector<std::string> downstream_of(const std::vector<Claim>& claims, const std::string& id) {
+  std::set<std::string> reached{id};
+  std::vector<std::string> downstream;
+  // Claims are recorded after everything they depend on, so one pass in order suffices.
+  for (const Claim& claim : claims) {
+    const bool rests_on_reached = std::any_of(claim.depends_on.begin(), claim.depends_on.end(),
+                                              [&](const std::string& d) { return reached.count(d) > 0; });
+    if (rests_on_reached) {
+      reached.insert(claim.id);
+      downstream.push_back(claim.id);
+    }
+  }
+  return downstream;
+}
+
+}  // namespace billiards::derive

@@ -1,0 +1,64 @@
+// The derivation of S. T. Parkin, "Billiard Ball Physics" (2023), step by step from the definitions.
+// Each step computes its expressions from the previous steps' output and records claims; check()
+// decides every verdict.
+#pragma once
+
+#include "claim.hpp"
+
+#include <ginac/ginac.h>
+
+#include <string>
+#include <vector>
+
+namespace billiards::derive {
+
+/// The paper's definitions, P(a, b) = m1 a + m2 b and K(a, b) = ½ m1 a² + ½ m2 b², written as the
+/// coefficients of each term so that a test can perturb one and watch the claims downstream fail.
+struct Definitions {
+  GiNaC::ex momentum_coefficient_1 = 1;
+  GiNaC::ex momentum_coefficient_2 = 1;
+  GiNaC::ex kinetic_coefficient_1 = GiNaC::numeric(1, 2);
+  GiNaC::ex kinetic_coefficient_2 = GiNaC::numeric(1, 2);
+};
+
+/// A definition or an input the derivation starts from, shown at the head of the audit.
+struct Premise {
+  std::string id;
+  std::string statement;
+  GiNaC::ex display;
+};
+
+struct Section {
+  std::string id;
+  std::string title;
+  std::string text;  ///< what the step does, in the paper's terms
+};
+
+/// What the derivation selected, for the code emitter: scalar expressions in the normal components
+/// v1·n, v2·n and the masses.
+struct SelectedResult {
+  GiNaC::ex x1_normal;  ///< x1·n, the selected root
+  GiNaC::ex x2_normal;  ///< x2·n, from momentum conservation
+};
+
+struct Derivation {
+  std::vector<Premise> premises;
+  std::vector<Section> sections;
+  std::vector<Claim> claims;  ///< in the paper's order, every verdict decided
+  SelectedResult selected;
+};
+
+/// Runs every step with the given definitions (the paper's by default) and checks every claim.
+Derivation derive_paper(const Definitions& definitions = {});
+
+struct Summary {
+  int verified = 0;
+  int failed = 0;
+  int assumption = 0;
+};
+Summary summarize(const std::vector<Claim>& claims);
+
+/// The ids of `claims` that rest, directly or through other claims, on the premise or claim `id`.
+std::vector<std::string> downstream_of(const std::vector<Claim>& claims, const std::string& id);
+
+}  // namespace billiards::derive

@@ -1,0 +1,221 @@
+#include "printer.hpp"
+
+#include <algorithm>
+#include <sstream>
+#include <vector>
+
+namespace billiards::derive {
+
+using GiNaC::ex;
+using GiNaC::numeric;
+
+namespace {
+
+std::string ginac_print(const ex& e, Notation notation) {
+  std::ostringstream out;
+  if (notation == Notation::latex) {
+    e.print(GiNaC::print_latex(out));
+  } else {
+    e.print(GiNaC::print_dflt(out));
+  }
+  return out.str();
+}
+
+// A term of a sum or a product, written as coefficient × factors.
+struct Factor {
+  ex base;
+  numeric exponent;
+};
+
+struct Product {
+  numeric coefficient = 1;
+  std::vector<Factor> factors;
+};
+
+bool is_odd_integer(const numeric& n) { return n.is_integer() && n.is_odd(); }
+
+Product as_product(const ex& e);
+
+// The terms of a sum in print order: constants first, then by the text of their non-numeric part.
+std::vector<Product> sorted_terms(const ex& sum);
+
+// True when the first term of `sum` in print order has a negative coefficient.
+bool leads_negative(const ex& sum) {
+  const std::vector<Product> terms = sorted_terms(sum);
+  return !terms.empty() && terms.front().coefficient.is_negative();
+}
+
+Product as_product(const ex& e) {
+  Product product;
+  const auto add_factor = [&](const ex& factor) {
+    if (GiNaC::is_a<numeric>(factor)) {
+      product.coefficient *= GiNaC::ex_to<numeric>(factor);
+      return;
+    }
+    Factor f{factor, 1};
+    if (GiNaC::is_a<GiNaC::power>(factor) && GiNaC::is_a<numeric>(factor.op(1))) {
+      f = {factor.op(0), GiNaC::ex_to<numeric>(factor.op(1))};
+    }
+    // Orient every sum so that its first term is positive: (a − b)² and (b − a)² print alike.
+    if (GiNaC::is_a<GiNaC::add>(f.base) && f.exponent.is_integer() && leads_negative(f.base)) {
+      f.base = (-f.base).expand();
+      if (is_odd_integer(f.exponent)) product.coefficient = -product.coefficient;
+    }
+    product.factors.push_back(f);
+  };
+  if (GiNaC::is_a<GiNaC::mul>(e)) {
+    for (const ex& factor : e) add_factor(factor);
+  } else {
+    add_factor(e);
+  }
+  return product;
+}
+
+std::string print_factor(const Factor& f, Notation notation);
+std::string print_magnitude(const Product& p, Notation notation);
+
+std::string key_of(const Product& p) {
+  Product unit = p;
+  unit.coefficient = 1;
+  return print_magnitude(unit, Notation::text);
+}
+
+std::vector<Product> sorted_terms(const ex& sum) {
+  std::vector<std::pair<std::string, Product>> keyed;
+  for (const ex& term : sum) {
+    Product p = as_product(term);
+    keyed.emplace_back(p.factors.empty() ? std::string() : key_of(p), p);
+  }
+  std::stable_sort(keyed.begin(), keyed.end(),
+                   [](const auto& a, const auto& b) { return a.first < b.first; });
+  std::vector<Product> terms;
+  for (auto& [key, p] : keyed) terms.push_back(p);
+  return terms;
+}
+
+std::string print_sum(const ex& sum, Notation notation) {
+  std::string out;
+  bool first = true;
+  for (const Product& term : sorted_terms(sum)) {
+    const bool negative = term.coefficient.is_negative();
+    Product magnitude = term;
+    magnitude.coefficient = GiNaC::abs(term.coefficient);
+    const std::string body = print_magnitude(magnitude, notation);
+    if (first) {
+      out += negative ? "-" : "";
+    } else if (notation == Notation::latex) {
+      out += negative ? " - " : " + ";
+    } else {
+      out += negative ? "-" : "+";
+    }
+    out += body;
+    first = false;
+  }
+  return out;
+}
+
+std::string parenthesized(const std::string& inner, Notation notation) {
+  return notation == Notation::latex ? "\\left(" + inner + "\\right)" : "(" + inner + ")";
+}
+
+std::string print_any(const ex& e, Notation notation);
+
+std::string print_base(const ex& base, Notation notation, bool will_take_power) {
+  const std::string inner = print_any(base, notation);
+  const bool compound = GiNaC::is_a<GiNaC::add>(base) || GiNaC::is_a<GiNaC::mul>(base) ||
+                        GiNaC::is_a<GiNaC::power>(base) ||
+                        (GiNaC::is_a<numeric>(base) && GiNaC::ex_to<numeric>(base).is_negative()) ||
+                        (will_take_power && GiNaC::is_a<numeric>(base) &&
+                         !GiNaC::ex_to<numeric>(base).is_integer());
+  return compound ? parenthesized(inner, notation) : inner;
+}
+
+std::string print_factor(const Factor& f, Notation notation) {
+  if (f.exponent == 1) return print_base(f.base, notation, false);
+  if (f.exponent == numeric(1, 2)) {
+    const std::string inner = print_any(f.base, notation);
+    return notation == Notation::latex ? "\\sqrt{" + inner + "}" : "sqrt(" + inner + ")";
+  }
+  const std::string base = print_base(f.base, notation, true);
+  const std::string exponent = ginac_print(f.exponent, Notation::text);
+  if (notation == Notation::latex) return base + "^{" + exponent + "}";
+  return base + "^" + (f.exponent.is_integer() && f.exponent.is_positive() ? exponent : "(" + exponent + ")");
+}
+
+// |p| with numerator and denominator separated; the sign is the caller's.
+std::string print_magnitude(const Product& p, Notation notation) {
+  std::vector<std::string> numerator, denominator;
+  for (const Factor& f : p.factors) {
+    if (f.exponent.is_negative()) {
+      denominator.push_back(print_factor({f.base, -f.exponent}, notation));
+    } else {
+      numerator.push_back(print_factor(f, notation));
+    }
+  }
+  std::sort(numerator.begin(), numerator.end());
+  std::sort(denominator.begin(), denominator.end());
+  const numeric top = GiNaC::abs(p.coefficient.numer()), bottom = p.coefficient.denom();
+  if (top != 1 || numerator.empty()) numerator.insert(numerator.begin(), ginac_print(top, Notation::text));
+  if (bottom != 1) denominator.insert(denominator.begin(), ginac_print(bottom, Notation::text));
+  const std::string separator = notation == Notation::latex ? " " : "*";
+  const auto join = [&](const std::vector<std::string>& parts) {
+    std::string joined;
+    for (const std::string& part : parts) joined += (joined.empty() ? "" : separator) + part;
+    return joined;
+  };
+  if (denominator.empty()) return join(numerator);
+  if (notation == Notation::latex) return "\\frac{" + join(numerator) + "}{" + join(denominator) + "}";
+  const std::string below = denominator.size() == 1 ? denominator.front() : "(" + join(denominator) + ")";
+  return join(numerator) + "/" + below;
+}
+
+std::string print_signed_product(const ex& e, Notation notation) {
+  const Product p = as_product(e);
+  Product magnitude = p;
+  magnitude.coefficient = GiNaC::abs(p.coefficient);
+  return (p.coefficient.is_negative() ? "-" : "") + print_magnitude(magnitude, notation);
+}
+
+std::string print_list(const ex& list, Notation notation) {
+  std::string out;
+  for (const ex& element : list) {
+    out += (out.empty() ? "" : notation == Notation::latex ? ", \\; " : ", ") + print_any(element, notation);
+  }
+  return notation == Notation::latex ? "\\left[" + out + "\\right]" : "[" + out + "]";
+}
+
+std::string print_any(const ex& e, Notation notation) {
+  if (GiNaC::is_a<GiNaC::add>(e)) return print_sum(e, notation);
+  if (GiNaC::is_a<GiNaC::mul>(e) || GiNaC::is_a<GiNaC::power>(e)) return print_signed_product(e, notation);
+  if (GiNaC::is_a<numeric>(e)) return ginac_print(e, notation);
+  if (GiNaC::is_a<GiNaC::lst>(e)) return print_list(e, notation);
+  if (GiNaC::is_a<GiNaC::relational>(e)) {
+    return print_any(e.lhs(), notation) + (notation == Notation::latex ? " = " : " == ") +
+           print_any(e.rhs(), notation);
+  }
+  if (GiNaC::is_a<GiNaC::function>(e)) {
+    const std::string name = GiNaC::ex_to<GiNaC::function>(e).get_name();
+    std::string arguments;
+    for (const ex& argument : e) arguments += (arguments.empty() ? "" : ", ") + print_any(argument, notation);
+    if (name == "abs" && notation == Notation::latex) return "\\left|" + arguments + "\\right|";
+    if (notation == Notation::latex) return "\\operatorname{" + name + "}\\left(" + arguments + "\\right)";
+    return name + "(" + arguments + ")";
+  }
+  return ginac_print(e, notation);  // symbols: their name, or their TeX name
+}
+
+}  // namespace
+
+std::string print(const ex& e, Notation notation) { return print_any(e, notation); }
+
+ex factored_form(const ex& e) {
+  if (GiNaC::is_a<GiNaC::lst>(e)) {
+    GiNaC::lst out;
+    for (const ex& element : e) out.append(factored_form(element));
+    return out;
+  }
+  const ex numerator_denominator = GiNaC::normal(e).numer_denom();
+  return GiNaC::factor(numerator_denominator.op(0)) / GiNaC::factor(numerator_denominator.op(1));
+}
+
+}  // namespace billiards::derive
