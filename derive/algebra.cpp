@@ -13,7 +13,8 @@ const char* const component_names[] = {"x", "y", "z"};
 
 }  // namespace
 
-Vec component_symbols(const std::string& name, const std::string& tex_name, std::size_t dimension) {
+Vec component_symbols(const std::string& name, const std::string& tex_letter, const std::string& tex_subscript,
+                      std::size_t dimension) {
   if (dimension < 2 || dimension > 3) {
     throw std::invalid_argument("component_symbols: dimension is " + std::to_string(dimension) +
                                 ", expected 2 or 3");
@@ -26,7 +27,8 @@ Vec component_symbols(const std::string& name, const std::string& tex_name, std:
     const std::string key = name + "_" + component_names[i];
     auto found = cache.find(key);
     if (found == cache.end()) {
-      const std::string tex = tex_name + "_{" + component_names[i] + "}";
+      const std::string tex = tex_letter + "_{" + tex_subscript + (tex_subscript.empty() ? "" : ",") +
+                              component_names[i] + "}";
       found = cache.emplace(key, GiNaC::realsymbol(key, tex)).first;
     }
     components.push_back(found->second);

@@ -14,9 +14,11 @@ namespace billiards::derive {
 /// A vector of V written in components (2-D or 3-D), each a GiNaC expression.
 using Vec = std::vector<GiNaC::ex>;
 
-/// The components of a vector named `name` in `dimension` dimensions: realsymbols name_x, name_y, name_z.
+/// The components of a vector named `name` in `dimension` dimensions: realsymbols name_x, name_y,
+/// name_z, written in TeX as tex_letter_{tex_subscript,x} (v_{1,x}) or tex_letter_{x} (n_{x}).
 /// Symbols are cached by name, so the same name always yields the same symbols.
-Vec component_symbols(const std::string& name, const std::string& tex_name, std::size_t dimension);
+Vec component_symbols(const std::string& name, const std::string& tex_letter, const std::string& tex_subscript,
+                      std::size_t dimension);
 
 Vec add(const Vec& a, const Vec& b);
 Vec subtract(const Vec& a, const Vec& b);

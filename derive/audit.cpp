@@ -15,9 +15,12 @@ namespace {
 // Longer than this, a component expression is summarised rather than printed in the audit.
 constexpr std::size_t longest_printed_latex = 600;
 
-std::string shown_latex(const ex& display, const ex& expression, bool derived) {
-  const ex shown = display.is_zero() && !expression.is_zero() ? expression : display;
-  const std::string latex = print(derived ? factored_form(shown) : shown, Notation::latex);
+std::string shown_latex(const ex& display, const ex& expression) {
+  // A display is printed as given (the derivation puts derived ones in factored_form()); an
+  // expression without one (components) in its expanded normal form, canonical and cheap.
+  const bool has_display = !GiNaC::is_a<GiNaC::fail>(display);
+  const ex shown = has_display ? display : expanded_form(expression);
+  const std::string latex = print(shown, Notation::latex);
   if (latex.size() <= longest_printed_latex) return latex;
   return "\\text{(" + std::to_string(GiNaC::is_a<GiNaC::lst>(shown) ? shown.nops() : 1) +
          " symbolic component expressions, " + std::to_string(latex.size()) +
@@ -47,11 +50,11 @@ std::string ginac_version() {
 }
 
 std::string paper_latex(const Claim& claim) {
-  return shown_latex(claim.paper_display, claim.paper_expression, false);
+  return shown_latex(claim.paper_display, claim.paper_expression);
 }
 
 std::string derived_latex(const Claim& claim) {
-  return shown_latex(claim.derived_display, claim.derived_expression, true);
+  return shown_latex(claim.derived_display, claim.derived_expression);
 }
 
 std::string audit_markdown(const Derivation& derivation) {

@@ -1,6 +1,7 @@
 #include "derivation.hpp"
 
 #include "algebra.hpp"
+#include "printer.hpp"
 
 #include <algorithm>
 #include <set>
@@ -43,6 +44,17 @@ struct Symbols {
   GiNaC::symbol K_of_x{"K_x", "K(x_1, x_2)"};
   GiNaC::symbol K_of_x_parallel{"K_xpar", "K(x_1^{\\parallel}, x_2^{\\parallel})"};
   GiNaC::symbol K_split{"K_split", "K(x_1^{\\parallel}, x_2^{\\parallel}) + K(x_1^{\\perp}, x_2^{\\perp})"};
+  GiNaC::symbol P_v_par_minus_x_par{"dP_par", "P(v_1^{\\parallel}, v_2^{\\parallel}) - P(x_1^{\\parallel}, x_2^{\\parallel})"};
+  GiNaC::symbol P_v_minus_x{"dP", "P(v_1, v_2) - P(x_1, x_2)"};
+  GiNaC::symbol K_v_par_minus_x_par{"dK_par", "K(v_1^{\\parallel}, v_2^{\\parallel}) - K(x_1^{\\parallel}, x_2^{\\parallel})"};
+  GiNaC::symbol K_v_minus_x{"dK", "K(v_1, v_2) - K(x_1, x_2)"};
+  GiNaC::symbol P_of_v_parallel{"P_vpar", "P(v_1^{\\parallel}, v_2^{\\parallel})"};
+  GiNaC::symbol K_of_v_parallel{"K_vpar", "K(v_1^{\\parallel}, v_2^{\\parallel})"};
+  GiNaC::symbol P_of_v{"P_v", "P(v_1, v_2)"};
+  GiNaC::symbol K_of_v{"K_v", "K(v_1, v_2)"};
+  GiNaC::symbol sandwich{"nvn", "\\mathbf{n} \\mathbf{v}_1 \\mathbf{n}"};
+  GiNaC::symbol results{"x1x2", "(\\mathbf{x}_1, \\mathbf{x}_2)"};
+  GiNaC::symbol results_flipped{"x1x2_flipped", "(\\mathbf{x}_1, \\mathbf{x}_2)\\big|_{\\mathbf{n} \\to -\\mathbf{n}}"};
   GiNaC::symbol a_par_dot_b_perp{"apar_bperp", "a^{\\parallel} \\cdot b^{\\perp}"};
 };
 
@@ -74,11 +86,11 @@ struct Space {
 
   explicit Space(std::size_t d)
       : dimension(d),
-        v1(component_symbols("v1", "v_1", d)),
-        v2(component_symbols("v2", "v_2", d)),
-        n(component_symbols("n", "n", d)),
-        x1(component_symbols("x1", "x_1", d)),
-        x2(component_symbols("x2", "x_2", d)),
+        v1(component_symbols("v1", "v", "1", d)),
+        v2(component_symbols("v2", "v", "2", d)),
+        n(component_symbols("n", "n", "", d)),
+        x1(component_symbols("x1", "x", "1", d)),
+        x2(component_symbols("x2", "x", "2", d)),
         unit_normal(unit_normal_relation(n)),
         suffix(std::string(".").append(std::to_string(d)).append("d")) {}
 
@@ -258,6 +270,8 @@ Derivation derive_paper(const Definitions& definitions) {
         .paper_expression = to_lst(subtract(momentum(d, v1_par, v2_par), momentum(d, x1_par, x2_par))),
         .derived_expression = to_lst(subtract(momentum(d, space.v1, space.v2), momentum(d, x1, x2))),
         .constraints = lst{space.unit_normal},
+        .paper_display = s.P_v_par_minus_x_par,
+        .derived_display = s.P_v_minus_x,
         .depends_on = {"definition.conservation", "split.momentum.3d",
                        "assumption.tangential_velocity_unchanged"},
     });
@@ -270,6 +284,8 @@ Derivation derive_paper(const Definitions& definitions) {
         .paper_expression = kinetic(d, v1_par, v2_par) - kinetic(d, x1_par, x2_par),
         .derived_expression = kinetic(d, space.v1, space.v2) - kinetic(d, x1, x2),
         .constraints = lst{space.unit_normal},
+        .paper_display = s.K_v_par_minus_x_par,
+        .derived_display = s.K_v_minus_x,
         .depends_on = {"definition.conservation", "split.kinetic.3d",
                        "assumption.tangential_velocity_unchanged"},
     });
@@ -282,6 +298,8 @@ Derivation derive_paper(const Definitions& definitions) {
         .comparison = Comparison::identity,
         .paper_expression = to_lst(scale(dot(momentum(d, space.v1, space.v2), space.n), space.n)),
         .derived_expression = to_lst(momentum(d, v1_par, v2_par)),
+        .paper_display = s.Pn * s.n,
+        .derived_display = s.P_of_v_parallel,
         .note = "The paper writes P·n for P(v1, v2)·n, the total momentum along n.",
         .depends_on = {"definition.momentum", "definition.split"},
     });
@@ -294,6 +312,8 @@ Derivation derive_paper(const Definitions& definitions) {
         .paper_expression = space.components_of(scalar_kinetic(d, s.v1n, s.v2n)),
         .derived_expression = kinetic(d, v1_par, v2_par),
         .constraints = lst{space.unit_normal},
+        .paper_display = scalar_kinetic(d, s.v1n, s.v2n),
+        .derived_display = s.K_of_v_parallel,
         .depends_on = {"definition.kinetic_energy", "definition.split"},
     });
   }
@@ -368,7 +388,7 @@ Derivation derive_paper(const Definitions& definitions) {
         .derived_expression = space.components_of(quadratic),
         .constraints = lst{space.unit_normal},
         .paper_display = paper_scalar_form,
-        .derived_display = quadratic,
+        .derived_display = factored_form(quadratic),
         .depends_on = {"quadratic.vector_form"},
     });
     struct Coefficient {
@@ -393,7 +413,7 @@ Derivation derive_paper(const Definitions& definitions) {
           .paper_expression = c.printed.subs(paper_shorthand),
           .derived_expression = quadratic.coeff(s.x1n, c.power),
           .paper_display = c.printed,
-          .derived_display = GiNaC::normal(quadratic.coeff(s.x1n, c.power)),
+          .derived_display = factored_form(quadratic.coeff(s.x1n, c.power)),
           .depends_on = {"quadratic.in_normal_component"},
       });
     }
@@ -420,7 +440,7 @@ Derivation derive_paper(const Definitions& definitions) {
         .paper_expression = paper_first.subs(paper_shorthand),
         .derived_expression = D,
         .paper_display = paper_first,
-        .derived_display = D,
+        .derived_display = factored_form(D),
         .depends_on = from_coefficients,
     });
     record.add({
@@ -432,7 +452,7 @@ Derivation derive_paper(const Definitions& definitions) {
         .paper_expression = paper_expanded,
         .derived_expression = D,
         .paper_display = paper_expanded,
-        .derived_display = D,
+        .derived_display = factored_form(D),
         .depends_on = from_coefficients,
     });
     record.add({
@@ -444,7 +464,7 @@ Derivation derive_paper(const Definitions& definitions) {
         .paper_expression = paper_factored,
         .derived_expression = D,
         .paper_display = paper_factored,
-        .derived_display = GiNaC::factor(D),
+        .derived_display = factored_form(D),
         .depends_on = from_coefficients,
     });
     record.add({
@@ -456,7 +476,7 @@ Derivation derive_paper(const Definitions& definitions) {
         .paper_expression = paper_factored,
         .derived_expression = D,
         .paper_display = paper_factored,
-        .derived_display = GiNaC::factor(D),
+        .derived_display = factored_form(D),
         .note = "Masses are positive (GiNaC possymbol); D = 0 exactly when (v2 − v1)·n = 0, a "
                 "grazing contact, where both roots coincide and nothing happens.",
         .depends_on = {"discriminant.factored"},
@@ -503,7 +523,7 @@ Derivation derive_paper(const Definitions& definitions) {
         .paper_expression = in_case_lst(paper_roots, c.sign),
         .derived_expression = in_case_lst(roots, c.sign),
         .paper_display = paper_roots,
-        .derived_display = roots,
+        .derived_display = factored_form(roots),
         .depends_on = {"discriminant.factored", "discriminant.nonnegative"},
     });
     record.add({
@@ -517,7 +537,7 @@ Derivation derive_paper(const Definitions& definitions) {
         .paper_expression = in_case_lst(paper_roots_no_abs, c.sign),
         .derived_expression = in_case_lst(roots, c.sign),
         .paper_display = paper_roots_no_abs,
-        .derived_display = roots,
+        .derived_display = factored_form(roots),
         .note = c.sign > 0 ? "Here the pairing is sign for sign." : "Here ± pair crosswise.",
         .depends_on = {std::string("roots.quadratic_formula.") + c.suffix},
     });
@@ -550,7 +570,8 @@ Derivation derive_paper(const Definitions& definitions) {
                                           space.after_collision(space.v1, minus_root)),
         .constraints = lst{space.unit_normal},
         .paper_display = lst{s.v1 + printed_coefficient_plus * s.n, s.v1 + printed_coefficient_minus * s.n},
-        .derived_display = lst{s.v1 + (plus_root - s.v1n) * s.n, s.v1 + (minus_root - s.v1n) * s.n},
+        .derived_display = lst{s.v1 + factored_form(plus_root - s.v1n) * s.n,
+                               s.v1 + factored_form(minus_root - s.v1n) * s.n},
         .depends_on = {"roots.absolute_value_dropped.relative_speed_nonnegative",
                        "roots.absolute_value_dropped.relative_speed_negative",
                        "assumption.tangential_velocity_unchanged"},
@@ -570,7 +591,7 @@ Derivation derive_paper(const Definitions& definitions) {
       .comparison = Comparison::identity,
       .paper_expression = 0,
       .derived_expression = GiNaC::diff(minus_root, s.v2n),
-      .derived_display = GiNaC::diff(minus_root, s.v2n),
+      .derived_display = factored_form(GiNaC::diff(minus_root, s.v2n)),
       .depends_on = {"general.x1_both_roots"},
   });
   record.add({
@@ -583,7 +604,7 @@ Derivation derive_paper(const Definitions& definitions) {
       .paper_expression = lst{s.v1n, s.v2n},
       .derived_expression = lst{minus_root, x2_of},
       .paper_display = lst{s.v1n, s.v2n},
-      .derived_display = lst{minus_root, x2_of},
+      .derived_display = factored_form(lst{minus_root, x2_of}),
       .note = "Stronger than the paper's intuition: the \"−\" root is not merely implausible, it is "
               "the trivial solution that every pair of conservation laws admits.",
       .depends_on = {"general.x1_both_roots", "quadratic.x2_from_momentum"},
@@ -597,7 +618,7 @@ Derivation derive_paper(const Definitions& definitions) {
       .comparison = Comparison::identity,
       .paper_expression = -relative,
       .derived_expression = x2n_selected - plus_root,
-      .derived_display = GiNaC::normal(x2n_selected - plus_root),
+      .derived_display = factored_form(x2n_selected - plus_root),
       .note = "A perfectly elastic collision in Newton's sense (restitution 1): the balls separate as "
               "fast as they approached.",
       .depends_on = {"general.x1_both_roots", "quadratic.x2_from_momentum"},
@@ -627,7 +648,7 @@ Derivation derive_paper(const Definitions& definitions) {
         .derived_expression = to_lst(x1_selected),
         .constraints = lst{space.unit_normal},
         .paper_display = s.v1 + expanded_coefficient * s.n,
-        .derived_display = s.v1 + GiNaC::normal(plus_root - s.v1n) * s.n,
+        .derived_display = s.v1 + factored_form(plus_root - s.v1n) * s.n,
         .depends_on = {"selection.plus_root_reverses_relative_normal_velocity",
                        "selection.minus_root_is_no_collision"},
     });
@@ -641,7 +662,7 @@ Derivation derive_paper(const Definitions& definitions) {
         .derived_expression = to_lst(x1_selected),
         .constraints = lst{space.unit_normal},
         .paper_display = s.v1 + simplified_coefficient * s.n,
-        .derived_display = s.v1 + GiNaC::normal(plus_root - s.v1n) * s.n,
+        .derived_display = s.v1 + factored_form(plus_root - s.v1n) * s.n,
         .depends_on = {"result.x1_expanded_form"},
     });
   }
@@ -666,7 +687,7 @@ Derivation derive_paper(const Definitions& definitions) {
       .derived_expression = to_lst(x2_selected),
       .constraints = lst{space.unit_normal},
       .paper_display = s.v2 + 2 * s.m1 / (s.m1 + s.m2) * (s.v1n - s.v2n) * s.n,
-      .derived_display = s.v2 + GiNaC::normal(x2n_selected - s.v2n) * s.n,
+      .derived_display = s.v2 + factored_form(x2n_selected - s.v2n) * s.n,
       .depends_on = {"result.x1_simplified_form", "quadratic.x2_from_momentum"},
   });
   {
@@ -680,6 +701,8 @@ Derivation derive_paper(const Definitions& definitions) {
         .comparison = Comparison::identity,
         .paper_expression = concatenate(x1_selected, x2_selected),
         .derived_expression = concatenate(x1_selected, x2_selected).subs(flip),
+        .paper_display = s.results,
+        .derived_display = s.results_flipped,
         .depends_on = {"result.x1_simplified_form", "result.x2_by_symmetry"},
     });
   }
@@ -691,6 +714,12 @@ Derivation derive_paper(const Definitions& definitions) {
     GiNaC::exmap at_rest{{s.m2, s.m1}};
     for (const ex& component : space.v1) at_rest[component] = 0;
     const Vec v2_par = parallel_part(space.v2, space.n);
+    // The same substitutions in the scalar form x = v + κ n, for the audit.
+    const ex x1_shown = s.v1 + factored_form(plus_root - s.v1n) * s.n;
+    const ex x2_shown = s.v2 + factored_form(x2n_selected - s.v2n) * s.n;
+    const ex at_rest_shown = lst{s.m2 == s.m1, s.v1 == 0, s.v1n == 0};
+    const ex head_on_shown = lst{s.m2 == s.m1, s.v1 == 0, s.v1n == 0, s.v2 == s.head_on_speed * s.n,
+                                 s.v2n == s.head_on_speed};
     record.add({
         .id = "sanity.equal_masses_at_rest.x1",
         .paper = "p. 2, \"m1 = m2 and v1 = 0\"",
@@ -701,6 +730,7 @@ Derivation derive_paper(const Definitions& definitions) {
         .derived_expression = to_lst(x1_selected).subs(at_rest),
         .constraints = lst{space.unit_normal},
         .paper_display = s.v2n * s.n,
+        .derived_display = factored_form(x1_shown.subs(at_rest_shown)),
         .depends_on = {"result.x1_simplified_form"},
     });
     record.add({
@@ -713,6 +743,7 @@ Derivation derive_paper(const Definitions& definitions) {
         .derived_expression = to_lst(x2_selected).subs(at_rest),
         .constraints = lst{space.unit_normal},
         .paper_display = s.v2 - s.v2n * s.n,
+        .derived_display = x2_shown.subs(at_rest_shown),
         .depends_on = {"result.x2_by_symmetry"},
     });
     GiNaC::exmap head_on = at_rest;
@@ -728,6 +759,7 @@ Derivation derive_paper(const Definitions& definitions) {
         .derived_expression = to_lst(x1_selected).subs(head_on),
         .constraints = lst{space.unit_normal},
         .paper_display = s.v2,
+        .derived_display = factored_form(x1_shown.subs(head_on_shown)),
         .depends_on = {"sanity.equal_masses_at_rest.x1"},
     });
     record.add({
@@ -740,6 +772,7 @@ Derivation derive_paper(const Definitions& definitions) {
         .derived_expression = to_lst(x2_selected).subs(head_on),
         .constraints = lst{space.unit_normal},
         .paper_display = 0,
+        .derived_display = factored_form(x2_shown.subs(head_on_shown)),
         .depends_on = {"sanity.equal_masses_at_rest.x2"},
     });
   }
@@ -768,6 +801,11 @@ Derivation derive_paper(const Definitions& definitions) {
         .derived_expression = limit,
         .constraints = lst{space.unit_normal},
         .paper_display = s.v1 - 2 * s.v1n * s.n,
+        .derived_display =
+            s.v1 + factored_form(GiNaC::series_to_poly(
+                       GiNaC::normal((plus_root - s.v1n).subs(lst{s.m2 == 1 / s.inverse_m2, s.v2n == 0}))
+                           .series(s.inverse_m2 == 0, 1))) *
+                       s.n,
         .note = "v2 = 0 matters: the limit of x1 for a moving wall is v1 + 2((v2 − v1)·n) n.",
         .depends_on = {"result.x1_simplified_form"},
     });
@@ -792,10 +830,10 @@ Derivation derive_paper(const Definitions& definitions) {
           .derived_expression = sandwich,
           .constraints = lst{sp->unit_normal},
           .paper_display = s.v1 - 2 * s.v1n * s.n,
-          .derived_display = -s.n * s.v1 * s.n,
+          .derived_display = -s.sandwich,
           .note = "In geometric algebra n v n = 2 (n·v) n − (n·n) v, so −n v n is the reflection in "
                   "the plane normal to n only when n² = n·n = 1.",
-          .depends_on = {"cushion.limit"},
+          .depends_on = {"definition.split"},
       });
     }
   }
@@ -814,6 +852,8 @@ Derivation derive_paper(const Definitions& definitions) {
         .paper_expression = to_lst(momentum(d, sp->v1, sp->v2)),
         .derived_expression = to_lst(momentum(d, x1, x2)),
         .constraints = lst{sp->unit_normal},
+        .paper_display = s.P_of_v,
+        .derived_display = s.P_of_x,
         .depends_on = {"result.x1_simplified_form", "result.x2_by_symmetry", "definition.conservation"},
     });
     record.add({
@@ -826,6 +866,8 @@ Derivation derive_paper(const Definitions& definitions) {
         .paper_expression = kinetic(d, sp->v1, sp->v2),
         .derived_expression = kinetic(d, x1, x2),
         .constraints = lst{sp->unit_normal},
+        .paper_display = s.K_of_v,
+        .derived_display = s.K_of_x,
         .depends_on = {"result.x1_simplified_form", "result.x2_by_symmetry", "definition.conservation"},
     });
   }

@@ -39,9 +39,14 @@ Product as_product(const ex& e);
 // The terms of a sum in print order: constants first, then by the text of their non-numeric part.
 std::vector<Product> sorted_terms(const ex& sum);
 
-// True when the first term of `sum` in print order has a negative coefficient.
+// True when `sum` reads better negated: more negative terms than positive ones, or as many and the
+// first term in print order negative. Either way the choice depends on the sum alone, not the run.
 bool leads_negative(const ex& sum) {
   const std::vector<Product> terms = sorted_terms(sum);
+  const auto negative = std::count_if(terms.begin(), terms.end(),
+                                      [](const Product& p) { return p.coefficient.is_negative(); });
+  const auto positive = static_cast<std::ptrdiff_t>(terms.size()) - negative;
+  if (negative != positive) return negative > positive;
   return !terms.empty() && terms.front().coefficient.is_negative();
 }
 
@@ -58,7 +63,7 @@ Product as_product(const ex& e) {
     }
     // Orient every sum so that its first term is positive: (a − b)² and (b − a)² print alike.
     if (GiNaC::is_a<GiNaC::add>(f.base) && f.exponent.is_integer() && leads_negative(f.base)) {
-      f.base = (-f.base).expand();
+      f.base = -f.base;  // a number times a sum distributes over its terms, nothing else changes
       if (is_odd_integer(f.exponent)) product.coefficient = -product.coefficient;
     }
     product.factors.push_back(f);
@@ -164,7 +169,27 @@ std::string print_magnitude(const Product& p, Notation notation) {
     return joined;
   };
   if (denominator.empty()) return join(numerator);
-  if (notation == Notation::latex) return "\\frac{" + join(numerator) + "}{" + join(denominator) + "}";
+  if (notation == Notation::latex) {
+    // Inside \frac a lone sum needs no parentheses of its own.
+    const auto strip = [](std::vector<std::string>& parts) {
+      const std::string open = "\\left(", close = "\\right)";
+      if (parts.size() == 1 && parts[0].rfind(open, 0) == 0 && parts[0].size() > open.size() + close.size() &&
+          parts[0].compare(parts[0].size() - close.size(), close.size(), close) == 0) {
+        const std::string inner = parts[0].substr(open.size(), parts[0].size() - open.size() - close.size());
+        // Only when the outer pair encloses everything: no "\right)...\left(" in between at depth 0.
+        int depth = 0;
+        bool encloses = true;
+        for (std::size_t i = 0; i < inner.size(); ++i) {
+          if (inner.compare(i, open.size(), open) == 0) ++depth;
+          if (inner.compare(i, close.size(), close) == 0 && --depth < 0) encloses = false;
+        }
+        if (encloses) parts[0] = inner;
+      }
+    };
+    strip(numerator);
+    strip(denominator);
+    return "\\frac{" + join(numerator) + "}{" + join(denominator) + "}";
+  }
   const std::string below = denominator.size() == 1 ? denominator.front() : "(" + join(denominator) + ")";
   return join(numerator) + "/" + below;
 }
@@ -197,7 +222,12 @@ std::string print_any(const ex& e, Notation notation) {
     const std::string name = GiNaC::ex_to<GiNaC::function>(e).get_name();
     std::string arguments;
     for (const ex& argument : e) arguments += (arguments.empty() ? "" : ", ") + print_any(argument, notation);
-    if (name == "abs" && notation == Notation::latex) return "\\left|" + arguments + "\\right|";
+    if (name == "abs") {
+      // |−w| = |w|: orient the argument like any sum, so that it prints alike on every run.
+      const ex w = GiNaC::is_a<GiNaC::add>(e.op(0)) && leads_negative(e.op(0)) ? ex(-e.op(0)) : e.op(0);
+      const std::string inner = print_any(w, notation);
+      return notation == Notation::latex ? "\\left|" + inner + "\\right|" : "abs(" + inner + ")";
+    }
     if (notation == Notation::latex) return "\\operatorname{" + name + "}\\left(" + arguments + "\\right)";
     return name + "(" + arguments + ")";
   }
@@ -208,14 +238,39 @@ std::string print_any(const ex& e, Notation notation) {
 
 std::string print(const ex& e, Notation notation) { return print_any(e, notation); }
 
+ex expanded_form(const ex& e) {
+  if (GiNaC::is_a<GiNaC::lst>(e)) {
+    GiNaC::lst out;
+    for (const ex& element : e) out.append(expanded_form(element));
+    return out;
+  }
+  const ex numerator_denominator = GiNaC::normal(e).numer_denom();
+  return numerator_denominator.op(0).expand() / numerator_denominator.op(1).expand();
+}
+
 ex factored_form(const ex& e) {
   if (GiNaC::is_a<GiNaC::lst>(e)) {
     GiNaC::lst out;
     for (const ex& element : e) out.append(factored_form(element));
     return out;
   }
+  // factor() returns its irreducible factors in whatever collected form its algorithm produced, which
+  // varies between runs; each factor expanded is unique up to sign, which print() fixes.
+  const auto expanded_factors = [](const ex& polynomial) {
+    const ex factored = GiNaC::factor(polynomial);
+    if (!GiNaC::is_a<GiNaC::mul>(factored)) return factored.expand();
+    ex product = 1;
+    for (const ex& factor : factored) {
+      if (GiNaC::is_a<GiNaC::power>(factor)) {
+        product *= GiNaC::pow(factor.op(0).expand(), factor.op(1));
+      } else {
+        product *= factor.expand();
+      }
+    }
+    return product;
+  };
   const ex numerator_denominator = GiNaC::normal(e).numer_denom();
-  return GiNaC::factor(numerator_denominator.op(0)) / GiNaC::factor(numerator_denominator.op(1));
+  return expanded_factors(numerator_denominator.op(0)) / expanded_factors(numerator_denominator.op(1));
 }
 
 }  // namespace billiards::derive

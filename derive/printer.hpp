@@ -24,4 +24,8 @@ std::string print(const GiNaC::ex& e, Notation notation);
 /// Unique up to the order and sign of factors, which print() fixes.
 GiNaC::ex factored_form(const GiNaC::ex& e);
 
+/// A rational expression as expanded numerator / expanded denominator: canonical, and cheap where
+/// factored_form() would have to factor large polynomials.
+GiNaC::ex expanded_form(const GiNaC::ex& e);
+
 }  // namespace billiards::derive

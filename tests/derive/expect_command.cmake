@@ -1,0 +1,23 @@
+# Runs COMMAND (a ;-list) and checks its exit code and output.
+#   EXIT_CODE        the exit status expected
+#   STDOUT_MATCHES   a regular expression stdout must match (optional)
+#   STDERR_MATCHES   a regular expression stderr must match (optional)
+#   STDERR_ONE_LINE  when set, stderr must be exactly one line
+execute_process(COMMAND ${COMMAND} RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(NOT code STREQUAL EXIT_CODE)
+  message(FATAL_ERROR "exit status ${code}, expected ${EXIT_CODE}\nstdout:\n${out}\nstderr:\n${err}")
+endif()
+string(REPLACE "\n" " " out_flat "${out}")
+if(DEFINED STDOUT_MATCHES AND NOT out_flat MATCHES "${STDOUT_MATCHES}")
+  message(FATAL_ERROR "stdout does not match '${STDOUT_MATCHES}':\n${out}")
+endif()
+if(DEFINED STDERR_MATCHES AND NOT err MATCHES "${STDERR_MATCHES}")
+  message(FATAL_ERROR "stderr does not match '${STDERR_MATCHES}':\n${err}")
+endif()
+if(STDERR_ONE_LINE)
+  string(REGEX MATCHALL "\n" newlines "${err}")
+  list(LENGTH newlines count)
+  if(NOT count EQUAL 1)
+    message(FATAL_ERROR "stderr has ${count} lines, expected one:\n${err}")
+  endif()
+endif()

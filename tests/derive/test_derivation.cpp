@@ -1,0 +1,208 @@
+// The derivation of the paper: every claim verified, one assumption, and perturbed definitions caught.
+#include "audit.hpp"
+#include "derivation.hpp"
+
+#include <catch2/catch.hpp>
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <map>
+#include <regex>
+#include <set>
+#include <string>
+
+using namespace billiards::derive;
+
+namespace {
+
+const Derivation& paper_derivation() {
+  static const Derivation derivation = derive_paper();
+  return derivation;
+}
+
+const Claim* find_claim(const Derivation& derivation, const std::string& id) {
+  for (const Claim& claim : derivation.claims) {
+    if (claim.id == id) return &claim;
+  }
+  return nullptr;
+}
+
+// Substitutes numbers for the derivation's symbols, found by name (they are internal to it).
+GiNaC::ex by_name(const GiNaC::ex& e, const std::map<std::string, GiNaC::numeric>& values) {
+  GiNaC::exmap substitution;
+  for (GiNaC::const_preorder_iterator it = e.preorder_begin(); it != e.preorder_end(); ++it) {
+    if (GiNaC::is_a<GiNaC::symbol>(*it)) {
+      const auto found = values.find(GiNaC::ex_to<GiNaC::symbol>(*it).get_name());
+      if (found != values.end()) substitution[*it] = found->second;
+    }
+  }
+  return e.subs(substitution);
+}
+
+bool contains(const std::vector<std::string>& ids, const std::string& id) {
+  return std::find(ids.begin(), ids.end(), id) != ids.end();
+}
+
+}  // namespace
+
+TEST_CASE("The paper's derivation checks out", "[derive][paper]") {
+  const Derivation& derivation = paper_derivation();
+  const Summary summary = summarize(derivation.claims);
+
+  SECTION("every claim is verified except the one assumption") {
+    for (const Claim& claim : derivation.claims) {
+      INFO(claim.id);
+      CHECK(claim.verdict != Verdict::failed);
+    }
+    CHECK(summary.failed == 0);
+    CHECK(summary.assumption == 1);
+    CHECK(summary.verified >= 20);
+  }
+  SECTION("the only assumption is that the tangential parts are unchanged") {
+    for (const Claim& claim : derivation.claims) {
+      if (claim.verdict == Verdict::assumption) {
+        CHECK(claim.id == "assumption.tangential_velocity_unchanged");
+        CHECK_FALSE(claim.note.empty());
+      }
+    }
+  }
+  SECTION("ids are unique, stable and descriptive, never ordinals") {
+    std::set<std::string> seen;
+    const std::regex descriptive("[a-z][a-z0-9_]*(\\.[a-z0-9_]+)+");
+    for (const Claim& claim : derivation.claims) {
+      INFO(claim.id);
+      CHECK(seen.insert(claim.id).second);
+      CHECK(std::regex_match(claim.id, descriptive));
+      CHECK_FALSE(std::regex_search(claim.id, std::regex("\\.[0-9]+$")));
+    }
+  }
+  SECTION("the claims the issue names are all there") {
+    for (const char* id :
+         {"split.momentum.2d", "split.momentum.3d", "split.kinetic.2d", "split.kinetic.3d",
+          "split.kinetic_cross_term.3d", "assumption.tangential_velocity_unchanged",
+          "quadratic.coefficient_a", "quadratic.coefficient_b", "quadratic.coefficient_c",
+          "discriminant.paper_form", "discriminant.expanded", "discriminant.factored",
+          "discriminant.nonnegative", "roots.quadratic_formula.relative_speed_nonnegative",
+          "roots.quadratic_formula.relative_speed_negative",
+          "roots.absolute_value_dropped.relative_speed_nonnegative",
+          "roots.absolute_value_dropped.relative_speed_negative", "selection.minus_root_is_no_collision",
+          "selection.plus_root_reverses_relative_normal_velocity", "result.x2_by_symmetry",
+          "result.x1_expanded_form", "result.x1_simplified_form", "result.independent_of_normal_sign",
+          "sanity.equal_masses_at_rest.x1", "sanity.equal_masses_at_rest.x2", "sanity.head_on.x1",
+          "sanity.head_on.x2", "cushion.limit", "cushion.reflection_is_sandwich.3d",
+          "conservation.momentum.2d", "conservation.momentum.3d", "conservation.kinetic_energy.2d",
+          "conservation.kinetic_energy.3d"}) {
+      INFO(id);
+      CHECK(find_claim(derivation, id) != nullptr);
+    }
+  }
+  SECTION("every claim names what it rests on, and that comes before it") {
+    std::set<std::string> earlier;
+    for (const Premise& premise : derivation.premises) earlier.insert(premise.id);
+    for (const Claim& claim : derivation.claims) {
+      INFO(claim.id);
+      for (const std::string& upstream : claim.depends_on) CHECK(earlier.count(upstream) == 1);
+      earlier.insert(claim.id);
+    }
+  }
+  SECTION("the selected root is the paper's result, in exact rationals") {
+    // m1 = 3, m2 = 5, v1·n = 7/2, v2·n = −1: x1·n = v1·n + 2 m2/(m1 + m2) ((v2 − v1)·n) = −17/8 and
+    // x2·n = v2·n − 2 m1/(m1 + m2) ((v2 − v1)·n) = 19/8, by hand.
+    const GiNaC::ex values = by_name(derivation.selected.x1_normal, {{"m1", 3}, {"m2", 5}, {"v1n", GiNaC::numeric(7, 2)}, {"v2n", -1}});
+    CHECK(GiNaC::normal(values - GiNaC::numeric(-17, 8)).is_zero());
+    const GiNaC::ex x2 = by_name(derivation.selected.x2_normal, {{"m1", 3}, {"m2", 5}, {"v1n", GiNaC::numeric(7, 2)}, {"v2n", -1}});
+    CHECK(GiNaC::normal(x2 - GiNaC::numeric(19, 8)).is_zero());
+  }
+}
+
+TEST_CASE("A perturbed definition fails the claims downstream of it", "[derive][perturbation]") {
+  SECTION("K with the ½ dropped from m2's term: every printed formula downstream fails") {
+    Definitions wrong;
+    wrong.kinetic_coefficient_2 = 1;  // K(a, b) = ½ m1 a² + m2 b²
+    const Derivation derivation = derive_paper(wrong);
+    // These state properties that hold for any K(a, b) = α m1 a² + β m2 b², so they must stay true:
+    // the split (no cross terms), the reduction to normal components, D ≥ 0 (the no-collision root
+    // is always a real root), and that the derived result conserves the K it was derived from.
+    const std::set<std::string> true_of_any_such_K = {
+        "split.kinetic.2d", "split.kinetic.3d", "along_n.kinetic_energy",
+        "along_n.kinetic_energy_in_normal_components", "discriminant.nonnegative",
+        "conservation.momentum.2d", "conservation.momentum.3d", "conservation.kinetic_energy.2d",
+        "conservation.kinetic_energy.3d"};
+    const std::vector<std::string> downstream = downstream_of(derivation.claims, "definition.kinetic_energy");
+    REQUIRE(downstream.size() >= 20);
+    for (const Claim& claim : derivation.claims) {
+      INFO(claim.id);
+      if (!contains(downstream, claim.id)) {
+        CHECK(claim.verdict != Verdict::failed);  // upstream of K or independent of it
+      } else if (true_of_any_such_K.count(claim.id) != 0) {
+        CHECK(claim.verdict == Verdict::verified);
+      } else {
+        CHECK(claim.verdict == Verdict::failed);
+      }
+    }
+    CHECK(summarize(derivation.claims).failed >= 20);
+  }
+  SECTION("K with the ½ dropped from both terms: the coefficients and D fail, the roots cannot") {
+    // K → 2K scales the energy equation K(v) = K(x) by 2: its roots, and so everything from the roots
+    // on, are unchanged. What the paper prints for A, B, C and D is no longer what is derived.
+    Definitions doubled;
+    doubled.kinetic_coefficient_1 = 1;
+    doubled.kinetic_coefficient_2 = 1;
+    const Derivation derivation = derive_paper(doubled);
+    for (const char* id : {"quadratic.vector_form", "quadratic.in_normal_component", "quadratic.coefficient_a",
+                           "quadratic.coefficient_b", "quadratic.coefficient_c", "discriminant.paper_form",
+                           "discriminant.expanded", "discriminant.factored"}) {
+      INFO(id);
+      CHECK(find_claim(derivation, id)->verdict == Verdict::failed);
+    }
+    CHECK(find_claim(derivation, "result.x1_simplified_form")->verdict == Verdict::verified);
+  }
+  SECTION("P with m2 doubled: everything from momentum conservation on fails") {
+    Definitions wrong;
+    wrong.momentum_coefficient_2 = 2;
+    const Derivation derivation = derive_paper(wrong);
+    for (const char* id : {"quadratic.x2_from_momentum", "quadratic.coefficient_a", "discriminant.factored",
+                           "roots.quadratic_formula.relative_speed_nonnegative", "result.x1_simplified_form",
+                           "result.x2_by_symmetry", "sanity.head_on.x1", "cushion.limit"}) {
+      INFO(id);
+      CHECK(find_claim(derivation, id)->verdict == Verdict::failed);
+    }
+  }
+}
+
+TEST_CASE("The audit", "[derive][audit]") {
+  const Derivation& derivation = paper_derivation();
+
+  SECTION("the JSON has the schema the issue names") {
+    const nlohmann::json audit = nlohmann::json::parse(audit_json(derivation));
+    CHECK(audit.at("schema") == 1);
+    CHECK(audit.at("ginac") == ginac_version());
+    REQUIRE(audit.at("claims").size() == derivation.claims.size());
+    for (const auto& claim : audit.at("claims")) {
+      for (const char* key : {"id", "paper", "statement", "method", "verdict"}) CHECK(claim.contains(key));
+      const std::string verdict = claim.at("verdict");
+      CHECK((verdict == "verified" || verdict == "failed" || verdict == "assumption"));
+    }
+    const Summary summary = summarize(derivation.claims);
+    CHECK(audit.at("summary").at("verified") == summary.verified);
+    CHECK(audit.at("summary").at("failed") == summary.failed);
+    CHECK(audit.at("summary").at("assumption") == summary.assumption);
+  }
+  SECTION("the Markdown opens with the summary table and cites the paper and the scope") {
+    const std::string markdown = audit_markdown(derivation);
+    const auto summary_at = markdown.find("## Summary");
+    REQUIRE(summary_at != std::string::npos);
+    CHECK(summary_at < markdown.find("## Premises"));
+    CHECK(markdown.find("S. T. Parkin, \"Billiard Ball Physics\", 2023") != std::string::npos);
+    CHECK(markdown.find("frictionless, spinless") != std::string::npos);
+    for (const Claim& claim : derivation.claims) {
+      INFO(claim.id);
+      CHECK(markdown.find("### " + claim.id + "\n") != std::string::npos);
+    }
+  }
+  SECTION("a second run writes the same bytes") {
+    const Derivation again = derive_paper();
+    CHECK(audit_markdown(again) == audit_markdown(derivation));
+    CHECK(audit_json(again) == audit_json(derivation));
+  }
+}
