@@ -13,8 +13,8 @@ const char* const component_names[] = {"x", "y", "z"};
 
 }  // namespace
 
-Vec component_symbols(const std::string& name, const std::string& tex_letter, const std::string& tex_subscript,
-                      std::size_t dimension) {
+Vec component_symbols(const std::string& name, const std::string& tex_letter,
+                      const std::string& tex_subscript, std::size_t dimension) {
   if (dimension < 2 || dimension > 3) {
     throw std::invalid_argument("component_symbols: dimension is " + std::to_string(dimension) +
                                 ", expected 2 or 3");
@@ -27,8 +27,8 @@ Vec component_symbols(const std::string& name, const std::string& tex_letter, co
     const std::string key = name + "_" + component_names[i];
     auto found = cache.find(key);
     if (found == cache.end()) {
-      const std::string tex = tex_letter + "_{" + tex_subscript + (tex_subscript.empty() ? "" : ",") +
-                              component_names[i] + "}";
+      const std::string tex =
+          tex_letter + "_{" + tex_subscript + (tex_subscript.empty() ? "" : ",") + component_names[i] + "}";
       found = cache.emplace(key, GiNaC::realsymbol(key, tex)).first;
     }
     components.push_back(found->second);
@@ -138,8 +138,7 @@ bool is_manifestly_nonnegative(const ex& e) {
   const ex factored = GiNaC::factor(GiNaC::normal(e));
   bool nonnegative = true;
   for_each_factor(factored, [&](const ex& factor) {
-    const bool even_power = GiNaC::is_a<GiNaC::power>(factor) &&
-                            GiNaC::is_a<GiNaC::numeric>(factor.op(1)) &&
+    const bool even_power = GiNaC::is_a<GiNaC::power>(factor) && GiNaC::is_a<GiNaC::numeric>(factor.op(1)) &&
                             GiNaC::ex_to<GiNaC::numeric>(factor.op(1)).is_even();
     if (!even_power && !is_positive_constant_or_symbol(factor)) nonnegative = false;
   });
@@ -162,5 +161,11 @@ ex resolve_absolute_values(const ex& e, const ex& s, int sign) {
   } resolve{s, sign};
   return e.map(resolve);
 }
+
+#if !defined(__clang__)
+GiNaC::lst clifford_components(const ex& e, const ex& c, bool algebraic) {
+  return GiNaC::clifford_to_lst(e, c, algebraic);
+}
+#endif
 
 }  // namespace billiards::derive

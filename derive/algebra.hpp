@@ -17,8 +17,8 @@ using Vec = std::vector<GiNaC::ex>;
 /// The components of a vector named `name` in `dimension` dimensions: realsymbols name_x, name_y,
 /// name_z, written in TeX as tex_letter_{tex_subscript,x} (v_{1,x}) or tex_letter_{x} (n_{x}).
 /// Symbols are cached by name, so the same name always yields the same symbols.
-Vec component_symbols(const std::string& name, const std::string& tex_letter, const std::string& tex_subscript,
-                      std::size_t dimension);
+Vec component_symbols(const std::string& name, const std::string& tex_letter,
+                      const std::string& tex_subscript, std::size_t dimension);
 
 Vec add(const Vec& a, const Vec& b);
 Vec subtract(const Vec& a, const Vec& b);
@@ -53,5 +53,15 @@ bool is_manifestly_nonnegative(const GiNaC::ex& e);
 /// Replaces every |w| in `e` whose argument is (positive quantity) × `s` by sign·w·(…), given that
 /// `s` has the sign `sign` (+1 or −1). Leaves any other |…| alone.
 GiNaC::ex resolve_absolute_values(const GiNaC::ex& e, const GiNaC::ex& s, int sign);
+
+/// GiNaC::clifford_to_lst(e, c, algebraic), the components of a Clifford vector. Declared here with
+/// the symbol libginac exports: clang++ 14 infers an [abi:cxx11] tag for a function returning
+/// GiNaC::lst (it holds a std::list) that GCC, which built libginac, does not, so calling GiNaC's own
+/// declaration from clang-built code fails to link.
+GiNaC::lst clifford_components(const GiNaC::ex& e, const GiNaC::ex& c, bool algebraic)
+#if defined(__clang__)
+    __asm__("_ZN5GiNaC15clifford_to_lstERKNS_2exES2_b")
+#endif
+        ;
 
 }  // namespace billiards::derive

@@ -96,8 +96,8 @@ std::string audit_markdown(const Derivation& derivation) {
     for (const Claim& claim : derivation.claims) {
       if (claim.section != section.id) continue;
       md << "\n### " << claim.id << "\n\n"
-         << "<a id=\"" << claim.id << "\"></a>**" << verdict_mark(claim.verdict) << "** — "
-         << claim.statement << "\n\n"
+         << "<a id=\"" << claim.id << "\"></a>**" << verdict_mark(claim.verdict) << "** — " << claim.statement
+         << "\n\n"
          << "- Paper: " << (claim.paper.empty() ? "not stated in the paper" : claim.paper) << "\n"
          << "- As printed: $" << paper_latex(claim) << "$\n"
          << "- Derived: $" << derived_latex(claim) << "$\n"
@@ -132,7 +132,8 @@ std::string audit_json(const Derivation& derivation) {
   for (const Claim& claim : derivation.claims) {
     nlohmann::ordered_json entry;
     entry["id"] = claim.id;
-    entry["paper"] = claim.paper.empty() ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(claim.paper);
+    entry["paper"] =
+        claim.paper.empty() ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(claim.paper);
     entry["statement"] = claim.statement;
     entry["method"] = claim.method;
     entry["verdict"] = to_string(claim.verdict);

@@ -67,16 +67,15 @@ void check(Claim& claim) {
       claim.residual = 0;
       return;
     case Comparison::nonnegative:
-      claim.verdict = is_manifestly_nonnegative(claim.derived_expression) ? Verdict::verified
-                                                                          : Verdict::failed;
+      claim.verdict =
+          is_manifestly_nonnegative(claim.derived_expression) ? Verdict::verified : Verdict::failed;
       claim.residual = claim.verdict == Verdict::verified ? ex(0) : GiNaC::factor(claim.derived_expression);
       return;
     case Comparison::identity:
       claim.residual = residual_of(claim.derived_expression, claim.paper_expression, claim.constraints);
       break;
     case Comparison::same_set:
-      claim.residual =
-          residual_as_sets(claim.derived_expression, claim.paper_expression, claim.constraints);
+      claim.residual = residual_as_sets(claim.derived_expression, claim.paper_expression, claim.constraints);
       break;
   }
   claim.verdict = all_zero(claim.residual) ? Verdict::verified : Verdict::failed;

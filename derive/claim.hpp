@@ -31,13 +31,13 @@ struct Claim {
   std::string statement;  ///< one sentence a reader can check
   std::string method;     ///< how the derived side was obtained and compared, in words
   Comparison comparison = Comparison::identity;
-  GiNaC::ex paper_expression;    ///< typed exactly as the paper prints it
-  GiNaC::ex derived_expression;  ///< computed by the derivation, never typed
-  GiNaC::lst constraints;        ///< relations x² == r imposed by substitution before comparing
+  GiNaC::ex paper_expression;                 ///< typed exactly as the paper prints it
+  GiNaC::ex derived_expression;               ///< computed by the derivation, never typed
+  GiNaC::lst constraints;                     ///< relations x² == r imposed by substitution before comparing
   GiNaC::ex paper_display = GiNaC::fail();    ///< shown in the audit instead of paper_expression when set
   GiNaC::ex derived_display = GiNaC::fail();  ///< shown in the audit instead of derived_expression when set
-  std::string note;              ///< where the paper is imprecise, or what the claim adds
-  std::vector<std::string> depends_on;  ///< definitions and claims it rests on
+  std::string note;                           ///< where the paper is imprecise, or what the claim adds
+  std::vector<std::string> depends_on;        ///< definitions and claims it rests on
 
   Verdict verdict = Verdict::failed;  ///< set by check()
   GiNaC::ex residual = 0;             ///< set by check(): what is left of derived − paper

@@ -44,9 +44,11 @@ struct Symbols {
   GiNaC::symbol K_of_x{"K_x", "K(x_1, x_2)"};
   GiNaC::symbol K_of_x_parallel{"K_xpar", "K(x_1^{\\parallel}, x_2^{\\parallel})"};
   GiNaC::symbol K_split{"K_split", "K(x_1^{\\parallel}, x_2^{\\parallel}) + K(x_1^{\\perp}, x_2^{\\perp})"};
-  GiNaC::symbol P_v_par_minus_x_par{"dP_par", "P(v_1^{\\parallel}, v_2^{\\parallel}) - P(x_1^{\\parallel}, x_2^{\\parallel})"};
+  GiNaC::symbol P_v_par_minus_x_par{
+      "dP_par", "P(v_1^{\\parallel}, v_2^{\\parallel}) - P(x_1^{\\parallel}, x_2^{\\parallel})"};
   GiNaC::symbol P_v_minus_x{"dP", "P(v_1, v_2) - P(x_1, x_2)"};
-  GiNaC::symbol K_v_par_minus_x_par{"dK_par", "K(v_1^{\\parallel}, v_2^{\\parallel}) - K(x_1^{\\parallel}, x_2^{\\parallel})"};
+  GiNaC::symbol K_v_par_minus_x_par{
+      "dK_par", "K(v_1^{\\parallel}, v_2^{\\parallel}) - K(x_1^{\\parallel}, x_2^{\\parallel})"};
   GiNaC::symbol K_v_minus_x{"dK", "K(v_1, v_2) - K(x_1, x_2)"};
   GiNaC::symbol P_of_v_parallel{"P_vpar", "P(v_1^{\\parallel}, v_2^{\\parallel})"};
   GiNaC::symbol K_of_v_parallel{"K_vpar", "K(v_1^{\\parallel}, v_2^{\\parallel})"};
@@ -54,7 +56,8 @@ struct Symbols {
   GiNaC::symbol K_of_v{"K_v", "K(v_1, v_2)"};
   GiNaC::symbol sandwich{"nvn", "\\mathbf{n} \\mathbf{v}_1 \\mathbf{n}"};
   GiNaC::symbol results{"x1x2", "(\\mathbf{x}_1, \\mathbf{x}_2)"};
-  GiNaC::symbol results_flipped{"x1x2_flipped", "(\\mathbf{x}_1, \\mathbf{x}_2)\\big|_{\\mathbf{n} \\to -\\mathbf{n}}"};
+  GiNaC::symbol results_flipped{"x1x2_flipped",
+                                "(\\mathbf{x}_1, \\mathbf{x}_2)\\big|_{\\mathbf{n} \\to -\\mathbf{n}}"};
   GiNaC::symbol a_par_dot_b_perp{"apar_bperp", "a^{\\parallel} \\cdot b^{\\perp}"};
 };
 
@@ -162,8 +165,7 @@ Derivation derive_paper(const Definitions& definitions) {
     result.premises = {
         {"definition.momentum", "P(a, b) = m1 a + m2 b: the total momentum of the two balls.",
          scalar_momentum(d, a, b)},
-        {"definition.kinetic_energy",
-         "K(a, b) = ½ m1 a² + ½ m2 b²: their total kinetic energy (a² = a·a).",
+        {"definition.kinetic_energy", "K(a, b) = ½ m1 a² + ½ m2 b²: their total kinetic energy (a² = a·a).",
          scalar_kinetic(d, a, b)},
         {"definition.split",
          "a∥ = (a·n) n and a⊥ = a − a∥ for a unit contact normal n (n·n = 1); vectors are kept in "
@@ -186,8 +188,8 @@ Derivation derive_paper(const Definitions& definitions) {
     record.add({
         .id = "split.momentum" + sp->suffix,
         .paper = "p. 1, the split of P (\"it is not hard to show that\")",
-        .statement = "P(x1, x2) = P(x1∥, x2∥) + P(x1⊥, x2⊥) in " + std::to_string(sp->dimension) +
-                     "-D components.",
+        .statement =
+            "P(x1, x2) = P(x1∥, x2∥) + P(x1⊥, x2⊥) in " + std::to_string(sp->dimension) + "-D components.",
         .method = "identity after expand(), componentwise",
         .comparison = Comparison::identity,
         .paper_expression = to_lst(momentum(d, sp->x1, sp->x2)),
@@ -227,7 +229,8 @@ Derivation derive_paper(const Definitions& definitions) {
         .derived_display = s.K_split,
         .note = "Holds only because n is a unit vector: without n·n = 1 the parallel part carries a "
                 "factor (n·n)² and the cross terms do not cancel.",
-        .depends_on = {"definition.kinetic_energy", "definition.split", "split.kinetic_cross_term" + sp->suffix},
+        .depends_on = {"definition.kinetic_energy", "definition.split",
+                       "split.kinetic_cross_term" + sp->suffix},
     });
   }
 
@@ -323,10 +326,10 @@ Derivation derive_paper(const Definitions& definitions) {
                  "Solve momentum conservation along n for x2·n, substitute into energy conservation "
                  "and read the coefficients off with coeff().");
   // The paper's shorthand P·n and K∥, replaced by their definitions before any comparison.
-  const ex paper_shorthand = lst{s.Pn == scalar_momentum(d, s.v1n, s.v2n),
-                                 s.K_parallel == scalar_kinetic(d, s.v1n, s.v2n)};
-  const ex x2n_solved = GiNaC::lsolve(
-      scalar_momentum(d, s.x1n, s.x2n) == scalar_momentum(d, s.v1n, s.v2n), s.x2n);
+  const ex paper_shorthand =
+      lst{s.Pn == scalar_momentum(d, s.v1n, s.v2n), s.K_parallel == scalar_kinetic(d, s.v1n, s.v2n)};
+  const ex x2n_solved =
+      GiNaC::lsolve(scalar_momentum(d, s.x1n, s.x2n) == scalar_momentum(d, s.v1n, s.v2n), s.x2n);
   record.add({
       .id = "quadratic.x2_from_momentum",
       .paper = "p. 1, \"Solving for x2∥ in the momentum preservation equation\"",
@@ -362,19 +365,17 @@ Derivation derive_paper(const Definitions& definitions) {
         .derived_expression = derived_vector_form,
         .constraints = lst{space.unit_normal},
         .paper_display = numeric(1, 2) * s.m1 * (1 + s.m1 / s.m2) * s.x1_parallel_squared -
-                         s.m1 / s.m2 * s.P_parallel_dot_x1_parallel +
-                         s.P_parallel_squared / (2 * s.m2) - s.K_parallel,
+                         s.m1 / s.m2 * s.P_parallel_dot_x1_parallel + s.P_parallel_squared / (2 * s.m2) -
+                         s.K_parallel,
         .derived_display = s.K_of_x_parallel - s.K_parallel,
         .note = "(x1∥)² means x1∥·x1∥ and P∥ = P(v1∥, v2∥).",
         .depends_on = {"quadratic.x2_from_momentum", "along_n.kinetic_energy"},
     });
   }
-  const ex quadratic =
-      (scalar_kinetic(d, s.x1n, x2n_solved) - scalar_kinetic(d, s.v1n, s.v2n)).expand();
+  const ex quadratic = (scalar_kinetic(d, s.x1n, x2n_solved) - scalar_kinetic(d, s.v1n, s.v2n)).expand();
   {
     const ex paper_scalar_form = numeric(1, 2) * s.m1 * (1 + s.m1 / s.m2) * GiNaC::pow(s.x1n, 2) -
-                                 s.m1 / s.m2 * s.Pn * s.x1n + GiNaC::pow(s.Pn, 2) / (2 * s.m2) -
-                                 s.K_parallel;
+                                 s.m1 / s.m2 * s.Pn * s.x1n + GiNaC::pow(s.Pn, 2) / (2 * s.m2) - s.K_parallel;
     record.add({
         .id = "quadratic.in_normal_component",
         .paper = "p. 1, the second quadratic (\"a quadratic equation in the variable x1·n\")",
@@ -426,11 +427,11 @@ Derivation derive_paper(const Definitions& definitions) {
   const ex relative = s.v2n - s.v1n;  // (v2 − v1)·n
   {
     const ex paper_first = 2 * s.m1 * (1 + s.m1 / s.m2) * s.K_parallel - s.m1 / s.m2 * GiNaC::pow(s.Pn, 2);
-    const ex paper_expanded = GiNaC::pow(s.m1, 2) * (GiNaC::pow(s.v1n, 2) + GiNaC::pow(s.v2n, 2) -
-                                                     2 * s.v1n * s.v2n);
+    const ex paper_expanded =
+        GiNaC::pow(s.m1, 2) * (GiNaC::pow(s.v1n, 2) + GiNaC::pow(s.v2n, 2) - 2 * s.v1n * s.v2n);
     const ex paper_factored = GiNaC::pow(s.m1, 2) * GiNaC::pow(relative, 2);
-    const std::vector<std::string> from_coefficients = {
-        "quadratic.coefficient_a", "quadratic.coefficient_b", "quadratic.coefficient_c"};
+    const std::vector<std::string> from_coefficients = {"quadratic.coefficient_a", "quadratic.coefficient_b",
+                                                        "quadratic.coefficient_c"};
     record.add({
         .id = "discriminant.paper_form",
         .paper = "p. 1, \"if we examine the discriminant D\"",
@@ -495,9 +496,9 @@ Derivation derive_paper(const Definitions& definitions) {
                                (s.Pn - s.m2 * relative) / (s.m1 + s.m2)};
   // Cases on the sign of (v2 − v1)·n: write v2·n = v1·n + s and resolve every |…| for s ≥ 0, s < 0.
   const auto in_case = [&](const ex& e, int sign) {
-    return GiNaC::normal(resolve_absolute_values(
-        e.subs(paper_shorthand).subs(s.v2n == s.v1n + s.relative_normal_speed), s.relative_normal_speed,
-        sign));
+    return GiNaC::normal(
+        resolve_absolute_values(e.subs(paper_shorthand).subs(s.v2n == s.v1n + s.relative_normal_speed),
+                                s.relative_normal_speed, sign));
   };
   const auto in_case_lst = [&](const lst& l, int sign) {
     lst out;
@@ -549,8 +550,7 @@ Derivation derive_paper(const Definitions& definitions) {
   const ex plus_root = without_abs(roots.op(0)), minus_root = without_abs(roots.op(1));
 
   // ---- The general solution ------------------------------------------------------------------
-  record.section("general", "Putting it together",
-                 "x1 = v1⊥ + (x1·n) n with either root (3-D components).");
+  record.section("general", "Putting it together", "x1 = v1⊥ + (x1·n) n with either root (3-D components).");
   {
     const ex printed_coefficient_plus = (s.Pn + s.m2 * relative) / (s.m1 + s.m2) - s.v1n;
     const ex printed_coefficient_minus = (s.Pn - s.m2 * relative) / (s.m1 + s.m2) - s.v1n;
@@ -565,7 +565,8 @@ Derivation derive_paper(const Definitions& definitions) {
                               "componentwise") +
                   unit_normal_method,
         .comparison = Comparison::identity,
-        .paper_expression = concatenate(paper_x1(printed_coefficient_plus), paper_x1(printed_coefficient_minus)),
+        .paper_expression =
+            concatenate(paper_x1(printed_coefficient_plus), paper_x1(printed_coefficient_minus)),
         .derived_expression = concatenate(space.after_collision(space.v1, plus_root),
                                           space.after_collision(space.v1, minus_root)),
         .constraints = lst{space.unit_normal},
@@ -718,8 +719,8 @@ Derivation derive_paper(const Definitions& definitions) {
     const ex x1_shown = s.v1 + factored_form(plus_root - s.v1n) * s.n;
     const ex x2_shown = s.v2 + factored_form(x2n_selected - s.v2n) * s.n;
     const ex at_rest_shown = lst{s.m2 == s.m1, s.v1 == 0, s.v1n == 0};
-    const ex head_on_shown = lst{s.m2 == s.m1, s.v1 == 0, s.v1n == 0, s.v2 == s.head_on_speed * s.n,
-                                 s.v2n == s.head_on_speed};
+    const ex head_on_shown =
+        lst{s.m2 == s.m1, s.v1 == 0, s.v1n == 0, s.v2 == s.head_on_speed * s.n, s.v2n == s.head_on_speed};
     record.add({
         .id = "sanity.equal_masses_at_rest.x1",
         .paper = "p. 2, \"m1 = m2 and v1 = 0\"",
@@ -816,7 +817,7 @@ Derivation derive_paper(const Definitions& definitions) {
       const ex e = GiNaC::clifford_unit(mu, GiNaC::diag_matrix(ones));
       const ex n_ga = GiNaC::lst_to_clifford(to_lst(sp->n), e);
       const ex v_ga = GiNaC::lst_to_clifford(to_lst(sp->v1), e);
-      const ex sandwich = GiNaC::clifford_to_lst((-n_ga * v_ga * n_ga).expand(), e, true);
+      const ex sandwich = clifford_components((-n_ga * v_ga * n_ga).expand(), e, true);
       record.add({
           .id = "cushion.reflection_is_sandwich" + sp->suffix,
           .paper = "p. 2, \"= −n v1 n, which we clearly recognize as a reflection\"",

@@ -43,8 +43,8 @@ std::vector<Product> sorted_terms(const ex& sum);
 // first term in print order negative. Either way the choice depends on the sum alone, not the run.
 bool leads_negative(const ex& sum) {
   const std::vector<Product> terms = sorted_terms(sum);
-  const auto negative = std::count_if(terms.begin(), terms.end(),
-                                      [](const Product& p) { return p.coefficient.is_negative(); });
+  const auto negative =
+      std::count_if(terms.begin(), terms.end(), [](const Product& p) { return p.coefficient.is_negative(); });
   const auto positive = static_cast<std::ptrdiff_t>(terms.size()) - negative;
   if (negative != positive) return negative > positive;
   return !terms.empty() && terms.front().coefficient.is_negative();
@@ -127,11 +127,10 @@ std::string print_any(const ex& e, Notation notation);
 
 std::string print_base(const ex& base, Notation notation, bool will_take_power) {
   const std::string inner = print_any(base, notation);
-  const bool compound = GiNaC::is_a<GiNaC::add>(base) || GiNaC::is_a<GiNaC::mul>(base) ||
-                        GiNaC::is_a<GiNaC::power>(base) ||
-                        (GiNaC::is_a<numeric>(base) && GiNaC::ex_to<numeric>(base).is_negative()) ||
-                        (will_take_power && GiNaC::is_a<numeric>(base) &&
-                         !GiNaC::ex_to<numeric>(base).is_integer());
+  const bool compound =
+      GiNaC::is_a<GiNaC::add>(base) || GiNaC::is_a<GiNaC::mul>(base) || GiNaC::is_a<GiNaC::power>(base) ||
+      (GiNaC::is_a<numeric>(base) && GiNaC::ex_to<numeric>(base).is_negative()) ||
+      (will_take_power && GiNaC::is_a<numeric>(base) && !GiNaC::ex_to<numeric>(base).is_integer());
   return compound ? parenthesized(inner, notation) : inner;
 }
 

@@ -115,7 +115,8 @@ TEST_CASE("Square roots of perfect squares and absolute values", "[derive][algeb
   const GiNaC::realsymbol s("s");
   SECTION("the square root of m1²(a − b)² is m1|a − b|") {
     const ex root = square_root_of_perfect_square(GiNaC::pow(m1, 2) * (a * a - 2 * a * b + b * b));
-    CHECK(GiNaC::normal(GiNaC::pow(root, 2) - GiNaC::pow(m1, 2) * GiNaC::pow(GiNaC::abs(a - b), 2)).is_zero());
+    CHECK(
+        GiNaC::normal(GiNaC::pow(root, 2) - GiNaC::pow(m1, 2) * GiNaC::pow(GiNaC::abs(a - b), 2)).is_zero());
     CHECK((root.has(GiNaC::abs(a - b)) || root.has(GiNaC::abs(b - a))));
   }
   SECTION("a non-square keeps GiNaC's sqrt, so comparisons fail visibly") {

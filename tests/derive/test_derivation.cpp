@@ -77,21 +77,39 @@ TEST_CASE("The paper's derivation checks out", "[derive][paper]") {
     }
   }
   SECTION("the claims the issue names are all there") {
-    for (const char* id :
-         {"split.momentum.2d", "split.momentum.3d", "split.kinetic.2d", "split.kinetic.3d",
-          "split.kinetic_cross_term.3d", "assumption.tangential_velocity_unchanged",
-          "quadratic.coefficient_a", "quadratic.coefficient_b", "quadratic.coefficient_c",
-          "discriminant.paper_form", "discriminant.expanded", "discriminant.factored",
-          "discriminant.nonnegative", "roots.quadratic_formula.relative_speed_nonnegative",
-          "roots.quadratic_formula.relative_speed_negative",
-          "roots.absolute_value_dropped.relative_speed_nonnegative",
-          "roots.absolute_value_dropped.relative_speed_negative", "selection.minus_root_is_no_collision",
-          "selection.plus_root_reverses_relative_normal_velocity", "result.x2_by_symmetry",
-          "result.x1_expanded_form", "result.x1_simplified_form", "result.independent_of_normal_sign",
-          "sanity.equal_masses_at_rest.x1", "sanity.equal_masses_at_rest.x2", "sanity.head_on.x1",
-          "sanity.head_on.x2", "cushion.limit", "cushion.reflection_is_sandwich.3d",
-          "conservation.momentum.2d", "conservation.momentum.3d", "conservation.kinetic_energy.2d",
-          "conservation.kinetic_energy.3d"}) {
+    for (const char* id : {"split.momentum.2d",
+                           "split.momentum.3d",
+                           "split.kinetic.2d",
+                           "split.kinetic.3d",
+                           "split.kinetic_cross_term.3d",
+                           "assumption.tangential_velocity_unchanged",
+                           "quadratic.coefficient_a",
+                           "quadratic.coefficient_b",
+                           "quadratic.coefficient_c",
+                           "discriminant.paper_form",
+                           "discriminant.expanded",
+                           "discriminant.factored",
+                           "discriminant.nonnegative",
+                           "roots.quadratic_formula.relative_speed_nonnegative",
+                           "roots.quadratic_formula.relative_speed_negative",
+                           "roots.absolute_value_dropped.relative_speed_nonnegative",
+                           "roots.absolute_value_dropped.relative_speed_negative",
+                           "selection.minus_root_is_no_collision",
+                           "selection.plus_root_reverses_relative_normal_velocity",
+                           "result.x2_by_symmetry",
+                           "result.x1_expanded_form",
+                           "result.x1_simplified_form",
+                           "result.independent_of_normal_sign",
+                           "sanity.equal_masses_at_rest.x1",
+                           "sanity.equal_masses_at_rest.x2",
+                           "sanity.head_on.x1",
+                           "sanity.head_on.x2",
+                           "cushion.limit",
+                           "cushion.reflection_is_sandwich.3d",
+                           "conservation.momentum.2d",
+                           "conservation.momentum.3d",
+                           "conservation.kinetic_energy.2d",
+                           "conservation.kinetic_energy.3d"}) {
       INFO(id);
       CHECK(find_claim(derivation, id) != nullptr);
     }
@@ -108,9 +126,11 @@ TEST_CASE("The paper's derivation checks out", "[derive][paper]") {
   SECTION("the selected root is the paper's result, in exact rationals") {
     // m1 = 3, m2 = 5, v1·n = 7/2, v2·n = −1: x1·n = v1·n + 2 m2/(m1 + m2) ((v2 − v1)·n) = −17/8 and
     // x2·n = v2·n − 2 m1/(m1 + m2) ((v2 − v1)·n) = 19/8, by hand.
-    const GiNaC::ex values = by_name(derivation.selected.x1_normal, {{"m1", 3}, {"m2", 5}, {"v1n", GiNaC::numeric(7, 2)}, {"v2n", -1}});
+    const GiNaC::ex values = by_name(derivation.selected.x1_normal,
+                                     {{"m1", 3}, {"m2", 5}, {"v1n", GiNaC::numeric(7, 2)}, {"v2n", -1}});
     CHECK(GiNaC::normal(values - GiNaC::numeric(-17, 8)).is_zero());
-    const GiNaC::ex x2 = by_name(derivation.selected.x2_normal, {{"m1", 3}, {"m2", 5}, {"v1n", GiNaC::numeric(7, 2)}, {"v2n", -1}});
+    const GiNaC::ex x2 = by_name(derivation.selected.x2_normal,
+                                 {{"m1", 3}, {"m2", 5}, {"v1n", GiNaC::numeric(7, 2)}, {"v2n", -1}});
     CHECK(GiNaC::normal(x2 - GiNaC::numeric(19, 8)).is_zero());
   }
 }
@@ -123,11 +143,15 @@ TEST_CASE("A perturbed definition fails the claims downstream of it", "[derive][
     // These state properties that hold for any K(a, b) = α m1 a² + β m2 b², so they must stay true:
     // the split (no cross terms), the reduction to normal components, D ≥ 0 (the no-collision root
     // is always a real root), and that the derived result conserves the K it was derived from.
-    const std::set<std::string> true_of_any_such_K = {
-        "split.kinetic.2d", "split.kinetic.3d", "along_n.kinetic_energy",
-        "along_n.kinetic_energy_in_normal_components", "discriminant.nonnegative",
-        "conservation.momentum.2d", "conservation.momentum.3d", "conservation.kinetic_energy.2d",
-        "conservation.kinetic_energy.3d"};
+    const std::set<std::string> true_of_any_such_K = {"split.kinetic.2d",
+                                                      "split.kinetic.3d",
+                                                      "along_n.kinetic_energy",
+                                                      "along_n.kinetic_energy_in_normal_components",
+                                                      "discriminant.nonnegative",
+                                                      "conservation.momentum.2d",
+                                                      "conservation.momentum.3d",
+                                                      "conservation.kinetic_energy.2d",
+                                                      "conservation.kinetic_energy.3d"};
     const std::vector<std::string> downstream = downstream_of(derivation.claims, "definition.kinetic_energy");
     REQUIRE(downstream.size() >= 20);
     for (const Claim& claim : derivation.claims) {
@@ -149,9 +173,9 @@ TEST_CASE("A perturbed definition fails the claims downstream of it", "[derive][
     doubled.kinetic_coefficient_1 = 1;
     doubled.kinetic_coefficient_2 = 1;
     const Derivation derivation = derive_paper(doubled);
-    for (const char* id : {"quadratic.vector_form", "quadratic.in_normal_component", "quadratic.coefficient_a",
-                           "quadratic.coefficient_b", "quadratic.coefficient_c", "discriminant.paper_form",
-                           "discriminant.expanded", "discriminant.factored"}) {
+    for (const char* id : {"quadratic.vector_form", "quadratic.in_normal_component",
+                           "quadratic.coefficient_a", "quadratic.coefficient_b", "quadratic.coefficient_c",
+                           "discriminant.paper_form", "discriminant.expanded", "discriminant.factored"}) {
       INFO(id);
       CHECK(find_claim(derivation, id)->verdict == Verdict::failed);
     }

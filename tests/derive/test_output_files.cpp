@@ -22,7 +22,8 @@ std::string read(const fs::path& path) {
 }
 
 fs::path fresh_folder(const std::string& name) {
-  const fs::path folder = fs::temp_directory_path() / ("billiards-test-" + name + "-" + std::to_string(::getpid()));
+  const fs::path folder =
+      fs::temp_directory_path() / ("billiards-test-" + name + "-" + std::to_string(::getpid()));
   fs::remove_all(folder);
   return folder;
 }
