@@ -36,6 +36,13 @@ std::string verdict_mark(Verdict verdict) {
   return "";
 }
 
+// A Markdown table cell: a "|" inside it would end the cell.
+std::string table_cell(const std::string& text) {
+  std::string cell;
+  for (char c : text) cell += c == '|' ? std::string("\\|") : std::string(1, c);
+  return cell;
+}
+
 std::string join_ids(const std::vector<std::string>& ids) {
   std::string joined;
   for (const std::string& id : ids) joined += (joined.empty() ? "" : ", ") + ("`" + id + "`");
@@ -78,7 +85,7 @@ std::string audit_markdown(const Derivation& derivation) {
      << derivation.claims.size() << " |\n\n"
      << "| claim | statement | check | verdict |\n|---|---|---|---|\n";
   for (const Claim& claim : derivation.claims) {
-    md << "| [`" << claim.id << "`](#" << claim.id << ") | " << claim.statement << " | "
+    md << "| [`" << claim.id << "`](#" << claim.id << ") | " << table_cell(claim.statement) << " | "
        << to_string(claim.comparison) << " | " << verdict_mark(claim.verdict) << " |\n";
   }
   md << "\n## Premises\n\nThe derivation starts from these and nothing else.\n\n";

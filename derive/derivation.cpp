@@ -187,7 +187,7 @@ Derivation derive_paper(const Definitions& definitions) {
     const Vec x1_perp = perpendicular_part(sp->x1, sp->n), x2_perp = perpendicular_part(sp->x2, sp->n);
     record.add({
         .id = "split.momentum" + sp->suffix,
-        .paper = "p. 1, the split of P (\"it is not hard to show that\")",
+        .paper = "the split of P (\"it is not hard to show that\")",
         .statement =
             "P(x1, x2) = P(x1∥, x2∥) + P(x1⊥, x2⊥) in " + std::to_string(sp->dimension) + "-D components.",
         .method = "identity after expand(), componentwise",
@@ -201,7 +201,7 @@ Derivation derive_paper(const Definitions& definitions) {
     });
     record.add({
         .id = "split.kinetic_cross_term" + sp->suffix,
-        .paper = "p. 1, footnote 1 (\"P and K are bilinear functions\")",
+        .paper = "footnote 1 (\"P and K are bilinear functions\")",
         .statement = "a∥·b⊥ = 0 for any a, b when n·n = 1: the cross terms of K vanish.",
         .method = std::string("identity after expand()") + unit_normal_method,
         .comparison = Comparison::identity,
@@ -217,7 +217,7 @@ Derivation derive_paper(const Definitions& definitions) {
     });
     record.add({
         .id = "split.kinetic" + sp->suffix,
-        .paper = "p. 1, the split of K (\"it is not hard to show that\")",
+        .paper = "the split of K (\"it is not hard to show that\")",
         .statement = "K(x1, x2) = K(x1∥, x2∥) + K(x1⊥, x2⊥) in " + std::to_string(sp->dimension) +
                      "-D components, given n·n = 1.",
         .method = std::string("identity after expand()") + unit_normal_method,
@@ -241,7 +241,7 @@ Derivation derive_paper(const Definitions& definitions) {
                  "conservation laws.");
   record.add({
       .id = "assumption.tangential_velocity_unchanged",
-      .paper = "p. 1, \"after making a physics-based argument\"",
+      .paper = "\"after making a physics-based argument\"",
       .statement = "x1⊥ = v1⊥ and x2⊥ = v2⊥: the contact exerts no force across n.",
       .method = "assumption",
       .comparison = Comparison::assumption,
@@ -266,7 +266,7 @@ Derivation derive_paper(const Definitions& definitions) {
     const Vec x1_par = parallel_part(x1, space.n), x2_par = parallel_part(x2, space.n);
     record.add({
         .id = "along_n.momentum",
-        .paper = "p. 1, \"our preservation equations become\" (momentum)",
+        .paper = "\"our preservation equations become\" (momentum)",
         .statement = "P(v1, v2) − P(x1, x2) = P(v1∥, v2∥) − P(x1∥, x2∥) when x_i⊥ = v_i⊥ (3-D).",
         .method = std::string("identity after expand(), componentwise") + unit_normal_method,
         .comparison = Comparison::identity,
@@ -280,7 +280,7 @@ Derivation derive_paper(const Definitions& definitions) {
     });
     record.add({
         .id = "along_n.kinetic_energy",
-        .paper = "p. 1, \"our preservation equations become\" (kinetic energy)",
+        .paper = "\"our preservation equations become\" (kinetic energy)",
         .statement = "K(v1, v2) − K(x1, x2) = K(v1∥, v2∥) − K(x1∥, x2∥) when x_i⊥ = v_i⊥ (3-D).",
         .method = std::string("identity after expand()") + unit_normal_method,
         .comparison = Comparison::identity,
@@ -294,7 +294,7 @@ Derivation derive_paper(const Definitions& definitions) {
     });
     record.add({
         .id = "along_n.momentum_is_along_n",
-        .paper = "p. 1, the notation P·n",
+        .paper = "the notation P·n",
         .statement = "P∥ = P(v1∥, v2∥) = (P·n) n with P·n = m1 (v1·n) + m2 (v2·n): momentum along n "
                      "is one scalar equation.",
         .method = "identity after expand(), componentwise",
@@ -308,7 +308,7 @@ Derivation derive_paper(const Definitions& definitions) {
     });
     record.add({
         .id = "along_n.kinetic_energy_in_normal_components",
-        .paper = "p. 1, K∥ = K(v1∥, v2∥)",
+        .paper = "K∥ = K(v1∥, v2∥)",
         .statement = "K∥ = K(v1∥, v2∥) = ½ m1 (v1·n)² + ½ m2 (v2·n)² given n·n = 1.",
         .method = std::string("identity after expand()") + unit_normal_method,
         .comparison = Comparison::identity,
@@ -332,7 +332,7 @@ Derivation derive_paper(const Definitions& definitions) {
       GiNaC::lsolve(scalar_momentum(d, s.x1n, s.x2n) == scalar_momentum(d, s.v1n, s.v2n), s.x2n);
   record.add({
       .id = "quadratic.x2_from_momentum",
-      .paper = "p. 1, \"Solving for x2∥ in the momentum preservation equation\"",
+      .paper = "\"Solving for x2∥ in the momentum preservation equation\"",
       .statement = "x2·n = (P·n − m1 (x1·n)) / m2.",
       .method = "lsolve() of P(x1·n, x2·n) = P(v1·n, v2·n) for x2·n; identity after normal()",
       .comparison = Comparison::identity,
@@ -356,7 +356,7 @@ Derivation derive_paper(const Definitions& definitions) {
                                  kinetic(d, v1_par, v2_par);
     record.add({
         .id = "quadratic.vector_form",
-        .paper = "p. 1, the first quadratic (in x1∥)",
+        .paper = "the first quadratic (in x1∥)",
         .statement = "K(x1∥, x2∥) − K∥ = ½ m1 (1 + m1/m2)(x1∥)² − (m1/m2) P∥·x1∥ + (P∥)²/(2 m2) − K∥ "
                      "(3-D components).",
         .method = std::string("substitution of x2∥ into K; identity after normal()") + unit_normal_method,
@@ -378,7 +378,7 @@ Derivation derive_paper(const Definitions& definitions) {
                                  s.m1 / s.m2 * s.Pn * s.x1n + GiNaC::pow(s.Pn, 2) / (2 * s.m2) - s.K_parallel;
     record.add({
         .id = "quadratic.in_normal_component",
-        .paper = "p. 1, the second quadratic (\"a quadratic equation in the variable x1·n\")",
+        .paper = "the second quadratic (\"a quadratic equation in the variable x1·n\")",
         .statement = "The quadratic is one in x1·n: ½ m1 (1 + m1/m2)(x1·n)² − (m1/m2)(P·n)(x1·n) + "
                      "(P·n)²/(2 m2) − K∥ (checked in 3-D components).",
         .method = std::string("the scalar quadratic, written in components, against the paper's; "
@@ -407,7 +407,7 @@ Derivation derive_paper(const Definitions& definitions) {
     for (const Coefficient& c : coefficients) {
       record.add({
           .id = c.id,
-          .paper = "p. 1, the quadratic in x1·n",
+          .paper = "the quadratic in x1·n",
           .statement = std::string("The coefficient ") + c.name + " equals the paper's.",
           .method = "coeff() of the derived quadratic; identity after normal()",
           .comparison = Comparison::identity,
@@ -434,7 +434,7 @@ Derivation derive_paper(const Definitions& definitions) {
                                                         "quadratic.coefficient_c"};
     record.add({
         .id = "discriminant.paper_form",
-        .paper = "p. 1, \"if we examine the discriminant D\"",
+        .paper = "\"if we examine the discriminant D\"",
         .statement = "B² − 4AC = 2 m1 (1 + m1/m2) K∥ − (m1/m2)(P·n)².",
         .method = "B² − 4AC from the coefficients; identity after normal()",
         .comparison = Comparison::identity,
@@ -446,7 +446,7 @@ Derivation derive_paper(const Definitions& definitions) {
     });
     record.add({
         .id = "discriminant.expanded",
-        .paper = "p. 1, \"If we continue to expand this\"",
+        .paper = "\"If we continue to expand this\"",
         .statement = "D = m1² ((v1·n)² + (v2·n)² − 2 (v1·n)(v2·n)).",
         .method = "identity after normal()",
         .comparison = Comparison::identity,
@@ -458,7 +458,7 @@ Derivation derive_paper(const Definitions& definitions) {
     });
     record.add({
         .id = "discriminant.factored",
-        .paper = "p. 2, \"it is clear that this factors as\"",
+        .paper = "\"it is clear that this factors as\"",
         .statement = "D = m1² ((v2 − v1)·n)².",
         .method = "identity after normal(); factor() of D shown as derived",
         .comparison = Comparison::identity,
@@ -470,7 +470,7 @@ Derivation derive_paper(const Definitions& definitions) {
     });
     record.add({
         .id = "discriminant.nonnegative",
-        .paper = "p. 2, \"Immediately we see that D ≥ 0\"",
+        .paper = "\"Immediately we see that D ≥ 0\"",
         .statement = "D ≥ 0: it factors as m1² times a square, so the quadratic always has a real root.",
         .method = "sign: factor() of D is a product of even powers and positive factors",
         .comparison = Comparison::nonnegative,
@@ -515,7 +515,7 @@ Derivation derive_paper(const Definitions& definitions) {
   for (const SignCase& c : sign_cases) {
     record.add({
         .id = std::string("roots.quadratic_formula.") + c.suffix,
-        .paper = "p. 2, \"Applying our quadratic formula\"",
+        .paper = "\"Applying our quadratic formula\"",
         .statement = std::string("For ") + c.words +
                      ", the roots (−B ± √D)/(2A) are (P·n ± m2 |(v2 − v1)·n|)/(m1 + m2), sign for sign.",
         .method = "quadratic formula with √D from factor(); v2·n = v1·n + s, |…| resolved for the "
@@ -529,7 +529,7 @@ Derivation derive_paper(const Definitions& definitions) {
     });
     record.add({
         .id = std::string("roots.absolute_value_dropped.") + c.suffix,
-        .paper = "p. 2, \"we could drop the absolute value because of the plus or minus\"",
+        .paper = "\"we could drop the absolute value because of the plus or minus\"",
         .statement = std::string("For ") + c.words +
                      ", the set of roots equals {(P·n ± m2 (v2 − v1)·n)/(m1 + m2)}: dropping |…| "
                      "only swaps the two roots.",
@@ -559,7 +559,7 @@ Derivation derive_paper(const Definitions& definitions) {
     };
     record.add({
         .id = "general.x1_both_roots",
-        .paper = "p. 2, \"Putting it all together now\"",
+        .paper = "\"Putting it all together now\"",
         .statement = "x1 = v1 + ((P·n ± m2 (v2 − v1)·n)/(m1 + m2) − v1·n) n for either root.",
         .method = std::string("x1 = v1⊥ + (x1·n) n with each root; identity after normal(), "
                               "componentwise") +
@@ -586,7 +586,7 @@ Derivation derive_paper(const Definitions& definitions) {
   const ex x2_of = [&](const ex& x1n) { return GiNaC::normal(x2n_solved.subs(s.x1n == x1n)); }(minus_root);
   record.add({
       .id = "selection.minus_root_independent_of_v2",
-      .paper = "p. 2, \"x1 no longer becomes dependent upon v2\"",
+      .paper = "\"x1 no longer becomes dependent upon v2\"",
       .statement = "The \"−\" root does not depend on v2·n (the paper's argument).",
       .method = "diff() of the \"−\" root by v2·n; identity after normal()",
       .comparison = Comparison::identity,
@@ -597,7 +597,7 @@ Derivation derive_paper(const Definitions& definitions) {
   });
   record.add({
       .id = "selection.minus_root_is_no_collision",
-      .paper = "p. 2, the negative case",
+      .paper = "the negative case",
       .statement = "The \"−\" root gives x1·n = v1·n and x2·n = v2·n: x1 = v1 and x2 = v2, no momentum "
                    "exchanged — the state before the collision, which trivially conserves everything.",
       .method = "the \"−\" root and x2·n from momentum; identity after normal()",
@@ -613,7 +613,7 @@ Derivation derive_paper(const Definitions& definitions) {
   const ex x2n_selected = GiNaC::normal(x2n_solved.subs(s.x1n == plus_root));
   record.add({
       .id = "selection.plus_root_reverses_relative_normal_velocity",
-      .paper = "p. 2, \"the case we care about must be the positive case\"",
+      .paper = "\"the case we care about must be the positive case\"",
       .statement = "The \"+\" root reverses the relative normal velocity: (x2 − x1)·n = −(v2 − v1)·n.",
       .method = "the \"+\" root and x2·n from momentum; identity after normal()",
       .comparison = Comparison::identity,
@@ -641,7 +641,7 @@ Derivation derive_paper(const Definitions& definitions) {
         2 * s.m2 / (s.m1 + s.m2) * s.v2n + ((s.m1 - s.m2) / (s.m1 + s.m2) - 1) * s.v1n;
     record.add({
         .id = "result.x1_expanded_form",
-        .paper = "p. 2, \"In that case, we get\"",
+        .paper = "\"In that case, we get\"",
         .statement = "x1 = v1 + (2m2/(m1 + m2) (v2·n) + ((m1 − m2)/(m1 + m2) − 1)(v1·n)) n.",
         .method = "x1 = v1⊥ + (x1·n) n with the \"+\" root; identity after normal(), componentwise",
         .comparison = Comparison::identity,
@@ -655,7 +655,7 @@ Derivation derive_paper(const Definitions& definitions) {
     });
     record.add({
         .id = "result.x1_simplified_form",
-        .paper = "p. 2, \"The equation simplifies further as\"",
+        .paper = "\"The equation simplifies further as\"",
         .statement = "x1 = v1 + (2 m2/(m1 + m2)) ((v2 − v1)·n) n.",
         .method = "identity after normal(), componentwise",
         .comparison = Comparison::identity,
@@ -678,7 +678,7 @@ Derivation derive_paper(const Definitions& definitions) {
   };
   record.add({
       .id = "result.x2_by_symmetry",
-      .paper = "p. 1, \"By symmetry of the preservation equations\"",
+      .paper = "\"By symmetry of the preservation equations\"",
       .statement = "x2 from momentum conservation equals the paper's x1 with subscripts 1 and 2 "
                    "swapped: x2 = v2 + (2 m1/(m1 + m2)) ((v1 − v2)·n) n.",
       .method = "x2 = v2⊥ + (x2·n) n with x2·n from momentum; the paper's x1 with 1 ↔ 2 by "
@@ -696,7 +696,7 @@ Derivation derive_paper(const Definitions& definitions) {
     for (const ex& component : space.n) flip[component] = -component;
     record.add({
         .id = "result.independent_of_normal_sign",
-        .paper = "p. 2, \"it didn't matter which direction n pointed\"",
+        .paper = "\"it didn't matter which direction n pointed\"",
         .statement = "Replacing n by −n leaves x1 and x2 unchanged.",
         .method = "subs() n → −n in the derived x1, x2; identity after normal(), componentwise",
         .comparison = Comparison::identity,
@@ -723,7 +723,7 @@ Derivation derive_paper(const Definitions& definitions) {
         lst{s.m2 == s.m1, s.v1 == 0, s.v1n == 0, s.v2 == s.head_on_speed * s.n, s.v2n == s.head_on_speed};
     record.add({
         .id = "sanity.equal_masses_at_rest.x1",
-        .paper = "p. 2, \"m1 = m2 and v1 = 0\"",
+        .paper = "\"m1 = m2 and v1 = 0\"",
         .statement = "m1 = m2, v1 = 0: x1 = (v2·n) n = v2∥.",
         .method = std::string("subs() into the derived x1; identity after normal()") + unit_normal_method,
         .comparison = Comparison::identity,
@@ -736,7 +736,7 @@ Derivation derive_paper(const Definitions& definitions) {
     });
     record.add({
         .id = "sanity.equal_masses_at_rest.x2",
-        .paper = "p. 2, \"we find that x2 = v2 − v2∥\"",
+        .paper = "\"we find that x2 = v2 − v2∥\"",
         .statement = "m1 = m2, v1 = 0: x2 = v2 − v2∥.",
         .method = std::string("subs() into the derived x2; identity after normal()") + unit_normal_method,
         .comparison = Comparison::identity,
@@ -752,7 +752,7 @@ Derivation derive_paper(const Definitions& definitions) {
     const Vec v2_head_on = scale(s.head_on_speed, space.n);
     record.add({
         .id = "sanity.head_on.x1",
-        .paper = "p. 2, \"If the first ball was hit head-on\"",
+        .paper = "\"If the first ball was hit head-on\"",
         .statement = "m1 = m2, v1 = 0, v2 = c n: x1 = v2, the first ball takes all the velocity.",
         .method = std::string("subs() into the derived x1; identity after normal()") + unit_normal_method,
         .comparison = Comparison::identity,
@@ -765,7 +765,7 @@ Derivation derive_paper(const Definitions& definitions) {
     });
     record.add({
         .id = "sanity.head_on.x2",
-        .paper = "p. 2, \"we get x2 = 0\"",
+        .paper = "\"we get x2 = 0\"",
         .statement = "m1 = m2, v1 = 0, v2 = c n: x2 = 0, the second ball stops.",
         .method = std::string("subs() into the derived x2; identity after normal()") + unit_normal_method,
         .comparison = Comparison::identity,
@@ -794,7 +794,7 @@ Derivation derive_paper(const Definitions& definitions) {
     const Vec reflection = subtract(space.v1, scale(2 * dot(space.v1, space.n), space.n));
     record.add({
         .id = "cushion.limit",
-        .paper = "p. 2, \"we take the limit as m2 goes to ∞, and let v2 = 0\"",
+        .paper = "\"we take the limit as m2 goes to ∞, and let v2 = 0\"",
         .statement = "With v2 = 0, x1 → v1 − 2 (v1·n) n as m2 → ∞.",
         .method = "series() in ε = 1/m2 about 0 to order ε⁰ of each component; identity after normal()",
         .comparison = Comparison::identity,
@@ -820,7 +820,7 @@ Derivation derive_paper(const Definitions& definitions) {
       const ex sandwich = clifford_components((-n_ga * v_ga * n_ga).expand(), e, true);
       record.add({
           .id = "cushion.reflection_is_sandwich" + sp->suffix,
-          .paper = "p. 2, \"= −n v1 n, which we clearly recognize as a reflection\"",
+          .paper = "\"= −n v1 n, which we clearly recognize as a reflection\"",
           .statement = "v1 − 2 (v1·n) n = −n v1 n in geometric algebra (" + std::to_string(sp->dimension) +
                        "-D), given n² = 1.",
           .method = std::string("Clifford product with lst_to_clifford() over a Euclidean metric, read "
@@ -846,7 +846,7 @@ Derivation derive_paper(const Definitions& definitions) {
     const Vec x1 = sp->after_collision(sp->v1, plus_root), x2 = sp->after_collision(sp->v2, x2n_selected);
     record.add({
         .id = "conservation.momentum" + sp->suffix,
-        .paper = "p. 1, P(v1, v2) = P(x1, x2)",
+        .paper = "P(v1, v2) = P(x1, x2)",
         .statement = "P(x1, x2) = P(v1, v2) for the final x1, x2 (" + std::to_string(sp->dimension) + "-D).",
         .method = "identity after normal(), componentwise",
         .comparison = Comparison::identity,
@@ -859,7 +859,7 @@ Derivation derive_paper(const Definitions& definitions) {
     });
     record.add({
         .id = "conservation.kinetic_energy" + sp->suffix,
-        .paper = "p. 1, K(v1, v2) = K(x1, x2)",
+        .paper = "K(v1, v2) = K(x1, x2)",
         .statement = "K(x1, x2) = K(v1, v2) for the final x1, x2 (" + std::to_string(sp->dimension) +
                      "-D), given n·n = 1.",
         .method = std::string("identity after normal()") + unit_normal_method,
