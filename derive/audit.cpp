@@ -133,6 +133,23 @@ std::string audit_markdown(const Derivation& derivation) {
   return md.str();
 }
 
+int report(const Derivation& derivation, const std::vector<std::string>& written, std::ostream& out,
+           std::ostream& err) {
+  const Summary summary = summarize(derivation.claims);
+  out << "Derivation audit of " << paper_citation << "\n"
+      << "  claims: " << derivation.claims.size() << "  verified: " << summary.verified
+      << "  failed: " << summary.failed << "  assumptions: " << summary.assumption << "\n"
+      << "wrote:\n";
+  for (const std::string& path : written) out << "  " << path << "\n";
+  for (const Claim& claim : derivation.claims) {
+    if (claim.verdict == Verdict::failed) {
+      err << "FAILED " << claim.id << ": residual " << print(factored_form(claim.residual), Notation::text)
+          << "\n";
+    }
+  }
+  return summary.failed;
+}
+
 std::string audit_json(const Derivation& derivation) {
   const Summary summary = summarize(derivation.claims);
   nlohmann::ordered_json claims = nlohmann::ordered_json::array();

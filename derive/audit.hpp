@@ -4,7 +4,9 @@
 
 #include "derivation.hpp"
 
+#include <ostream>
 #include <string>
+#include <vector>
 
 namespace billiards::derive {
 
@@ -19,6 +21,11 @@ std::string ginac_version();
 
 std::string audit_markdown(const Derivation& derivation);
 std::string audit_json(const Derivation& derivation);
+
+/// What billiards-derive prints: the summary and the files written to `out`, and to `err` one line
+/// per failed claim naming it and its residual. Returns the number of failed claims.
+int report(const Derivation& derivation, const std::vector<std::string>& written, std::ostream& out,
+           std::ostream& err);
 
 /// The latex of what the audit shows for each side of a claim: the display form when one is set,
 /// otherwise the expression itself.

@@ -2,7 +2,6 @@
 #include "audit.hpp"
 #include "derivation.hpp"
 #include "output_files.hpp"
-#include "printer.hpp"
 
 #include <CLI/CLI.hpp>
 
@@ -54,15 +53,6 @@ int main(int argc, char** argv) {
     return exit_io;
   }
 
-  const Summary summary = summarize(derivation.claims);
-  std::cout << "Derivation audit of " << paper_citation << "\n"
-            << "  claims: " << derivation.claims.size() << "  verified: " << summary.verified
-            << "  failed: " << summary.failed << "  assumptions: " << summary.assumption << "\n"
-            << "wrote:\n  " << markdown.string() << "\n  " << json.string() << "\n";
-  for (const Claim& claim : derivation.claims) {
-    if (claim.verdict == Verdict::failed) {
-      std::cerr << "FAILED " << claim.id << ": residual " << print(claim.residual, Notation::text) << "\n";
-    }
-  }
-  return summary.failed == 0 ? 0 : exit_claims_failed;
+  const int failed = report(derivation, {markdown.string(), json.string()}, std::cout, std::cerr);
+  return failed == 0 ? 0 : exit_claims_failed;
 }

@@ -9,6 +9,7 @@
 #include <map>
 #include <regex>
 #include <set>
+#include <sstream>
 #include <string>
 
 using namespace billiards::derive;
@@ -180,6 +181,22 @@ TEST_CASE("A perturbed definition fails the claims downstream of it", "[derive][
       CHECK(find_claim(derivation, id)->verdict == Verdict::failed);
     }
     CHECK(find_claim(derivation, "result.x1_simplified_form")->verdict == Verdict::verified);
+  }
+  SECTION("the report names every failed claim with its residual, one line each") {
+    Definitions wrong;
+    wrong.kinetic_coefficient_2 = 1;
+    const Derivation derivation = derive_paper(wrong);
+    std::ostringstream out, err;
+    const int failed = report(derivation, {"dir/AUDIT.md"}, out, err);
+    CHECK(failed == summarize(derivation.claims).failed);
+    CHECK(out.str().find("failed: " + std::to_string(failed)) != std::string::npos);
+    CHECK(out.str().find("dir/AUDIT.md") != std::string::npos);
+    const std::string errors = err.str();
+    CHECK(std::count(errors.begin(), errors.end(), '\n') == failed);
+    CHECK(errors.find("FAILED discriminant.factored: residual ") != std::string::npos);
+    std::ostringstream clean_out, clean_err;
+    CHECK(report(paper_derivation(), {}, clean_out, clean_err) == 0);
+    CHECK(clean_err.str().empty());
   }
   SECTION("P with m2 doubled: everything from momentum conservation on fails") {
     Definitions wrong;
