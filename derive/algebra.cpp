@@ -69,12 +69,6 @@ ex dot(const Vec& a, const Vec& b) {
   return sum;
 }
 
-Vec substitute(const Vec& a, const ex& s) {
-  Vec result;
-  for (const ex& component : a) result.push_back(component.subs(s));
-  return result;
-}
-
 GiNaC::lst to_lst(const Vec& a) {
   GiNaC::lst components;
   for (const ex& component : a) components.append(component);

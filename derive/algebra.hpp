@@ -24,8 +24,6 @@ Vec add(const Vec& a, const Vec& b);
 Vec subtract(const Vec& a, const Vec& b);
 Vec scale(const GiNaC::ex& factor, const Vec& a);
 GiNaC::ex dot(const Vec& a, const Vec& b);
-/// Substitutes `s` (a relation or list of relations) into every component.
-Vec substitute(const Vec& a, const GiNaC::ex& s);
 /// The components as a GiNaC list, the form a claim compares.
 GiNaC::lst to_lst(const Vec& a);
 

@@ -36,6 +36,10 @@ struct Symbols {
   GiNaC::symbol x1{"x1", "\\mathbf{x}_1"};
   GiNaC::symbol x2{"x2", "\\mathbf{x}_2"};
   GiNaC::symbol n{"n", "\\mathbf{n}"};
+  GiNaC::symbol x1_perp{"x1perp", "x_1^{\\perp}"};
+  GiNaC::symbol x2_perp{"x2perp", "x_2^{\\perp}"};
+  GiNaC::symbol v1_perp{"v1perp", "v_1^{\\perp}"};
+  GiNaC::symbol v2_perp{"v2perp", "v_2^{\\perp}"};
   GiNaC::symbol x1_parallel_squared{"x1par2", "(x_1^{\\parallel})^2"};
   GiNaC::symbol P_parallel_dot_x1_parallel{"Ppar_x1par", "P^{\\parallel} \\cdot x_1^{\\parallel}"};
   GiNaC::symbol P_parallel_squared{"Ppar2", "(P^{\\parallel})^2"};
@@ -245,10 +249,10 @@ Derivation derive_paper(const Definitions& definitions) {
       .statement = "x1⊥ = v1⊥ and x2⊥ = v2⊥: the contact exerts no force across n.",
       .method = "assumption",
       .comparison = Comparison::assumption,
-      .paper_expression = lst{s.x1 - s.v1, s.x2 - s.v2},
-      .derived_expression = lst{s.x1 - s.v1, s.x2 - s.v2},
-      .paper_display = lst{s.x1 - s.v1, s.x2 - s.v2},
-      .derived_display = lst{s.x1 - s.v1, s.x2 - s.v2},
+      .paper_expression = lst{s.x1_perp == s.v1_perp, s.x2_perp == s.v2_perp},
+      .derived_expression = lst{s.x1_perp == s.v1_perp, s.x2_perp == s.v2_perp},
+      .paper_display = lst{s.x1_perp == s.v1_perp, s.x2_perp == s.v2_perp},
+      .derived_display = lst{s.x1_perp == s.v1_perp, s.x2_perp == s.v2_perp},
       .note = "Physical reason: smooth (frictionless), spinless balls in instantaneous contact push "
               "on each other only along the contact normal, so no impulse acts across n. Momentum "
               "and energy conservation alone do not force it: they are four scalar equations in 3-D "
