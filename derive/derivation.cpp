@@ -24,7 +24,7 @@ struct Symbols {
   GiNaC::realsymbol v2n{"v2n", "(v_2 \\cdot n)"};
   GiNaC::realsymbol x1n{"x1n", "(x_1 \\cdot n)"};
   GiNaC::realsymbol x2n{"x2n", "(x_2 \\cdot n)"};
-  GiNaC::realsymbol relative_normal_speed{"s", "((v_2 - v_1) \\cdot n)"};
+  GiNaC::realsymbol relative_normal_speed{"relative_normal_speed", "((v_2 - v_1) \\cdot n)"};
   GiNaC::realsymbol head_on_speed{"c", "c"};
   GiNaC::possymbol inverse_m2{"epsilon", "\\varepsilon"};
   // The paper's shorthand, P·n and K∥, as printed; replaced by their definitions before comparing.
@@ -841,6 +841,113 @@ Derivation derive_paper(const Definitions& definitions) {
           .depends_on = {"definition.split"},
       });
     }
+  }
+
+  // ---- The kernels the emitter prints --------------------------------------------------------
+  record.section("kernels", "What the code emitter prints",
+                 "The emitted kernels are scalar functions of the masses and the normal components "
+                 "v1·n, v2·n, so they serve vectors of any dimension. Their expressions are read off "
+                 "the selected root, never typed again; these claims vouch for each piece.");
+  {
+    const ex speed = s.relative_normal_speed;
+    // Each ball's change of normal velocity, with v2·n written as v1·n + (v2 − v1)·n.
+    const ex first_change = GiNaC::normal((plus_root - s.v1n).subs(s.v2n == s.v1n + speed));
+    const ex second_change = GiNaC::normal((x2n_selected - s.v2n).subs(s.v2n == s.v1n + speed));
+    record.add({
+        .id = "kernel.velocity_change_depends_on_relative_normal_speed",
+        .statement = "x1·n − v1·n and x2·n − v2·n depend on the velocities only through (v2 − v1)·n.",
+        .method = "v2·n = v1·n + (v2 − v1)·n substituted; diff() by v1·n is zero; identity after normal()",
+        .comparison = Comparison::identity,
+        .paper_expression = lst{0, 0},
+        .derived_expression = lst{GiNaC::diff(first_change, s.v1n), GiNaC::diff(second_change, s.v1n)},
+        .paper_display = lst{0, 0},
+        .derived_display =
+            factored_form(lst{GiNaC::diff(first_change, s.v1n), GiNaC::diff(second_change, s.v1n)}),
+        .note = "So the kernel computes the relative normal speed once and scales it.",
+        .depends_on = {"result.x1_simplified_form", "result.x2_by_symmetry"},
+    });
+    const ex first_coefficient = GiNaC::normal(first_change / speed);
+    const ex second_coefficient = GiNaC::normal(second_change / speed);
+    const ex paper_first = 2 * s.m2 / (s.m1 + s.m2), paper_second = -2 * s.m1 / (s.m1 + s.m2);
+    record.add({
+        .id = "kernel.impulse_coefficient_first",
+        .paper = "\"This form makes it easier to see the impulse magnitude\"",
+        .statement = "x1·n − v1·n = (2 m2/(m1 + m2)) (v2 − v1)·n.",
+        .method = "(x1·n − v1·n)/((v2 − v1)·n) with the selected root; identity after normal()",
+        .comparison = Comparison::identity,
+        .paper_expression = paper_first,
+        .derived_expression = first_coefficient,
+        .paper_display = paper_first,
+        .derived_display = factored_form(first_coefficient),
+        .depends_on = {"kernel.velocity_change_depends_on_relative_normal_speed"},
+    });
+    record.add({
+        .id = "kernel.impulse_coefficient_second",
+        .paper = "\"By symmetry of the preservation equations\"",
+        .statement = "x2·n − v2·n = −(2 m1/(m1 + m2)) (v2 − v1)·n.",
+        .method = "(x2·n − v2·n)/((v2 − v1)·n) with x2·n from momentum; identity after normal()",
+        .comparison = Comparison::identity,
+        .paper_expression = paper_second,
+        .derived_expression = second_coefficient,
+        .paper_display = paper_second,
+        .derived_display = factored_form(second_coefficient),
+        .depends_on = {"kernel.velocity_change_depends_on_relative_normal_speed"},
+    });
+    // The kernel: the relative normal speed once, each coefficient as a mass-only quantity (so equal
+    // masses give exactly 1), then one product per ball. A negative coefficient is emitted as its
+    // magnitude with the sign on the product, so swapping the balls swaps the results bit for bit.
+    const GiNaC::symbol speed_name("relative_normal_speed"), first_name("first_impulse_coefficient"),
+        second_name("second_impulse_coefficient");
+    const auto signed_output = [](const ex& coefficient, const GiNaC::symbol& name, const GiNaC::symbol& by) {
+      const bool negative = prints_negative(coefficient);
+      return std::make_pair(negative ? ex(-coefficient) : coefficient,
+                            negative ? ex(-name * by) : ex(name * by));
+    };
+    const auto [first_magnitude, first_output] = signed_output(first_coefficient, first_name, speed_name);
+    const auto [second_magnitude, second_output] = signed_output(second_coefficient, second_name, speed_name);
+    result.kernels.push_back({
+        .name = "elastic_normal_velocity_change",
+        .brief = "The paper's perfectly elastic collision in normal components: the changes x1·n − v1·n "
+                 "and x2·n − v2·n of the two balls' velocities along the unit contact normal n, from "
+                 "the masses and v1·n, v2·n.",
+        .parameters = {s.m1, s.m2, s.v1n, s.v2n},
+        .steps = {{speed_name, s.v2n - s.v1n},
+                  {first_name, first_magnitude},
+                  {second_name, second_magnitude}},
+        .outputs = {first_output, second_output},
+        .claims = {"kernel.velocity_change_depends_on_relative_normal_speed",
+                   "kernel.impulse_coefficient_first", "kernel.impulse_coefficient_second",
+                   "result.x1_simplified_form", "result.x2_by_symmetry"},
+        .names = {{"total_mass", s.m1 + s.m2}},
+    });
+
+    // The cushion: the limit m2 → ∞ of the first ball's change with v2 = 0.
+    const ex cushion_change = GiNaC::series_to_poly(
+        GiNaC::normal((plus_root - s.v1n).subs(lst{s.m2 == 1 / s.inverse_m2, s.v2n == 0}))
+            .series(s.inverse_m2 == 0, 1));
+    record.add({
+        .id = "kernel.cushion_velocity_change",
+        .paper = "\"we take the limit as m2 goes to ∞, and let v2 = 0\"",
+        .statement = "At a cushion x1·n − v1·n = −2 (v1·n).",
+        .method = "series() in ε = 1/m2 about 0 of x1·n − v1·n with v2·n = 0; identity after normal()",
+        .comparison = Comparison::identity,
+        .paper_expression = -2 * s.v1n,
+        .derived_expression = cushion_change,
+        .paper_display = -2 * s.v1n,
+        .derived_display = factored_form(cushion_change),
+        .depends_on = {"cushion.limit"},
+    });
+    const GiNaC::symbol vn("vn");
+    result.kernels.push_back({
+        .name = "cushion_normal_velocity_change",
+        .brief = "A ball meeting an immovable cushion (the paper's limit m2 → ∞ with v2 = 0): the change "
+                 "x·n − v·n of its velocity along the unit contact normal n, from v·n.",
+        .parameters = {vn},
+        .steps = {},
+        .outputs = {cushion_change.subs(s.v1n == vn)},
+        .claims = {"kernel.cushion_velocity_change", "cushion.limit"},
+        .names = {},
+    });
   }
 
   // ---- End to end ----------------------------------------------------------------------------

@@ -8,6 +8,7 @@
 #include <ginac/ginac.h>
 
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace billiards::derive {
@@ -41,11 +42,31 @@ struct SelectedResult {
   GiNaC::ex x2_normal;  ///< x2·n, from momentum conservation
 };
 
+/// A named quantity of an emitted kernel, `const Scalar name = expression;`.
+struct KernelStep {
+  GiNaC::symbol name;    ///< its C++ name, as a symbol later steps and outputs use
+  GiNaC::ex expression;  ///< derived, in the kernel's parameters and earlier steps
+};
+
+/// A scalar kernel for the emitter: derived expressions in its parameters (masses and normal
+/// components), and the audit claims that vouch for them.
+struct Kernel {
+  std::string name;                       ///< the C++ function name
+  std::string brief;                      ///< one sentence for its comment
+  std::vector<GiNaC::symbol> parameters;  ///< in signature order; their names are the C++ names
+  std::vector<KernelStep> steps;
+  std::vector<GiNaC::ex> outputs;  ///< one: returns Scalar; two: NormalVelocityChange {first, second}
+  std::vector<std::string> claims;
+  /// Names for common subexpressions the emitter hoists, e.g. "total_mass" for m1 + m2.
+  std::vector<std::pair<std::string, GiNaC::ex>> names;
+};
+
 struct Derivation {
   std::vector<Premise> premises;
   std::vector<Section> sections;
   std::vector<Claim> claims;  ///< in the paper's order, every verdict decided
   SelectedResult selected;
+  std::vector<Kernel> kernels;  ///< what the emitter prints, each vouched for by claims above
 };
 
 /// Runs every step with the given definitions (the paper's by default) and checks every claim.

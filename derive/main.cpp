@@ -1,6 +1,7 @@
 // billiards-derive: parses the command line and writes the outputs; the work is in derivation.cpp.
 #include "audit.hpp"
 #include "derivation.hpp"
+#include "emitter.hpp"
 #include "output_files.hpp"
 
 #include <CLI/CLI.hpp>
@@ -26,7 +27,8 @@ int main(int argc, char** argv) {
                    " with GiNaC, checks every claim exactly and writes the derivation audit.",
                "billiards-derive"};
   std::string out;
-  app.add_option("--out", out, "Folder to write AUDIT.md and audit.json into (created if missing)")
+  app.add_option("--out", out,
+                 "Folder to write AUDIT.md, audit.json and billiards/kernels.hpp into (created if missing)")
       ->required()
       ->type_name("DIR");
   app.footer(
@@ -44,15 +46,19 @@ int main(int argc, char** argv) {
   const Derivation derivation = derive_paper();
   const fs::path folder(out);
   const fs::path markdown = folder / "AUDIT.md", json = folder / "audit.json";
+  const fs::path kernels = folder / "billiards" / "kernels.hpp";
   try {
     ensure_directory(folder);
+    const std::string json_text = audit_json(derivation);
     write_file_atomically(markdown, audit_markdown(derivation));
-    write_file_atomically(json, audit_json(derivation));
+    write_file_atomically(json, json_text);
+    write_file_atomically(kernels, kernels_header(derivation, fingerprint(json_text)));
   } catch (const std::exception& error) {
     std::cerr << "billiards-derive: " << error.what() << "\n";
     return exit_io;
   }
 
-  const int failed = report(derivation, {markdown.string(), json.string()}, std::cout, std::cerr);
+  const int failed =
+      report(derivation, {markdown.string(), json.string(), kernels.string()}, std::cout, std::cerr);
   return failed == 0 ? 0 : exit_claims_failed;
 }

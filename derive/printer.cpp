@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <sstream>
+#include <stdexcept>
 #include <vector>
 
 namespace billiards::derive {
@@ -101,14 +102,20 @@ std::vector<Product> sorted_terms(const ex& sum) {
 std::string print_sum(const ex& sum, Notation notation) {
   std::string out;
   bool first = true;
-  for (const Product& term : sorted_terms(sum)) {
+  std::vector<Product> terms = sorted_terms(sum);
+  if (notation == Notation::cpp) {
+    // In code, v2n - v1n reads better than -v1n + v2n: positive terms first, order otherwise kept.
+    std::stable_partition(terms.begin(), terms.end(),
+                          [](const Product& p) { return !p.coefficient.is_negative(); });
+  }
+  for (const Product& term : terms) {
     const bool negative = term.coefficient.is_negative();
     Product magnitude = term;
     magnitude.coefficient = GiNaC::abs(term.coefficient);
     const std::string body = print_magnitude(magnitude, notation);
     if (first) {
       out += negative ? "-" : "";
-    } else if (notation == Notation::latex) {
+    } else if (notation != Notation::text) {
       out += negative ? " - " : " + ";
     } else {
       out += negative ? "-" : "+";
@@ -136,6 +143,18 @@ std::string print_base(const ex& base, Notation notation, bool will_take_power) 
 
 std::string print_factor(const Factor& f, Notation notation) {
   if (f.exponent == 1) return print_base(f.base, notation, false);
+  if (notation == Notation::cpp) {
+    if (f.exponent == numeric(1, 2)) return "std::sqrt(" + print_any(f.base, notation) + ")";
+    if (!f.exponent.is_pos_integer()) {
+      throw std::invalid_argument("cannot emit the power " + print(pow(f.base, f.exponent), Notation::text) +
+                                  " as C++: expected a positive integer exponent or 1/2");
+    }
+    // x² as x * x: no pow() in emitted code.
+    const std::string base = print_base(f.base, notation, false);
+    std::string product = base;
+    for (numeric k = 1; k < f.exponent; k += 1) product += " * " + base;
+    return product;
+  }
   if (f.exponent == numeric(1, 2)) {
     const std::string inner = print_any(f.base, notation);
     return notation == Notation::latex ? "\\sqrt{" + inner + "}" : "sqrt(" + inner + ")";
@@ -146,8 +165,46 @@ std::string print_factor(const Factor& f, Notation notation) {
   return base + "^" + (f.exponent.is_integer() && f.exponent.is_positive() ? exponent : "(" + exponent + ")");
 }
 
+std::string scalar_literal(const numeric& n) { return "Scalar(" + ginac_print(n, Notation::text) + ")"; }
+
+// True when `code` is one token or one parenthesised group, so that "/ code" divides by all of it.
+bool is_one_group(const std::string& code) {
+  if (code.find(' ') == std::string::npos) return true;
+  if (code.front() != '(') return false;
+  int depth = 0;
+  for (std::size_t i = 0; i < code.size(); ++i) {
+    depth += code[i] == '(' ? 1 : code[i] == ')' ? -1 : 0;
+    if (depth == 0) return i + 1 == code.size();
+  }
+  return false;
+}
+
+// |p| in C++: coefficient and numerator factors, then one division per denominator factor, so that
+// 2 m2 / (m1 + m2) is computed as written.
+std::string print_magnitude_cpp(const Product& p) {
+  std::vector<std::string> numerator, denominator;
+  for (const Factor& f : p.factors) {
+    if (f.exponent.is_negative()) {
+      const std::string factor = print_factor({f.base, -f.exponent}, Notation::cpp);
+      denominator.push_back(is_one_group(factor) ? factor : "(" + factor + ")");
+    } else {
+      numerator.push_back(print_factor(f, Notation::cpp));
+    }
+  }
+  std::sort(numerator.begin(), numerator.end());
+  std::sort(denominator.begin(), denominator.end());
+  const numeric top = GiNaC::abs(p.coefficient.numer()), bottom = p.coefficient.denom();
+  if (top != 1 || numerator.empty()) numerator.insert(numerator.begin(), scalar_literal(top));
+  if (bottom != 1) denominator.push_back(scalar_literal(bottom));
+  std::string out;
+  for (const std::string& part : numerator) out += (out.empty() ? "" : " * ") + part;
+  for (const std::string& part : denominator) out += " / " + part;
+  return out;
+}
+
 // |p| with numerator and denominator separated; the sign is the caller's.
 std::string print_magnitude(const Product& p, Notation notation) {
+  if (notation == Notation::cpp) return print_magnitude_cpp(p);
   std::vector<std::string> numerator, denominator;
   for (const Factor& f : p.factors) {
     if (f.exponent.is_negative()) {
@@ -197,7 +254,10 @@ std::string print_signed_product(const ex& e, Notation notation) {
   const Product p = as_product(e);
   Product magnitude = p;
   magnitude.coefficient = GiNaC::abs(p.coefficient);
-  return (p.coefficient.is_negative() ? "-" : "") + print_magnitude(magnitude, notation);
+  const std::string body = print_magnitude(magnitude, notation);
+  if (!p.coefficient.is_negative()) return body;
+  if (notation == Notation::cpp && body.find(' ') != std::string::npos) return "-(" + body + ")";
+  return "-" + body;
 }
 
 std::string print_list(const ex& list, Notation notation) {
@@ -208,9 +268,30 @@ std::string print_list(const ex& list, Notation notation) {
   return notation == Notation::latex ? "\\left[" + out + "\\right]" : "[" + out + "]";
 }
 
+std::string print_cpp_leaf(const ex& e) {
+  if (GiNaC::is_a<numeric>(e)) {
+    const numeric n = GiNaC::ex_to<numeric>(e);
+    if (!n.is_rational()) {
+      throw std::invalid_argument("cannot emit the number " + ginac_print(e, Notation::text) +
+                                  " as C++: expected a rational");
+    }
+    const std::string magnitude =
+        n.is_integer() ? scalar_literal(GiNaC::abs(n))
+                       : scalar_literal(GiNaC::abs(n.numer())) + " / " + scalar_literal(n.denom());
+    return n.is_negative() ? "-(" + magnitude + ")" : magnitude;
+  }
+  if (GiNaC::is_a<GiNaC::symbol>(e)) return GiNaC::ex_to<GiNaC::symbol>(e).get_name();
+  if (GiNaC::is_a<GiNaC::function>(e) && GiNaC::ex_to<GiNaC::function>(e).get_name() == "abs") {
+    return "std::abs(" + print_any(e.op(0), Notation::cpp) + ")";
+  }
+  throw std::invalid_argument("cannot emit " + print_any(e, Notation::text) +
+                              " as C++: expected numbers, symbols, sums, products and powers");
+}
+
 std::string print_any(const ex& e, Notation notation) {
   if (GiNaC::is_a<GiNaC::add>(e)) return print_sum(e, notation);
   if (GiNaC::is_a<GiNaC::mul>(e) || GiNaC::is_a<GiNaC::power>(e)) return print_signed_product(e, notation);
+  if (notation == Notation::cpp) return print_cpp_leaf(e);
   if (GiNaC::is_a<numeric>(e)) return ginac_print(e, notation);
   if (GiNaC::is_a<GiNaC::lst>(e)) return print_list(e, notation);
   if (GiNaC::is_a<GiNaC::relational>(e)) {
@@ -236,6 +317,13 @@ std::string print_any(const ex& e, Notation notation) {
 }  // namespace
 
 std::string print(const ex& e, Notation notation) { return print_any(e, notation); }
+
+bool prints_negative(const ex& e) {
+  if (GiNaC::is_a<GiNaC::add>(e)) return sorted_terms(e).front().coefficient.is_negative();
+  return as_product(e).coefficient.is_negative();
+}
+
+bool reads_negated(const ex& sum) { return GiNaC::is_a<GiNaC::add>(sum) && leads_negative(sum); }
 
 ex expanded_form(const ex& e) {
   if (GiNaC::is_a<GiNaC::lst>(e)) {

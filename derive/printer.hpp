@@ -15,10 +15,19 @@ namespace billiards::derive {
 enum class Notation {
   text,   ///< plain, one line: m1*(v1n-v2n)^2/(m1+m2)
   latex,  ///< LaTeX math from GiNaC's TeX names: \frac{m_{1} \left(…\right)^{2}}{m_{1} + m_{2}}
+  /// C++ for a `template <typename Scalar>` body: Scalar(2) * m2 / total_mass. No pow (integer powers
+  /// are products), no floating literals (every number is Scalar(integer)); anything else throws.
+  cpp,
 };
 
 /// Prints `e` in a canonical, run-independent form.
 std::string print(const GiNaC::ex& e, Notation notation);
+
+/// True when print() writes `e` with a leading minus sign, e.g. −2 m1/(m1 + m2).
+bool prints_negative(const GiNaC::ex& e);
+
+/// True when print() turns the sum `sum` around, writing −(b − a) for a − b in a product.
+bool reads_negated(const GiNaC::ex& sum);
 
 /// A rational expression in its canonical factored form: factor(numerator) / factor(denominator).
 /// Unique up to the order and sign of factors, which print() fixes.

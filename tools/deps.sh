@@ -2,7 +2,7 @@
 # As root it installs what is missing (apt-get update first); as anyone else it prints the exact
 # apt-get line and stops.
 
-billiards_packages=(cmake make g++ pkg-config libginac-dev libeigen3-dev catch2 libbenchmark-dev
+billiards_packages=(cmake make g++ pkg-config clang-format libginac-dev libeigen3-dev catch2 libbenchmark-dev
                     nlohmann-json3-dev libcli11-dev)
 
 billiards_require_packages() {

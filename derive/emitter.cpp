@@ -1,0 +1,197 @@
+#include "emitter.hpp"
+
+#include "audit.hpp"
+#include "printer.hpp"
+
+#include <cstdint>
+#include <cstdio>
+#include <map>
+#include <sstream>
+#include <stdexcept>
+
+namespace billiards::derive {
+
+using GiNaC::ex;
+
+namespace {
+
+constexpr std::size_t column_limit = 110;
+
+// Every sum inside `e` (including `e` itself), oriented as print() writes it.
+void collect_sums(const ex& e, std::vector<ex>& sums) {
+  for (GiNaC::const_preorder_iterator it = e.preorder_begin(); it != e.preorder_end(); ++it) {
+    if (GiNaC::is_a<GiNaC::add>(*it)) sums.push_back(reads_negated(*it) ? ex(-*it) : *it);
+  }
+}
+
+// + − × ÷ and negations in a line of emitted C++: binary operators stand between spaces, a unary
+// minus is followed directly by its operand.
+int count_operations(const std::string& code) {
+  int count = 0;
+  for (std::size_t i = 0; i < code.size(); ++i) {
+    const char c = code[i];
+    const bool spaced = i > 0 && code[i - 1] == ' ' && i + 1 < code.size() && code[i + 1] == ' ';
+    if ((c == '+' || c == '*' || c == '/' || c == '-') && spaced) ++count;
+    if (c == '-' && i + 1 < code.size() && code[i + 1] != ' ') ++count;
+  }
+  return count;
+}
+
+// "/// " lines holding `text`, wrapped before the column limit.
+std::string doc_comment(const std::string& text, const std::string& indent = "") {
+  std::istringstream words(text);
+  std::string word, line, out;
+  const std::size_t width = 100 - indent.size();
+  while (words >> word) {
+    if (!line.empty() && line.size() + 1 + word.size() > width) {
+      out += indent + "/// " + line + "\n";
+      line.clear();
+    }
+    line += (line.empty() ? "" : " ") + word;
+  }
+  if (!line.empty()) out += indent + "/// " + line + "\n";
+  return out;
+}
+
+// `head` followed by `items` separated by ", " and then `tail`, wrapped like clang-format: items
+// that do not fit continue on the next line, aligned under the first item.
+std::string wrapped_list(const std::string& head, const std::vector<std::string>& items,
+                         const std::string& tail) {
+  const std::string continuation(head.size(), ' ');
+  std::string out = head, line = head;
+  for (std::size_t i = 0; i < items.size(); ++i) {
+    const std::string piece = items[i] + (i + 1 < items.size() ? "," : tail);
+    const bool first_on_line = line.size() == head.size();
+    if (!first_on_line && line.size() + 1 + piece.size() > column_limit) {
+      out += "\n" + continuation;
+      line = continuation;
+    } else if (!first_on_line) {
+      out += " ";
+      line += " ";
+    }
+    out += piece;
+    line += piece;
+  }
+  return out;
+}
+
+}  // namespace
+
+EmittedKernel emit_kernel(const Kernel& kernel) {
+  // Hoist every sum that occurs more than once across the steps and outputs.
+  std::vector<ex> sums;
+  for (const KernelStep& step : kernel.steps) collect_sums(step.expression, sums);
+  for (const ex& output : kernel.outputs) collect_sums(output, sums);
+  std::vector<std::pair<GiNaC::symbol, ex>> hoisted;
+  std::map<std::string, int> occurrences;
+  for (const ex& sum : sums) ++occurrences[print(sum, Notation::text)];
+  for (const ex& sum : sums) {
+    const std::string key = print(sum, Notation::text);
+    if (occurrences[key] < 2) continue;
+    occurrences[key] = 0;  // hoist once
+    std::string name = "common_subexpression_" + std::to_string(hoisted.size());
+    for (const auto& [hint, expression] : kernel.names) {
+      if (print(expression, Notation::text) == key) name = hint;
+    }
+    hoisted.emplace_back(GiNaC::symbol(name), sum);
+  }
+  GiNaC::exmap replace;
+  for (const auto& [symbol, sum] : hoisted) {
+    replace[sum] = symbol;
+    replace[-sum] = -symbol;
+  }
+
+  EmittedKernel emitted;
+  std::vector<bool> placed(hoisted.size(), false);
+  const auto define = [&](const std::string& name, const ex& expression) {
+    const std::string code = print(expression, Notation::cpp);
+    emitted.operation_count += count_operations(code);
+    emitted.body.push_back("const Scalar " + name + " = " + code + ";");
+  };
+  const auto place_hoisted_used_by = [&](const ex& expression) {
+    for (std::size_t i = 0; i < hoisted.size(); ++i) {
+      if (!placed[i] && expression.has(hoisted[i].first)) {
+        define(hoisted[i].first.get_name(), hoisted[i].second);
+        placed[i] = true;
+      }
+    }
+  };
+  try {
+    for (const KernelStep& step : kernel.steps) {
+      const ex expression = step.expression.subs(replace);
+      place_hoisted_used_by(expression);
+      define(step.name.get_name(), expression);
+    }
+    std::vector<std::string> results;
+    for (const ex& output : kernel.outputs) {
+      const ex expression = output.subs(replace);
+      place_hoisted_used_by(expression);
+      const std::string code = print(expression, Notation::cpp);
+      emitted.operation_count += count_operations(code);
+      results.push_back(code);
+    }
+    if (results.size() == 1) {
+      emitted.body.push_back("return " + results.front() + ";");
+    } else {
+      emitted.body.push_back(wrapped_list("  return {", results, "};").substr(2));
+    }
+  } catch (const std::invalid_argument& error) {
+    throw std::invalid_argument("kernel " + kernel.name + ": " + error.what());
+  }
+  return emitted;
+}
+
+std::string fingerprint(const std::string& text) {
+  std::uint64_t hash = 14695981039346656037ULL;  // FNV-1a, 64 bits
+  for (unsigned char c : text) {
+    hash ^= c;
+    hash *= 1099511628211ULL;
+  }
+  char digits[17];
+  std::snprintf(digits, sizeof digits, "%016llx", static_cast<unsigned long long>(hash));
+  return std::string("fnv1a64:") + digits;
+}
+
+std::string kernels_header(const Derivation& derivation, const std::string& derivation_fingerprint) {
+  std::ostringstream out;
+  out << "// Generated by derive/ (billiards-derive): do not edit. Regenerate with ./tools/derive "
+         "generated.\n"
+      << "//\n"
+      << "// The scalar kernels of " << paper_citation << ", printed from the\n"
+      << "// expressions the derivation selected. Each function names the claims of the derivation audit\n"
+      << "// (AUDIT.md) it implements. They take masses and dot products with the contact normal, so they\n"
+      << "// serve vectors of any dimension and need no Eigen.\n"
+      << "//\n"
+      << "// Derivation fingerprint: " << derivation_fingerprint << " (of audit.json)\n"
+      << "#pragma once\n\n"
+      << "namespace billiards::kernels {\n\n"
+      << doc_comment(
+             "The changes x1·n − v1·n and x2·n − v2·n of the two balls' velocities along the contact "
+             "normal n.")
+      << "template <typename Scalar>\n"
+      << "struct NormalVelocityChange {\n"
+      << "  Scalar first;   ///< x1·n − v1·n\n"
+      << "  Scalar second;  ///< x2·n − v2·n\n"
+      << "};\n";
+  for (const Kernel& kernel : derivation.kernels) {
+    const EmittedKernel emitted = emit_kernel(kernel);
+    std::string claims;
+    for (const std::string& id : kernel.claims) claims += (claims.empty() ? "" : ", ") + ("`" + id + "`");
+    std::vector<std::string> parameters;
+    for (const GiNaC::symbol& parameter : kernel.parameters)
+      parameters.push_back("Scalar " + parameter.get_name());
+    const std::string result = kernel.outputs.size() == 1 ? "Scalar" : "NormalVelocityChange<Scalar>";
+    out << "\n"
+        << doc_comment(kernel.brief) << "///\n"
+        << doc_comment("Implements the audit claims " + claims + ".") << "///\n"
+        << "/// Total ops: " << emitted.operation_count << "\n"
+        << "template <typename Scalar>\n"
+        << wrapped_list("constexpr " + result + " " + kernel.name + "(", parameters, ") noexcept {") << "\n";
+    for (const std::string& line : emitted.body) out << "  " << line << "\n";
+    out << "}\n";
+  }
+  out << "\n}  // namespace billiards::kernels\n";
+  return out.str();
+}
+
+}  // namespace billiards::derive

@@ -1,0 +1,31 @@
+// The C++ emitter: prints the derivation's kernels as a header of `template <typename Scalar>`
+// functions. GiNaC's csrc printers are not used (they print pow(), double literals and, in 1.8.6, drop
+// the reciprocal of a power with exponent −1.0); printer.cpp's C++ notation prints integer powers as
+// products and every number as Scalar(integer). Common subexpressions are hoisted into named consts.
+#pragma once
+
+#include "derivation.hpp"
+
+#include <string>
+#include <vector>
+
+namespace billiards::derive {
+
+/// A kernel printed as C++: its body lines and the number of arithmetic operations they perform.
+struct EmittedKernel {
+  std::vector<std::string> body;  ///< `const Scalar name = …;` lines, then the `return …;` line
+  int operation_count = 0;        ///< +, −, ×, ÷ and negations in the body
+};
+
+/// Prints one kernel's body. Throws std::invalid_argument naming the kernel when an expression has no
+/// C++ form (a non-integer power, an irrational number, an unknown function).
+EmittedKernel emit_kernel(const Kernel& kernel);
+
+/// A stable fingerprint of `text`: "fnv1a64:" and 16 hex digits.
+std::string fingerprint(const std::string& text);
+
+/// The header billiards/kernels.hpp: preamble with `derivation_fingerprint`, every kernel of the
+/// derivation with a comment naming the audit claims it implements and its operation count.
+std::string kernels_header(const Derivation& derivation, const std::string& derivation_fingerprint);
+
+}  // namespace billiards::derive

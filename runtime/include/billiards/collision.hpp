@@ -1,0 +1,95 @@
+// billiards::collide and billiards::reflect: the paper's collision for Eigen vectors of any fixed
+// dimension, float or double, on top of the generated scalar kernels.
+#pragma once
+
+#include <billiards/kernels.hpp>
+#include <billiards/version.hpp>
+
+#include <Eigen/Core>
+
+#include <type_traits>
+
+namespace billiards {
+
+/// The velocities of the two balls after a collision. An aggregate, so structured bindings work:
+/// `auto [x1, x2] = billiards::collide(m1, v1, m2, v2, n);`
+template <typename Vector>
+struct Collision {
+  Vector first;   ///< \f$x_1\f$, the first ball's velocity after the collision
+  Vector second;  ///< \f$x_2\f$, the second ball's velocity after the collision
+};
+
+namespace detail {
+
+/// The plain fixed-size column vector type of an Eigen expression.
+template <typename Derived>
+using PlainVector = Eigen::Matrix<typename Derived::Scalar, Derived::RowsAtCompileTime, 1>;
+
+template <typename Derived>
+constexpr void require_vector() {
+  static_assert(Derived::ColsAtCompileTime == 1,
+                "billiards: velocities and normals must be column vectors (Eigen::Matrix<Scalar, N, 1>)");
+  static_assert(Derived::RowsAtCompileTime != Eigen::Dynamic,
+                "billiards: vectors must have a size fixed at compile time (e.g. Eigen::Vector3d); "
+                "dynamic-size vectors are not supported");
+  static_assert(
+      std::is_same_v<typename Derived::Scalar, float> || std::is_same_v<typename Derived::Scalar, double>,
+      "billiards: the scalar type must be float or double");
+}
+
+template <typename A, typename B>
+constexpr void require_same_vector_type() {
+  require_vector<A>();
+  require_vector<B>();
+  static_assert(std::is_same_v<typename A::Scalar, typename B::Scalar>,
+                "billiards: all vectors must have the same scalar type (all float or all double)");
+  static_assert(static_cast<int>(A::RowsAtCompileTime) == static_cast<int>(B::RowsAtCompileTime),
+                "billiards: all vectors must have the same dimension");
+}
+
+}  // namespace detail
+
+/// \brief The paper's perfectly elastic collision of two balls.
+///
+/// Two balls of masses \f$m_1, m_2\f$ and velocities \f$v_1, v_2\f$ meet with unit contact normal
+/// \f$n\f$ (either direction). Momentum and kinetic energy are conserved and the tangential parts are
+/// unchanged (frictionless, spinless, instantaneous contact):
+/// \f[
+///   x_1 = v_1 + \frac{2 m_2}{m_1 + m_2}\,\big((v_2 - v_1)\cdot n\big)\,n, \qquad
+///   x_2 = v_2 - \frac{2 m_1}{m_1 + m_2}\,\big((v_2 - v_1)\cdot n\big)\,n.
+/// \f]
+/// Derived and checked in the audit: claims `result.x1_simplified_form`, `result.x2_by_symmetry`;
+/// computed by the generated kernel kernels::elastic_normal_velocity_change.
+///
+/// Preconditions (not checked): \f$m_1, m_2 > 0\f$ and finite, \f$|n| = 1\f$. The result does not
+/// depend on the sign of \f$n\f$ (bit for bit), and swapping the balls swaps the results.
+///
+/// \param m1, m2 the masses, in the vectors' scalar type
+/// \param v1, v2, n fixed-size Eigen column vectors of one dimension and one scalar type (float or
+///        double); Map, Ref, blocks and expressions are accepted
+/// \return {x1, x2}, plain vectors; nothing is allocated
+template <typename D1, typename D2, typename DN>
+[[nodiscard]] Collision<detail::PlainVector<D1>> collide(typename D1::Scalar m1,
+                                                         const Eigen::MatrixBase<D1>& v1,
+                                                         typename D1::Scalar m2,
+                                                         const Eigen::MatrixBase<D2>& v2,
+                                                         const Eigen::MatrixBase<DN>& n) noexcept {
+  detail::require_same_vector_type<D1, D2>();
+  detail::require_same_vector_type<D1, DN>();
+  const auto change = kernels::elastic_normal_velocity_change(m1, m2, v1.dot(n), v2.dot(n));
+  return {v1 + change.first * n, v2 + change.second * n};
+}
+
+/// \brief A ball bouncing off an immovable cushion: the reflection \f$v - 2 (v\cdot n)\,n = -n v n\f$.
+///
+/// The paper's limit \f$m_2 \to \infty\f$ with \f$v_2 = 0\f$. Audit claims: `cushion.limit`,
+/// `cushion.reflection_is_sandwich.3d`; computed by kernels::cushion_normal_velocity_change.
+/// Preconditions (not checked): \f$|n| = 1\f$.
+template <typename DV, typename DN>
+[[nodiscard]] detail::PlainVector<DV> reflect(const Eigen::MatrixBase<DV>& v,
+                                              const Eigen::MatrixBase<DN>& n) noexcept {
+  detail::require_same_vector_type<DV, DN>();
+  return v + kernels::cushion_normal_velocity_change(v.dot(n)) * n;
+}
+
+}  // namespace billiards

@@ -1,0 +1,91 @@
+// The emitter: C++ without pow or floating literals, common subexpressions hoisted, honest op counts.
+#include "emitter.hpp"
+#include "printer.hpp"
+
+#include <catch2/catch.hpp>
+
+#include <string>
+
+using namespace billiards::derive;
+using GiNaC::ex;
+
+namespace {
+
+bool contains(const std::string& text, const std::string& part) {
+  return text.find(part) != std::string::npos;
+}
+
+}  // namespace
+
+TEST_CASE("C++ notation", "[derive][emitter]") {
+  const GiNaC::symbol m1("m1"), m2("m2"), v("v");
+  SECTION("numbers are Scalar(integer), never floating literals") {
+    CHECK(print(2 * m2 / (m1 + m2), Notation::cpp) == "Scalar(2) * m2 / (m1 + m2)");
+    CHECK(print(GiNaC::numeric(1, 2) * v, Notation::cpp) == "v / Scalar(2)");
+    CHECK(print(ex(GiNaC::numeric(-3, 4)), Notation::cpp) == "-(Scalar(3) / Scalar(4))");
+  }
+  SECTION("integer powers are products, reciprocals are divisions: no pow()") {
+    CHECK(print(GiNaC::pow(v, 3), Notation::cpp) == "v * v * v");
+    CHECK(print(1 / GiNaC::pow(m1 + m2, 2), Notation::cpp) == "Scalar(1) / ((m1 + m2) * (m1 + m2))");
+  }
+  SECTION("positive terms first, a negative product in parentheses") {
+    CHECK(print(m2 - m1, Notation::cpp) == "m2 - m1");
+    CHECK(print(-2 * v, Notation::cpp) == "-(Scalar(2) * v)");
+  }
+  SECTION("what C++ cannot say is an error naming it") {
+    CHECK_THROWS_WITH(print(GiNaC::pow(v, GiNaC::numeric(1, 3)), Notation::cpp), Catch::Contains("v^(1/3)"));
+    CHECK_THROWS_AS(print(GiNaC::sin(v), Notation::cpp), std::invalid_argument);
+  }
+}
+
+TEST_CASE("Kernels", "[derive][emitter]") {
+  const GiNaC::symbol m1("m1"), m2("m2"), v1n("v1n"), v2n("v2n");
+  const GiNaC::symbol s("relative_normal_speed"), c1("c1"), c2("c2");
+  Kernel kernel{.name = "test_kernel",
+                .brief = "A test.",
+                .parameters = {m1, m2, v1n, v2n},
+                .steps = {{s, v2n - v1n}, {c1, 2 * m2 / (m1 + m2)}, {c2, 2 * m1 / (m2 + m1)}},
+                .outputs = {c1 * s, -c2 * s},
+                .claims = {"some.claim"},
+                .names = {{"total_mass", m1 + m2}}};
+
+  SECTION("a sum used twice is computed once, under the name given for it") {
+    const EmittedKernel emitted = emit_kernel(kernel);
+    REQUIRE(emitted.body.size() == 5);
+    CHECK(emitted.body[0] == "const Scalar relative_normal_speed = v2n - v1n;");
+    CHECK(emitted.body[1] == "const Scalar total_mass = m1 + m2;");
+    CHECK(emitted.body[2] == "const Scalar c1 = Scalar(2) * m2 / total_mass;");
+    CHECK(emitted.body[3] == "const Scalar c2 = Scalar(2) * m1 / total_mass;");
+    CHECK(emitted.body[4] == "return {c1 * relative_normal_speed, -(c2 * relative_normal_speed)};");
+    // − + (× ÷) (× ÷) × × and one negation
+    CHECK(emitted.operation_count == 9);
+  }
+  SECTION("without a name the hoisted sum gets a numbered one") {
+    kernel.names.clear();
+    CHECK(emit_kernel(kernel).body[1] == "const Scalar common_subexpression_0 = m1 + m2;");
+  }
+  SECTION("an expression with no C++ form names the kernel") {
+    kernel.outputs = {GiNaC::Pi * s};
+    CHECK_THROWS_WITH(emit_kernel(kernel), Catch::Contains("test_kernel"));
+  }
+  SECTION("the header names the claims, the op count and the fingerprint") {
+    Derivation derivation;
+    derivation.kernels = {kernel};
+    const std::string header = kernels_header(derivation, "fnv1a64:0123456789abcdef");
+    CHECK(contains(header, "do not edit"));
+    CHECK(contains(header, "Derivation fingerprint: fnv1a64:0123456789abcdef"));
+    CHECK(contains(header, "`some.claim`"));
+    CHECK(contains(header, "/// Total ops: 9"));
+    CHECK(
+        contains(header, "template <typename Scalar>\nconstexpr NormalVelocityChange<Scalar> test_kernel("));
+    CHECK(contains(header, ") noexcept {"));
+    CHECK_FALSE(contains(header, "pow("));
+    CHECK_FALSE(contains(header, "#include"));
+  }
+}
+
+TEST_CASE("Fingerprints", "[derive][emitter]") {
+  CHECK(fingerprint("") == "fnv1a64:cbf29ce484222325");   // the FNV-1a 64-bit offset basis
+  CHECK(fingerprint("a") == "fnv1a64:af63dc4c8601ec8c");  // published FNV-1a test vector
+  CHECK(fingerprint("audit") != fingerprint("audiT"));
+}

@@ -1,0 +1,56 @@
+# One step of the packaging tests (STEP): install the build tree into a scratch prefix, or build and
+# run a consumer of it. SCRATCH: a folder of our own; CXX: the compiler; SOURCE, BUILD: billiards'.
+set(prefix ${SCRATCH}/prefix)
+set(tests ${SOURCE}/tests/package)
+
+function(run)
+  execute_process(COMMAND ${ARGV} RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if(NOT code EQUAL 0)
+    string(REPLACE ";" " " command "${ARGV}")
+    message(FATAL_ERROR "failed (${code}): ${command}\n${out}\n${err}")
+  endif()
+endfunction()
+
+if(STEP STREQUAL "install")
+  file(REMOVE_RECURSE ${prefix})
+  run(${CMAKE_COMMAND} --install ${BUILD} --prefix ${prefix})
+  foreach(f IN ITEMS share/cmake/billiards/billiardsConfig.cmake share/cmake/billiards/billiardsConfigVersion.cmake
+                     share/cmake/billiards/billiardsTargets.cmake share/pkgconfig/billiards.pc
+                     include/billiards/collision.hpp include/billiards/kernels.hpp include/billiards/version.hpp)
+    if(NOT EXISTS ${prefix}/${f})
+      message(FATAL_ERROR "cmake --install did not write ${f}")
+    endif()
+  endforeach()
+elseif(STEP STREQUAL "find_package")
+  # A separate project with only the scratch prefix on its path.
+  file(REMOVE_RECURSE ${SCRATCH}/find_package)
+  run(${CMAKE_COMMAND} -S ${tests}/find_package_consumer -B ${SCRATCH}/find_package -DCMAKE_CXX_COMPILER=${CXX}
+      -DCMAKE_PREFIX_PATH=${prefix})
+  run(${CMAKE_COMMAND} --build ${SCRATCH}/find_package)
+  run(${SCRATCH}/find_package/consumer)
+elseif(STEP STREQUAL "add_subdirectory")
+  file(REMOVE_RECURSE ${SCRATCH}/add_subdirectory)
+  run(${CMAKE_COMMAND} -S ${tests}/add_subdirectory_consumer -B ${SCRATCH}/add_subdirectory
+      -DCMAKE_CXX_COMPILER=${CXX} -DBILLIARDS_SOURCE_DIR=${SOURCE})
+  run(${CMAKE_COMMAND} --build ${SCRATCH}/add_subdirectory)
+  run(${SCRATCH}/add_subdirectory/consumer)
+  # Pulled in as a subdirectory, billiards builds neither its derivation nor its tests.
+  file(GLOB_RECURSE built LIST_DIRECTORIES false ${SCRATCH}/add_subdirectory/billiards/*billiards-derive
+       ${SCRATCH}/add_subdirectory/billiards/*_tests)
+  if(built)
+    message(FATAL_ERROR "add_subdirectory built what it did not ask for: ${built}")
+  endif()
+elseif(STEP STREQUAL "pkg_config")
+  set(ENV{PKG_CONFIG_PATH} ${prefix}/share/pkgconfig)
+  execute_process(COMMAND pkg-config --cflags billiards RESULT_VARIABLE code OUTPUT_VARIABLE cflags
+                  ERROR_VARIABLE err OUTPUT_STRIP_TRAILING_WHITESPACE)
+  if(NOT code EQUAL 0)
+    message(FATAL_ERROR "pkg-config --cflags billiards failed: ${err}")
+  endif()
+  separate_arguments(cflags UNIX_COMMAND "${cflags}")
+  file(MAKE_DIRECTORY ${SCRATCH}/pkg_config)
+  run(${CXX} -std=c++20 ${cflags} ${tests}/consumer_main.cpp -o ${SCRATCH}/pkg_config/consumer)
+  run(${SCRATCH}/pkg_config/consumer)
+else()
+  message(FATAL_ERROR "unknown STEP '${STEP}'")
+endif()

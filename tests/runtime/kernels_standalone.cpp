@@ -1,0 +1,20 @@
+// The generated header compiles on its own, with every kernel instantiated for float and double,
+// under -Wall -Wextra -Wpedantic -Werror and -Wdouble-promotion -Wconversion (a double literal in
+// float code would promote and fail).
+#include <billiards/kernels.hpp>
+
+namespace billiards::kernels {
+
+template NormalVelocityChange<float> elastic_normal_velocity_change<float>(float, float, float,
+                                                                           float) noexcept;
+template NormalVelocityChange<double> elastic_normal_velocity_change<double>(double, double, double,
+                                                                             double) noexcept;
+template float cushion_normal_velocity_change<float>(float) noexcept;
+template double cushion_normal_velocity_change<double>(double) noexcept;
+
+// constexpr: usable in constant expressions.
+static_assert(elastic_normal_velocity_change(1.0f, 1.0f, 0.0f, 2.0f).first == 2.0f);
+static_assert(elastic_normal_velocity_change(1.0, 1.0, 0.0, 2.0).second == -2.0);
+static_assert(cushion_normal_velocity_change(3.0) == -6.0);
+
+}  // namespace billiards::kernels
