@@ -79,6 +79,9 @@ std::string audit_markdown(const Derivation& derivation) {
         "is *verified* when the difference is exactly zero, *failed* otherwise (the residual is "
         "shown), and an *assumption* when it is a modelling choice that the conservation laws do "
         "not force.\n\n"
+     << "Each claim shows what *the paper prints* (its LaTeX, verbatim, where it prints an equation), "
+        "the same expression *as typed for GiNaC* (printed back in a canonical order, so that it reads the "
+        "same on every run), and what was *derived*; the check says how the two were compared.\n\n"
      << "## Summary\n\n"
      << "| verified | failed | assumptions | claims |\n|---:|---:|---:|---:|\n"
      << "| " << summary.verified << " | " << summary.failed << " | " << summary.assumption << " | "
@@ -106,7 +109,8 @@ std::string audit_markdown(const Derivation& derivation) {
          << "<a id=\"" << claim.id << "\"></a>**" << verdict_mark(claim.verdict) << "** — " << claim.statement
          << "\n\n"
          << "- Paper: " << (claim.paper.empty() ? "not stated in the paper" : claim.paper) << "\n"
-         << "- As printed: $" << paper_latex(claim) << "$\n"
+         << (claim.paper_tex.empty() ? "" : "- The paper prints: $" + claim.paper_tex + "$\n")
+         << "- As typed for GiNaC: $" << paper_latex(claim) << "$\n"
          << "- Derived: $" << derived_latex(claim) << "$\n"
          << "- Check: " << claim.method << "\n"
          << "- Rests on: " << join_ids(claim.depends_on) << "\n";
@@ -163,6 +167,7 @@ std::string audit_json(const Derivation& derivation) {
     entry["verdict"] = to_string(claim.verdict);
     entry["section"] = claim.section;
     entry["comparison"] = to_string(claim.comparison);
+    if (!claim.paper_tex.empty()) entry["paper_tex"] = claim.paper_tex;
     entry["paper_latex"] = paper_latex(claim);
     entry["derived_latex"] = derived_latex(claim);
     entry["residual"] = print(factored_form(claim.residual), Notation::text);

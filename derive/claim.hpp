@@ -28,6 +28,7 @@ struct Claim {
   std::string id;         ///< stable and descriptive, e.g. "discriminant.factored"
   std::string section;    ///< the audit section (a step of the derivation) it belongs to
   std::string paper;      ///< where it stands in the paper; empty when the paper does not state it
+  std::string paper_tex;  ///< the paper's equation, verbatim LaTeX from the paper; empty if it prints none
   std::string statement;  ///< one sentence a reader can check
   std::string method;     ///< how the derived side was obtained and compared, in words
   Comparison comparison = Comparison::identity;

@@ -192,6 +192,7 @@ Derivation derive_paper(const Definitions& definitions) {
     record.add({
         .id = "split.momentum" + sp->suffix,
         .paper = "the split of P (\"it is not hard to show that\")",
+        .paper_tex = R"tex(P(x_1, x_2) = P(x_1^\parallel, x_2^\parallel) + P(x_1^\perp, x_2^\perp))tex",
         .statement =
             "P(x1, x2) = P(x1∥, x2∥) + P(x1⊥, x2⊥) in " + std::to_string(sp->dimension) + "-D components.",
         .method = "identity after expand(), componentwise",
@@ -222,6 +223,7 @@ Derivation derive_paper(const Definitions& definitions) {
     record.add({
         .id = "split.kinetic" + sp->suffix,
         .paper = "the split of K (\"it is not hard to show that\")",
+        .paper_tex = R"tex(K(x_1, x_2) = K(x_1^\parallel, x_2^\parallel) + K(x_1^\perp, x_2^\perp))tex",
         .statement = "K(x1, x2) = K(x1∥, x2∥) + K(x1⊥, x2⊥) in " + std::to_string(sp->dimension) +
                      "-D components, given n·n = 1.",
         .method = std::string("identity after expand()") + unit_normal_method,
@@ -246,6 +248,7 @@ Derivation derive_paper(const Definitions& definitions) {
   record.add({
       .id = "assumption.tangential_velocity_unchanged",
       .paper = "\"after making a physics-based argument\"",
+      .paper_tex = R"tex(v_1^\perp = x_1^\perp, \quad v_2^\perp = x_2^\perp)tex",
       .statement = "x1⊥ = v1⊥ and x2⊥ = v2⊥: the contact exerts no force across n.",
       .method = "assumption",
       .comparison = Comparison::assumption,
@@ -271,6 +274,7 @@ Derivation derive_paper(const Definitions& definitions) {
     record.add({
         .id = "along_n.momentum",
         .paper = "\"our preservation equations become\" (momentum)",
+        .paper_tex = R"tex(P(v_1^\parallel, v_2^\parallel) = P(x_1^\parallel, x_2^\parallel))tex",
         .statement = "P(v1, v2) − P(x1, x2) = P(v1∥, v2∥) − P(x1∥, x2∥) when x_i⊥ = v_i⊥ (3-D).",
         .method = std::string("identity after expand(), componentwise") + unit_normal_method,
         .comparison = Comparison::identity,
@@ -285,6 +289,7 @@ Derivation derive_paper(const Definitions& definitions) {
     record.add({
         .id = "along_n.kinetic_energy",
         .paper = "\"our preservation equations become\" (kinetic energy)",
+        .paper_tex = R"tex(K(v_1^\parallel, v_2^\parallel) = K(x_1^\parallel, x_2^\parallel))tex",
         .statement = "K(v1, v2) − K(x1, x2) = K(v1∥, v2∥) − K(x1∥, x2∥) when x_i⊥ = v_i⊥ (3-D).",
         .method = std::string("identity after expand()") + unit_normal_method,
         .comparison = Comparison::identity,
@@ -299,6 +304,7 @@ Derivation derive_paper(const Definitions& definitions) {
     record.add({
         .id = "along_n.momentum_is_along_n",
         .paper = "the notation P·n",
+        .paper_tex = R"tex(P^\parallel = P(v_1^\parallel, v_2^\parallel))tex",
         .statement = "P∥ = P(v1∥, v2∥) = (P·n) n with P·n = m1 (v1·n) + m2 (v2·n): momentum along n "
                      "is one scalar equation.",
         .method = "identity after expand(), componentwise",
@@ -313,6 +319,7 @@ Derivation derive_paper(const Definitions& definitions) {
     record.add({
         .id = "along_n.kinetic_energy_in_normal_components",
         .paper = "K∥ = K(v1∥, v2∥)",
+        .paper_tex = R"tex(K^\parallel = K(v_1^\parallel, v_2^\parallel))tex",
         .statement = "K∥ = K(v1∥, v2∥) = ½ m1 (v1·n)² + ½ m2 (v2·n)² given n·n = 1.",
         .method = std::string("identity after expand()") + unit_normal_method,
         .comparison = Comparison::identity,
@@ -361,6 +368,8 @@ Derivation derive_paper(const Definitions& definitions) {
     record.add({
         .id = "quadratic.vector_form",
         .paper = "the first quadratic (in x1∥)",
+        .paper_tex =
+            R"tex(0 = \frac{1}{2}m_1 \left(1 + \frac{m_1}{m_2}\right) (x_1^\parallel)^2 - \frac{m_1}{m_2} P^\parallel \cdot x_1^\parallel + \frac{(P^\parallel)^2}{2m_2} - K^\parallel)tex",
         .statement = "K(x1∥, x2∥) − K∥ = ½ m1 (1 + m1/m2)(x1∥)² − (m1/m2) P∥·x1∥ + (P∥)²/(2 m2) − K∥ "
                      "(3-D components).",
         .method = std::string("substitution of x2∥ into K; identity after normal()") + unit_normal_method,
@@ -383,6 +392,8 @@ Derivation derive_paper(const Definitions& definitions) {
     record.add({
         .id = "quadratic.in_normal_component",
         .paper = "the second quadratic (\"a quadratic equation in the variable x1·n\")",
+        .paper_tex =
+            R"tex(0 = \frac{1}{2}m_1 \left(1 + \frac{m_1}{m_2}\right) (x_1 \cdot n)^2 - \frac{m_1}{m_2} (P \cdot n)(x_1 \cdot n) + \frac{(P \cdot n)^2}{2m_2} - K^\parallel)tex",
         .statement = "The quadratic is one in x1·n: ½ m1 (1 + m1/m2)(x1·n)² − (m1/m2)(P·n)(x1·n) + "
                      "(P·n)²/(2 m2) − K∥ (checked in 3-D components).",
         .method = std::string("the scalar quadratic, written in components, against the paper's; "
@@ -412,6 +423,8 @@ Derivation derive_paper(const Definitions& definitions) {
       record.add({
           .id = c.id,
           .paper = "the quadratic in x1·n",
+          .paper_tex =
+              R"tex(0 = \frac{1}{2}m_1 \left(1 + \frac{m_1}{m_2}\right) (x_1 \cdot n)^2 - \frac{m_1}{m_2} (P \cdot n)(x_1 \cdot n) + \frac{(P \cdot n)^2}{2m_2} - K^\parallel)tex",
           .statement = std::string("The coefficient ") + c.name + " equals the paper's.",
           .method = "coeff() of the derived quadratic; identity after normal()",
           .comparison = Comparison::identity,
@@ -439,6 +452,8 @@ Derivation derive_paper(const Definitions& definitions) {
     record.add({
         .id = "discriminant.paper_form",
         .paper = "\"if we examine the discriminant D\"",
+        .paper_tex =
+            R"tex(D = 2m_1 \left(1 + \frac{m_1}{m_2}\right) K^\parallel - \frac{m_1}{m_2} (P \cdot n)^2)tex",
         .statement = "B² − 4AC = 2 m1 (1 + m1/m2) K∥ − (m1/m2)(P·n)².",
         .method = "B² − 4AC from the coefficients; identity after normal()",
         .comparison = Comparison::identity,
@@ -451,6 +466,7 @@ Derivation derive_paper(const Definitions& definitions) {
     record.add({
         .id = "discriminant.expanded",
         .paper = "\"If we continue to expand this\"",
+        .paper_tex = R"tex(D = m_1^2 ((v_1 \cdot n)^2 + (v_2 \cdot n)^2 - 2(v_1 \cdot n)(v_2 \cdot n)))tex",
         .statement = "D = m1² ((v1·n)² + (v2·n)² − 2 (v1·n)(v2·n)).",
         .method = "identity after normal()",
         .comparison = Comparison::identity,
@@ -463,6 +479,7 @@ Derivation derive_paper(const Definitions& definitions) {
     record.add({
         .id = "discriminant.factored",
         .paper = "\"it is clear that this factors as\"",
+        .paper_tex = R"tex(D = m_1^2 ((v_2 - v_1) \cdot n)^2)tex",
         .statement = "D = m1² ((v2 − v1)·n)².",
         .method = "identity after normal(); factor() of D shown as derived",
         .comparison = Comparison::identity,
@@ -475,6 +492,7 @@ Derivation derive_paper(const Definitions& definitions) {
     record.add({
         .id = "discriminant.nonnegative",
         .paper = "\"Immediately we see that D ≥ 0\"",
+        .paper_tex = R"tex(D \geq 0)tex",
         .statement = "D ≥ 0: it factors as m1² times a square, so the quadratic always has a real root.",
         .method = "sign: factor() of D is a product of even powers and positive factors",
         .comparison = Comparison::nonnegative,
@@ -520,6 +538,7 @@ Derivation derive_paper(const Definitions& definitions) {
     record.add({
         .id = std::string("roots.quadratic_formula.") + c.suffix,
         .paper = "\"Applying our quadratic formula\"",
+        .paper_tex = R"tex(x_1 \cdot n = \frac{P \cdot n \pm m_2 |(v_2 - v_1) \cdot n|}{m_1 + m_2})tex",
         .statement = std::string("For ") + c.words +
                      ", the roots (−B ± √D)/(2A) are (P·n ± m2 |(v2 − v1)·n|)/(m1 + m2), sign for sign.",
         .method = "quadratic formula with √D from factor(); v2·n = v1·n + s, |…| resolved for the "
@@ -534,6 +553,8 @@ Derivation derive_paper(const Definitions& definitions) {
     record.add({
         .id = std::string("roots.absolute_value_dropped.") + c.suffix,
         .paper = "\"we could drop the absolute value because of the plus or minus\"",
+        .paper_tex =
+            R"tex(x_1 = v_1 + \left(\frac{P \cdot n \pm m_2 (v_2 - v_1) \cdot n}{m_1 + m_2} - v_1 \cdot n \right) n)tex",
         .statement = std::string("For ") + c.words +
                      ", the set of roots equals {(P·n ± m2 (v2 − v1)·n)/(m1 + m2)}: dropping |…| "
                      "only swaps the two roots.",
@@ -564,6 +585,8 @@ Derivation derive_paper(const Definitions& definitions) {
     record.add({
         .id = "general.x1_both_roots",
         .paper = "\"Putting it all together now\"",
+        .paper_tex =
+            R"tex(x_1 = v_1^\perp + (x_1 \cdot n)n = v_1 + \left(\frac{P \cdot n \pm m_2 (v_2 - v_1) \cdot n}{m_1 + m_2} - v_1 \cdot n \right) n)tex",
         .statement = "x1 = v1 + ((P·n ± m2 (v2 − v1)·n)/(m1 + m2) − v1·n) n for either root.",
         .method = std::string("x1 = v1⊥ + (x1·n) n with each root; identity after normal(), "
                               "componentwise") +
@@ -646,6 +669,8 @@ Derivation derive_paper(const Definitions& definitions) {
     record.add({
         .id = "result.x1_expanded_form",
         .paper = "\"In that case, we get\"",
+        .paper_tex =
+            R"tex(x_1 = v_1 + \left(\frac{2m_2}{m_1 + m_2} (v_2 \cdot n) + \left(\frac{m_1 - m_2}{m_1 + m_2} - 1 \right) (v_1 \cdot n) \right) n)tex",
         .statement = "x1 = v1 + (2m2/(m1 + m2) (v2·n) + ((m1 − m2)/(m1 + m2) − 1)(v1·n)) n.",
         .method = "x1 = v1⊥ + (x1·n) n with the \"+\" root; identity after normal(), componentwise",
         .comparison = Comparison::identity,
@@ -660,6 +685,7 @@ Derivation derive_paper(const Definitions& definitions) {
     record.add({
         .id = "result.x1_simplified_form",
         .paper = "\"The equation simplifies further as\"",
+        .paper_tex = R"tex(x_1 = v_1 + \left(\frac{2m_2}{m_1 + m_2} (v_2 - v_1) \cdot n \right) n)tex",
         .statement = "x1 = v1 + (2 m2/(m1 + m2)) ((v2 − v1)·n) n.",
         .method = "identity after normal(), componentwise",
         .comparison = Comparison::identity,
@@ -728,6 +754,7 @@ Derivation derive_paper(const Definitions& definitions) {
     record.add({
         .id = "sanity.equal_masses_at_rest.x1",
         .paper = "\"m1 = m2 and v1 = 0\"",
+        .paper_tex = R"tex(x_1 = (v_2 \cdot n)n = v_2^{\parallel})tex",
         .statement = "m1 = m2, v1 = 0: x1 = (v2·n) n = v2∥.",
         .method = std::string("subs() into the derived x1; identity after normal()") + unit_normal_method,
         .comparison = Comparison::identity,
@@ -741,6 +768,7 @@ Derivation derive_paper(const Definitions& definitions) {
     record.add({
         .id = "sanity.equal_masses_at_rest.x2",
         .paper = "\"we find that x2 = v2 − v2∥\"",
+        .paper_tex = R"tex(x_2 = v_2 - v_2^{\parallel})tex",
         .statement = "m1 = m2, v1 = 0: x2 = v2 − v2∥.",
         .method = std::string("subs() into the derived x2; identity after normal()") + unit_normal_method,
         .comparison = Comparison::identity,
@@ -757,6 +785,7 @@ Derivation derive_paper(const Definitions& definitions) {
     record.add({
         .id = "sanity.head_on.x1",
         .paper = "\"If the first ball was hit head-on\"",
+        .paper_tex = R"tex(x_1 = v_2)tex",
         .statement = "m1 = m2, v1 = 0, v2 = c n: x1 = v2, the first ball takes all the velocity.",
         .method = std::string("subs() into the derived x1; identity after normal()") + unit_normal_method,
         .comparison = Comparison::identity,
@@ -770,6 +799,7 @@ Derivation derive_paper(const Definitions& definitions) {
     record.add({
         .id = "sanity.head_on.x2",
         .paper = "\"we get x2 = 0\"",
+        .paper_tex = R"tex(x_2 = 0)tex",
         .statement = "m1 = m2, v1 = 0, v2 = c n: x2 = 0, the second ball stops.",
         .method = std::string("subs() into the derived x2; identity after normal()") + unit_normal_method,
         .comparison = Comparison::identity,
@@ -799,6 +829,7 @@ Derivation derive_paper(const Definitions& definitions) {
     record.add({
         .id = "cushion.limit",
         .paper = "\"we take the limit as m2 goes to ∞, and let v2 = 0\"",
+        .paper_tex = R"tex(x_1 = v_1 - 2(v_1 \cdot n)n)tex",
         .statement = "With v2 = 0, x1 → v1 − 2 (v1·n) n as m2 → ∞.",
         .method = "series() in ε = 1/m2 about 0 to order ε⁰ of each component; identity after normal()",
         .comparison = Comparison::identity,
@@ -825,6 +856,7 @@ Derivation derive_paper(const Definitions& definitions) {
       record.add({
           .id = "cushion.reflection_is_sandwich" + sp->suffix,
           .paper = "\"= −n v1 n, which we clearly recognize as a reflection\"",
+          .paper_tex = R"tex(x_1 = v_1 - 2(v_1 \cdot n)n = -nv_1n)tex",
           .statement = "v1 − 2 (v1·n) n = −n v1 n in geometric algebra (" + std::to_string(sp->dimension) +
                        "-D), given n² = 1.",
           .method = std::string("Clifford product with lst_to_clifford() over a Euclidean metric, read "
@@ -872,6 +904,7 @@ Derivation derive_paper(const Definitions& definitions) {
     record.add({
         .id = "kernel.impulse_coefficient_first",
         .paper = "\"This form makes it easier to see the impulse magnitude\"",
+        .paper_tex = R"tex(x_1 = v_1 + \left(\frac{2m_2}{m_1 + m_2} (v_2 - v_1) \cdot n \right) n)tex",
         .statement = "x1·n − v1·n = (2 m2/(m1 + m2)) (v2 − v1)·n.",
         .method = "(x1·n − v1·n)/((v2 − v1)·n) with the selected root; identity after normal()",
         .comparison = Comparison::identity,
@@ -928,6 +961,7 @@ Derivation derive_paper(const Definitions& definitions) {
     record.add({
         .id = "kernel.cushion_velocity_change",
         .paper = "\"we take the limit as m2 goes to ∞, and let v2 = 0\"",
+        .paper_tex = R"tex(x_1 = v_1 - 2(v_1 \cdot n)n)tex",
         .statement = "At a cushion x1·n − v1·n = −2 (v1·n).",
         .method = "series() in ε = 1/m2 about 0 of x1·n − v1·n with v2·n = 0; identity after normal()",
         .comparison = Comparison::identity,
@@ -958,6 +992,7 @@ Derivation derive_paper(const Definitions& definitions) {
     record.add({
         .id = "conservation.momentum" + sp->suffix,
         .paper = "P(v1, v2) = P(x1, x2)",
+        .paper_tex = R"tex(P(v_1, v_2) = P(x_1, x_2))tex",
         .statement = "P(x1, x2) = P(v1, v2) for the final x1, x2 (" + std::to_string(sp->dimension) + "-D).",
         .method = "identity after normal(), componentwise",
         .comparison = Comparison::identity,
@@ -971,6 +1006,7 @@ Derivation derive_paper(const Definitions& definitions) {
     record.add({
         .id = "conservation.kinetic_energy" + sp->suffix,
         .paper = "K(v1, v2) = K(x1, x2)",
+        .paper_tex = R"tex(K(v_1, v_2) = K(x_1, x_2))tex",
         .statement = "K(x1, x2) = K(v1, v2) for the final x1, x2 (" + std::to_string(sp->dimension) +
                      "-D), given n·n = 1.",
         .method = std::string("identity after normal()") + unit_normal_method,
