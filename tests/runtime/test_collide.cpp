@@ -45,6 +45,21 @@ Scalar random_mass(std::mt19937_64& random) {
   return static_cast<Scalar>(std::pow(10.0, decade(random)));
 }
 
+// One random collision: masses over six decades, velocities in [−10, 10], a random unit normal.
+template <typename Vector>
+struct Sample {
+  using Scalar = typename Vector::Scalar;
+  Scalar m1, m2;
+  Vector v1, v2, n;
+
+  explicit Sample(std::mt19937_64& random)
+      : m1(random_mass<Scalar>(random)),
+        m2(random_mass<Scalar>(random)),
+        v1(random_velocity<Vector>(random)),
+        v2(random_velocity<Vector>(random)),
+        n(random_unit_normal<Vector>(random)) {}
+};
+
 template <typename Vector>
 paper::Vector<Vector::RowsAtCompileTime> exact(const Vector& v) {
   return v.template cast<long double>();
@@ -64,9 +79,7 @@ TEMPLATE_TEST_CASE("collide agrees with the paper's formula", "[runtime][elastic
     // Bound per component i: 8ε(|v1ᵢ| + c Σⱼ(|v1ⱼ| + |v2ⱼ|)|nⱼ| |nᵢ|), c = 2 m2/(m1 + m2); ball 2 alike.
     long double worst = 0;  // the largest error seen, as a fraction of its bound
     for (int trial = 0; trial < 100000; ++trial) {
-      const Scalar m1 = random_mass<Scalar>(random), m2 = random_mass<Scalar>(random);
-      const Vector v1 = random_velocity<Vector>(random), v2 = random_velocity<Vector>(random);
-      const Vector n = random_unit_normal<Vector>(random);
+      const auto [m1, m2, v1, v2, n] = Sample<Vector>(random);
       const auto [x1, x2] = billiards::collide(m1, v1, m2, v2, n);
       const auto reference = paper::collision<N>(m1, exact(v1), m2, exact(v2), exact(n));
       const long double c1 = 2.0L * m2 / (static_cast<long double>(m1) + m2);
@@ -95,9 +108,7 @@ TEMPLATE_TEST_CASE("collide agrees with the paper's formula", "[runtime][elastic
 
   SECTION("momentum and kinetic energy are conserved to rounding") {
     for (int trial = 0; trial < 10000; ++trial) {
-      const Scalar m1 = random_mass<Scalar>(random), m2 = random_mass<Scalar>(random);
-      const Vector v1 = random_velocity<Vector>(random), v2 = random_velocity<Vector>(random);
-      const Vector n = random_unit_normal<Vector>(random);
+      const auto [m1, m2, v1, v2, n] = Sample<Vector>(random);
       const auto [x1, x2] = billiards::collide(m1, v1, m2, v2, n);
       const long double M1 = m1, M2 = m2;
       const long double scale = M1 * exact(v1).norm() + M2 * exact(v2).norm();
@@ -113,9 +124,7 @@ TEMPLATE_TEST_CASE("collide agrees with the paper's formula", "[runtime][elastic
 
   SECTION("negating n changes nothing, bit for bit") {
     for (int trial = 0; trial < 10000; ++trial) {
-      const Scalar m1 = random_mass<Scalar>(random), m2 = random_mass<Scalar>(random);
-      const Vector v1 = random_velocity<Vector>(random), v2 = random_velocity<Vector>(random);
-      const Vector n = random_unit_normal<Vector>(random);
+      const auto [m1, m2, v1, v2, n] = Sample<Vector>(random);
       const auto [x1, x2] = billiards::collide(m1, v1, m2, v2, n);
       const auto [y1, y2] = billiards::collide(m1, v1, m2, v2, Vector(-n));
       CHECK((x1.array() == y1.array()).all());
@@ -125,9 +134,7 @@ TEMPLATE_TEST_CASE("collide agrees with the paper's formula", "[runtime][elastic
 
   SECTION("swapping the balls swaps the results, bit for bit") {
     for (int trial = 0; trial < 10000; ++trial) {
-      const Scalar m1 = random_mass<Scalar>(random), m2 = random_mass<Scalar>(random);
-      const Vector v1 = random_velocity<Vector>(random), v2 = random_velocity<Vector>(random);
-      const Vector n = random_unit_normal<Vector>(random);
+      const auto [m1, m2, v1, v2, n] = Sample<Vector>(random);
       const auto [x1, x2] = billiards::collide(m1, v1, m2, v2, n);
       const auto [y2, y1] = billiards::collide(m2, v2, m1, v1, n);
       CHECK((x1.array() == y1.array()).all());
