@@ -62,6 +62,16 @@ struct Symbols {
   GiNaC::symbol results{"x1x2", "(\\mathbf{x}_1, \\mathbf{x}_2)"};
   GiNaC::symbol results_flipped{"x1x2_flipped",
                                 "(\\mathbf{x}_1, \\mathbf{x}_2)\\big|_{\\mathbf{n} \\to -\\mathbf{n}}"};
+  GiNaC::realsymbol restitution{"restitution", "e"};
+  GiNaC::possymbol first_mass_ratio{"rho1", "\\rho_1"};
+  GiNaC::possymbol second_mass_ratio{"rho2", "\\rho_2"};
+  GiNaC::symbol c1{"c1", "c_1"};
+  GiNaC::symbol direction{"d", "\\mathbf{d}"};
+  GiNaC::symbol unit_direction{"dhat", "\\hat{\\mathbf{d}}"};
+  GiNaC::symbol relative_direction_speed{"sd", "\\frac{(v_2 - v_1) \\cdot d}{d \\cdot d}"};
+  GiNaC::symbol relative_unit_speed{"sdhat", "((v_2 - v_1) \\cdot \\hat{d})"};
+  GiNaC::symbol x1_scaled_direction{"x1_scaled",
+                                    "\\mathbf{x}_1\\big|_{\\mathbf{d} \\to \\lambda \\mathbf{d}}"};
   GiNaC::symbol a_par_dot_b_perp{"apar_bperp", "a^{\\parallel} \\cdot b^{\\perp}"};
 };
 
@@ -174,6 +184,10 @@ Derivation derive_paper(const Definitions& definitions) {
         {"definition.split",
          "a∥ = (a·n) n and a⊥ = a − a∥ for a unit contact normal n (n·n = 1); vectors are kept in "
          "symbolic components in 2-D and 3-D, never a chosen numeric n.",
+         ex(0)},
+        {"definition.restitution",
+         "Newton's law of restitution (beyond the paper): (x2 − x1)·n = −e (v2 − v1)·n with 0 ≤ e ≤ 1; "
+         "e = 1 is the paper's perfectly elastic collision.",
          ex(0)},
         {"definition.conservation",
          "Momentum is conserved, P(v1, v2) = P(x1, x2); for a perfectly elastic collision so is the "
@@ -875,7 +889,43 @@ Derivation derive_paper(const Definitions& definitions) {
     }
   }
 
+  // ---- End to end ----------------------------------------------------------------------------
+  record.section("conservation", "End to end: the result conserves momentum and kinetic energy",
+                 "The final x1, x2 in full symbolic components, substituted into P and K.");
+  for (const Space* sp : {&plane, &space}) {
+    const Vec x1 = sp->after_collision(sp->v1, plus_root), x2 = sp->after_collision(sp->v2, x2n_selected);
+    record.add({
+        .id = "conservation.momentum" + sp->suffix,
+        .paper = "P(v1, v2) = P(x1, x2)",
+        .paper_tex = R"tex(P(v_1, v_2) = P(x_1, x_2))tex",
+        .statement = "P(x1, x2) = P(v1, v2) for the final x1, x2 (" + std::to_string(sp->dimension) + "-D).",
+        .method = "identity after normal(), componentwise",
+        .comparison = Comparison::identity,
+        .paper_expression = to_lst(momentum(d, sp->v1, sp->v2)),
+        .derived_expression = to_lst(momentum(d, x1, x2)),
+        .constraints = lst{sp->unit_normal},
+        .paper_display = s.P_of_v,
+        .derived_display = s.P_of_x,
+        .depends_on = {"result.x1_simplified_form", "result.x2_by_symmetry", "definition.conservation"},
+    });
+    record.add({
+        .id = "conservation.kinetic_energy" + sp->suffix,
+        .paper = "K(v1, v2) = K(x1, x2)",
+        .paper_tex = R"tex(K(v_1, v_2) = K(x_1, x_2))tex",
+        .statement = "K(x1, x2) = K(v1, v2) for the final x1, x2 (" + std::to_string(sp->dimension) +
+                     "-D), given n·n = 1.",
+        .method = std::string("identity after normal()") + unit_normal_method,
+        .comparison = Comparison::identity,
+        .paper_expression = kinetic(d, sp->v1, sp->v2),
+        .derived_expression = kinetic(d, x1, x2),
+        .constraints = lst{sp->unit_normal},
+        .paper_display = s.K_of_v,
+        .derived_display = s.K_of_x,
+        .depends_on = {"result.x1_simplified_form", "result.x2_by_symmetry", "definition.conservation"},
+    });
+  }
   // ---- The kernels the emitter prints --------------------------------------------------------
+  ex cushion_change;  // the cushion's change of v1·n, for its kernel below
   record.section("kernels", "What the code emitter prints",
                  "The emitted kernels are scalar functions of the masses and the normal components "
                  "v1·n, v2·n, so they serve vectors of any dimension. Their expressions are read off "
@@ -926,36 +976,8 @@ Derivation derive_paper(const Definitions& definitions) {
         .derived_display = factored_form(second_coefficient),
         .depends_on = {"kernel.velocity_change_depends_on_relative_normal_speed"},
     });
-    // The kernel: the relative normal speed once, each coefficient as a mass-only quantity (so equal
-    // masses give exactly 1), then one product per ball. A negative coefficient is emitted as its
-    // magnitude with the sign on the product, so swapping the balls swaps the results bit for bit.
-    const GiNaC::symbol speed_name("relative_normal_speed"), first_name("first_impulse_coefficient"),
-        second_name("second_impulse_coefficient");
-    const auto signed_output = [](const ex& coefficient, const GiNaC::symbol& name, const GiNaC::symbol& by) {
-      const bool negative = prints_negative(coefficient);
-      return std::make_pair(negative ? ex(-coefficient) : coefficient,
-                            negative ? ex(-name * by) : ex(name * by));
-    };
-    const auto [first_magnitude, first_output] = signed_output(first_coefficient, first_name, speed_name);
-    const auto [second_magnitude, second_output] = signed_output(second_coefficient, second_name, speed_name);
-    result.kernels.push_back({
-        .name = "elastic_normal_velocity_change",
-        .brief = "The paper's perfectly elastic collision in normal components: the changes x1·n − v1·n "
-                 "and x2·n − v2·n of the two balls' velocities along the unit contact normal n, from "
-                 "the masses and v1·n, v2·n.",
-        .parameters = {s.m1, s.m2, s.v1n, s.v2n},
-        .steps = {{speed_name, s.v2n - s.v1n},
-                  {first_name, first_magnitude},
-                  {second_name, second_magnitude}},
-        .outputs = {first_output, second_output},
-        .claims = {"kernel.velocity_change_depends_on_relative_normal_speed",
-                   "kernel.impulse_coefficient_first", "kernel.impulse_coefficient_second",
-                   "result.x1_simplified_form", "result.x2_by_symmetry"},
-        .names = {{"total_mass", s.m1 + s.m2}},
-    });
-
     // The cushion: the limit m2 → ∞ of the first ball's change with v2 = 0.
-    const ex cushion_change = GiNaC::series_to_poly(
+    cushion_change = GiNaC::series_to_poly(
         GiNaC::normal((plus_root - s.v1n).subs(lst{s.m2 == 1 / s.inverse_m2, s.v2n == 0}))
             .series(s.inverse_m2 == 0, 1));
     record.add({
@@ -971,6 +993,348 @@ Derivation derive_paper(const Definitions& definitions) {
         .derived_display = factored_form(cushion_change),
         .depends_on = {"cushion.limit"},
     });
+  }
+
+  // ---- Beyond the paper ----------------------------------------------------------------------
+  record.section("beyond", "Beyond the paper",
+                 "What engines need and the paper does not cover: a coefficient of restitution, "
+                 "immovable bodies, directions that are not unit vectors, and contacts that are "
+                 "already separating. Derived and checked like the paper's claims; the paper "
+                 "states none of them.");
+  const ex e = s.restitution;
+  const ex speed = s.relative_normal_speed;
+  const auto through_speed = [&](const ex& x) { return GiNaC::normal(x.subs(s.v2n == s.v1n + speed)); };
+  // Momentum conservation and Newton's law of restitution, solved for the normal components.
+  const ex restitution_solution =
+      GiNaC::lsolve(lst{scalar_momentum(d, s.x1n, s.x2n) == scalar_momentum(d, s.v1n, s.v2n),
+                        s.x2n - s.x1n == -e * (s.v2n - s.v1n)},
+                    lst{s.x1n, s.x2n});
+  const ex x1n_e = GiNaC::normal(ex(s.x1n).subs(restitution_solution));
+  const ex x2n_e = GiNaC::normal(ex(s.x2n).subs(restitution_solution));
+  const ex paper_x1n = s.v1n + 2 * s.m2 / (s.m1 + s.m2) * (s.v2n - s.v1n);
+  const ex paper_x2n = s.v2n + 2 * s.m1 / (s.m1 + s.m2) * (s.v1n - s.v2n);
+  const std::vector<std::string> restitution_premises = {"definition.momentum", "definition.restitution"};
+  record.add({
+      .id = "beyond.restitution.elastic_is_the_paper",
+      .statement = "With restitution e = 1, momentum conservation and Newton's law give exactly the "
+                   "paper's selected result.",
+      .method = "lsolve() of m1 x1·n + m2 x2·n = P·n and (x2 − x1)·n = −e (v2 − v1)·n; e = 1 "
+                "substituted; identity after normal()",
+      .comparison = Comparison::identity,
+      .paper_expression = lst{paper_x1n, paper_x2n},
+      .derived_expression = lst{x1n_e.subs(e == 1), x2n_e.subs(e == 1)},
+      .paper_display = lst{paper_x1n, paper_x2n},
+      .derived_display = factored_form(lst{x1n_e, x2n_e}),
+      .note = "The derived display is the general solution for any e.",
+      .depends_on = restitution_premises,
+  });
+  record.add({
+      .id = "beyond.restitution.elastic_conserves_energy",
+      .statement = "With e = 1 the kinetic energy is conserved.",
+      .method = "K of the solved normal components at e = 1; identity after normal()",
+      .comparison = Comparison::identity,
+      .paper_expression = scalar_kinetic(d, s.v1n, s.v2n),
+      .derived_expression = scalar_kinetic(d, x1n_e, x2n_e).subs(e == 1),
+      .paper_display = s.K_parallel,
+      .derived_display = s.K_of_x_parallel,
+      .depends_on = {"beyond.restitution.elastic_is_the_paper", "definition.kinetic_energy"},
+  });
+  const ex reduced_mass = s.m1 * s.m2 / (s.m1 + s.m2);
+  const ex energy_loss = GiNaC::normal(scalar_kinetic(d, s.v1n, s.v2n) - scalar_kinetic(d, x1n_e, x2n_e));
+  const ex printed_loss = numeric(1, 2) * reduced_mass * (1 - e * e) * GiNaC::pow(s.v2n - s.v1n, 2);
+  record.add({
+      .id = "beyond.restitution.energy_loss",
+      .statement = "The kinetic energy lost is ½ μ (1 − e²) ((v2 − v1)·n)², μ = m1 m2/(m1 + m2).",
+      .method = "K before minus K after, the solved normal components; identity after normal()",
+      .comparison = Comparison::identity,
+      .paper_expression = printed_loss,
+      .derived_expression = energy_loss,
+      .paper_display = printed_loss,
+      .derived_display = factored_form(energy_loss),
+      .depends_on = {"beyond.restitution.elastic_is_the_paper", "definition.kinetic_energy"},
+  });
+  const GiNaC::possymbol t("t");
+  record.add({
+      .id = "beyond.restitution.energy_loss_nonnegative",
+      .statement = "For 0 ≤ e ≤ 1 no energy is created: the loss is ≥ 0 (zero at e = 1).",
+      .method = "sign: e = t/(1 + t) with t ≥ 0 covers [0, 1); factor() of the loss is then a product "
+                "of positive factors and even powers; e = 1 is beyond.restitution.elastic_conserves_energy",
+      .comparison = Comparison::nonnegative,
+      .paper_expression = 0,
+      .derived_expression = GiNaC::normal(energy_loss.subs(e == t / (1 + t))),
+      .paper_display = 0,
+      .derived_display = factored_form(energy_loss.subs(e == t / (1 + t))),
+      .depends_on = {"beyond.restitution.energy_loss"},
+  });
+  record.add({
+      .id = "beyond.restitution.perfectly_inelastic",
+      .statement = "With e = 0 the balls leave with equal normal velocities: x1·n = x2·n.",
+      .method = "e = 0 substituted; identity after normal()",
+      .comparison = Comparison::identity,
+      .paper_expression = 0,
+      .derived_expression = (x2n_e - x1n_e).subs(e == 0),
+      .paper_display = 0,
+      .derived_display = factored_form((x2n_e - x1n_e).subs(e == 0)),
+      .depends_on = {"beyond.restitution.elastic_is_the_paper"},
+  });
+  const ex first_coefficient_e = GiNaC::normal(through_speed(x1n_e - s.v1n) / speed);
+  const ex second_coefficient_e = GiNaC::normal(through_speed(x2n_e - s.v2n) / speed);
+  const lst printed_coefficients{(1 + e) * s.m2 / (s.m1 + s.m2), -(1 + e) * s.m1 / (s.m1 + s.m2)};
+  record.add({
+      .id = "beyond.restitution.impulse_coefficients",
+      .statement = "x1·n − v1·n = (1 + e) m2/(m1 + m2) (v2 − v1)·n and x2·n − v2·n = −(1 + e) m1/(m1 + "
+                   "m2) (v2 − v1)·n: the change depends on the velocities only through (v2 − v1)·n.",
+      .method = "v2·n = v1·n + (v2 − v1)·n substituted, divided by (v2 − v1)·n; identity after normal()",
+      .comparison = Comparison::identity,
+      .paper_expression = printed_coefficients,
+      .derived_expression = lst{first_coefficient_e, second_coefficient_e},
+      .paper_display = printed_coefficients,
+      .derived_display = factored_form(lst{first_coefficient_e, second_coefficient_e}),
+      .depends_on = {"beyond.restitution.elastic_is_the_paper"},
+  });
+  // Immovable bodies: the coefficients in the mass ratios ρ1 = m1/m2 and ρ2 = m2/m1.
+  const ex rho1 = s.first_mass_ratio, rho2 = s.second_mass_ratio;
+  const ex first_ratio_form = GiNaC::normal(first_coefficient_e.subs(s.m1 == rho1 * s.m2));
+  const ex second_ratio_form = GiNaC::normal(second_coefficient_e.subs(s.m2 == rho2 * s.m1));
+  const lst printed_ratio_forms{(1 + e) / (1 + rho1), -(1 + e) / (1 + rho2)};
+  record.add({
+      .id = "beyond.immovable.mass_ratio_form",
+      .statement = "In the mass ratios ρ1 = m1/m2 and ρ2 = m2/m1 the coefficients are (1 + e)/(1 + ρ1) "
+                   "and −(1 + e)/(1 + ρ2): no mass appears alone.",
+      .method = "m1 = ρ1 m2 (resp. m2 = ρ2 m1) substituted; normal() cancels the other mass; identity",
+      .comparison = Comparison::identity,
+      .paper_expression = printed_ratio_forms,
+      .derived_expression = lst{first_ratio_form, second_ratio_form},
+      .paper_display = printed_ratio_forms,
+      .derived_display = factored_form(lst{first_ratio_form, second_ratio_form}),
+      .note = "Chosen for floating point: a ratio of two positive masses is finite or +∞ and never "
+              "NaN unless both are infinite; 1 + ρ cannot overflow where m1 + m2 can (1e308 + 1e308), "
+              "and no inverse mass overflows for a subnormal mass. An infinite m2 gives ρ1 = 0 and "
+              "ρ2 = ∞, so the coefficients are exactly 1 + e and 0. Equal masses give ρ = 1 and a "
+              "coefficient of exactly (1 + e)/2.",
+      .depends_on = {"beyond.restitution.impulse_coefficients"},
+  });
+  record.add({
+      .id = "beyond.immovable.equals_mass_form",
+      .statement = "For finite masses the ratio form equals the mass form.",
+      .method = "ρ1 = m1/m2, ρ2 = m2/m1 substituted back; identity after normal()",
+      .comparison = Comparison::identity,
+      .paper_expression = lst{first_coefficient_e, second_coefficient_e},
+      .derived_expression =
+          lst{first_ratio_form.subs(rho1 == s.m1 / s.m2), second_ratio_form.subs(rho2 == s.m2 / s.m1)},
+      .paper_display = factored_form(lst{first_coefficient_e, second_coefficient_e}),
+      .derived_display = printed_ratio_forms,
+      .depends_on = {"beyond.immovable.mass_ratio_form"},
+  });
+  {
+    // m2 = ∞ is ρ1 = 0 and 1/ρ2 = 0: substituted, not a limit.
+    const GiNaC::possymbol inverse_rho2("inverse_rho2");
+    const ex first_at_wall = first_ratio_form.subs(rho1 == 0);
+    const ex second_at_wall =
+        GiNaC::normal(second_ratio_form.subs(rho2 == 1 / inverse_rho2)).subs(inverse_rho2 == 0);
+    const lst changes{(first_at_wall * speed).subs(lst{e == 1, speed == -s.v1n}), second_at_wall};
+    record.add({
+        .id = "beyond.immovable.cushion_without_limit",
+        .statement = "An infinite mass m2 (ρ1 = 0, 1/ρ2 = 0 substituted, no limit taken) with e = 1 and "
+                     "v2 = 0 gives the paper's cushion x1 = v1 − 2 (v1·n) n and leaves ball 2 unmoved.",
+        .method = "substitution into the ratio form; identity after normal()",
+        .comparison = Comparison::identity,
+        .paper_expression = lst{-2 * s.v1n, 0},
+        .derived_expression = changes,
+        .paper_display = lst{-2 * s.v1n, 0},
+        .derived_display = factored_form(changes),
+        .note = "Both masses infinite is not a collision: ρ1 = ∞/∞ is undefined (NaN in floating point).",
+        .depends_on = {"beyond.immovable.mass_ratio_form"},
+    });
+  }
+  // Any direction: d not necessarily unit, n = d/√(d·d) substituted into the unit form (3-D).
+  const Vec direction = component_symbols("d", "d", "", 3);
+  const ex dd = dot(direction, direction);
+  const Vec n_of_d = scale(1 / GiNaC::sqrt(dd), direction);
+  const ex c1 = first_coefficient_e;
+  const auto unit_form = [&](const Vec& n) {
+    return add(space.v1, scale(c1 * dot(subtract(space.v2, space.v1), n), n));
+  };
+  lst from_unit_form;
+  for (const ex& component : unit_form(n_of_d)) from_unit_form.append(GiNaC::normal(component));
+  const auto direction_form = [&](const Vec& dir) {
+    return add(space.v1, scale(c1 * dot(subtract(space.v2, space.v1), dir) / dot(dir, dir), dir));
+  };
+  record.add({
+      .id = "beyond.any_normal.direction_form",
+      .statement = "For a non-zero direction d (not necessarily unit), x1 = v1 + c1 ((v2 − v1)·d)/(d·d) d: "
+                   "no square root is needed.",
+      .method = "n = d/√(d·d) substituted into the unit form, componentwise (3-D); identity after normal()",
+      .comparison = Comparison::identity,
+      .paper_expression = to_lst(direction_form(direction)),
+      .derived_expression = from_unit_form,
+      .paper_display = s.v1 + s.c1 * s.relative_direction_speed * s.direction,
+      .derived_display = s.v1 + s.c1 * s.relative_unit_speed * s.unit_direction,
+      .depends_on = {"beyond.restitution.impulse_coefficients"},
+  });
+  const GiNaC::realsymbol lambda("lambda", "\\lambda");
+  record.add({
+      .id = "beyond.any_normal.scale_invariant",
+      .statement = "Scaling d by any λ ≠ 0 leaves the result unchanged.",
+      .method = "d → λ d substituted; identity after normal(), componentwise (3-D)",
+      .comparison = Comparison::identity,
+      .paper_expression = to_lst(direction_form(direction)),
+      .derived_expression = to_lst(direction_form(scale(lambda, direction))),
+      .paper_display = s.x1,
+      .derived_display = s.x1_scaled_direction,
+      .depends_on = {"beyond.any_normal.direction_form"},
+  });
+  record.add({
+      .id = "beyond.any_normal.unit_direction",
+      .statement = "For |d| = 1 the direction form is the unit form x1 = v1 + c1 ((v2 − v1)·d) d.",
+      .method = std::string("identity after normal()") +
+                " ; d·d = 1 imposed by substituting d_z² → 1 − d_x² − d_y²",
+      .comparison = Comparison::identity,
+      .paper_expression = to_lst(unit_form(direction)),
+      .derived_expression = to_lst(direction_form(direction)),
+      .constraints = lst{unit_normal_relation(direction)},
+      .paper_display = s.v1 + s.c1 * s.relative_unit_speed * s.unit_direction,
+      .derived_display = s.v1 + s.c1 * s.relative_direction_speed * s.direction,
+      .depends_on = {"beyond.any_normal.direction_form"},
+  });
+  // Approaching contacts.
+  record.add({
+      .id = "beyond.approaching.collision_root_separates",
+      .statement = "With n pointing from ball 1 to ball 2 the gap closes iff (v2 − v1)·n < 0. After the "
+                   "collision (x2 − x1)·n = −e (v2 − v1)·n, which is ≥ 0 then: the non-trivial root "
+                   "separates the balls (e > 0) exactly when they approach.",
+      .method = "the solved normal components; identity after normal()",
+      .comparison = Comparison::identity,
+      .paper_expression = -e * (s.v2n - s.v1n),
+      .derived_expression = x2n_e - x1n_e,
+      .paper_display = -e * (s.v2n - s.v1n),
+      .derived_display = factored_form(x2n_e - x1n_e),
+      .depends_on = {"beyond.restitution.elastic_is_the_paper"},
+  });
+  {
+    // x1·n = (P·n − m2 |(v2 − v1)·n|)/(m1 + m2): the collision root when approaching, else v1·n.
+    const ex minus_abs_root =
+        (scalar_momentum(d, s.v1n, s.v2n) - s.m2 * GiNaC::abs(s.v2n - s.v1n)) / (s.m1 + s.m2);
+    const auto in_sign = [&](const ex& x, int sign) {
+      return GiNaC::normal(resolve_absolute_values(through_speed(x), speed, sign));
+    };
+    const lst cases{in_sign(minus_abs_root, -1), in_sign(minus_abs_root, +1)};
+    const lst expected{through_speed(plus_root), s.v1n};
+    record.add({
+        .id = "beyond.approaching.resolve_only_approaching",
+        .statement = "Resolving only approaching contacts is always taking x1·n = (P·n − m2 |(v2 − v1)·n|)/"
+                     "(m1 + m2): the paper's collision root when (v2 − v1)·n < 0, and x1·n = v1·n (nothing "
+                     "happens) when (v2 − v1)·n ≥ 0.",
+        .method = "v2·n = v1·n + s, |s| resolved for s < 0 and s ≥ 0; identity after normal()",
+        .comparison = Comparison::identity,
+        .paper_expression = expected,
+        .derived_expression = cases,
+        .paper_display = lst{plus_root, s.v1n},
+        .derived_display = minus_abs_root,
+        .depends_on = {"beyond.approaching.collision_root_separates", "result.x1_simplified_form"},
+    });
+    // The kernel form for any e: c1 (s − |s|)/2, which is c1 s when s < 0 and 0 when s ≥ 0.
+    const ex approach_speed = (speed - GiNaC::abs(speed)) / 2;
+    const lst kernel_cases{GiNaC::normal(resolve_absolute_values(c1 * approach_speed, speed, -1)),
+                           GiNaC::normal(resolve_absolute_values(c1 * approach_speed, speed, +1))};
+    const lst kernel_expected{through_speed(x1n_e - s.v1n), 0};
+    record.add({
+        .id = "beyond.approaching.kernel_form",
+        .statement = "For any e, x1·n − v1·n = c1 ((v2 − v1)·n − |(v2 − v1)·n|)/2: the collision when the "
+                     "balls approach, zero when they separate (likewise for ball 2).",
+        .method = "|s| resolved for s < 0 and s ≥ 0; identity after normal()",
+        .comparison = Comparison::identity,
+        .paper_expression = kernel_expected,
+        .derived_expression = kernel_cases,
+        .paper_display = lst{s.c1 * s.relative_normal_speed, 0},
+        .derived_display = s.c1 * approach_speed,
+        .depends_on = {"beyond.approaching.collision_root_separates",
+                       "beyond.restitution.impulse_coefficients"},
+    });
+  }
+
+  // ---- The emitted kernels -------------------------------------------------------------------
+  // Every kernel uses the mass-ratio form (beyond.immovable.mass_ratio_form); the paper's elastic one
+  // is the same with e = 1. Coefficients are emitted as magnitudes with the sign on the product, so
+  // swapping the balls swaps the results bit for bit, and equal masses give exactly (1 + e)/2.
+  {
+    const GiNaC::symbol first_ratio("first_mass_ratio"), second_ratio("second_mass_ratio");
+    const GiNaC::symbol first_name("first_impulse_coefficient"), second_name("second_impulse_coefficient");
+    const GiNaC::symbol speed_name("relative_normal_speed"), direction_speed("direction_speed");
+    const GiNaC::symbol approach_name("approach_speed");
+    const GiNaC::symbol v1d("v1d"), v2d("v2d"), ddot("dd");
+    const auto magnitude = [](const ex& coefficient) {
+      return prints_negative(coefficient) ? ex(-coefficient) : coefficient;
+    };
+    const auto with_sign = [](const ex& coefficient, const ex& product) {
+      return prints_negative(coefficient) ? ex(-product) : product;
+    };
+    // The two impulse coefficients for restitution `restitution` (e, or 1), from the ratio forms.
+    const auto coefficient_steps = [&](const ex& restitution) {
+      const ex first = first_ratio_form.subs(lst{e == restitution, rho1 == first_ratio});
+      const ex second = second_ratio_form.subs(lst{e == restitution, rho2 == second_ratio});
+      return std::vector<KernelStep>{{first_ratio, s.m1 / s.m2},
+                                     {second_ratio, s.m2 / s.m1},
+                                     {first_name, magnitude(first)},
+                                     {second_name, magnitude(second)}};
+    };
+    const auto outputs = [&](const ex& by) {
+      return std::vector<ex>{with_sign(first_ratio_form, first_name * by),
+                             with_sign(second_ratio_form, second_name * by)};
+    };
+    const auto steps_then = [](std::vector<KernelStep> first, std::vector<KernelStep> then) {
+      first.insert(first.end(), then.begin(), then.end());
+      return first;
+    };
+    const GiNaC::symbol restitution_parameter = GiNaC::ex_to<GiNaC::symbol>(e);
+    result.kernels.push_back({
+        .name = "elastic_normal_velocity_change",
+        .brief = "The paper's perfectly elastic collision in normal components: the changes x1·n − v1·n and "
+                 "x2·n − v2·n of the two balls' velocities along the unit contact normal n, from the masses "
+                 "and v1·n, v2·n. A mass may be +∞ (an immovable body), not both.",
+        .parameters = {s.m1, s.m2, s.v1n, s.v2n},
+        .steps = steps_then({{speed_name, s.v2n - s.v1n}}, coefficient_steps(1)),
+        .outputs = outputs(speed_name),
+        .claims = {"result.x1_simplified_form", "result.x2_by_symmetry", "kernel.impulse_coefficient_first",
+                   "kernel.impulse_coefficient_second", "beyond.immovable.mass_ratio_form"},
+        .names = {},
+    });
+    result.kernels.push_back({
+        .name = "normal_velocity_change",
+        .brief = "A collision with coefficient of restitution e (0 ≤ e ≤ 1; e = 1 is the paper's): the "
+                 "changes x1·n − v1·n and x2·n − v2·n along the unit contact normal n. A mass may be +∞.",
+        .parameters = {s.m1, s.m2, s.v1n, s.v2n, restitution_parameter},
+        .steps = steps_then({{speed_name, s.v2n - s.v1n}}, coefficient_steps(e)),
+        .outputs = outputs(speed_name),
+        .claims = {"beyond.restitution.impulse_coefficients", "beyond.immovable.mass_ratio_form",
+                   "beyond.restitution.energy_loss"},
+        .names = {{"restitution_factor", 1 + e}},
+    });
+    result.kernels.push_back({
+        .name = "direction_velocity_change",
+        .brief = "The same along a direction d that need not be a unit vector: the multiples of d to add to "
+                 "v1 and v2, from the masses, v1·d, v2·d, d·d and e. d must not be zero.",
+        .parameters = {s.m1, s.m2, v1d, v2d, ddot, restitution_parameter},
+        .steps = steps_then({{direction_speed, (v2d - v1d) / ddot}}, coefficient_steps(e)),
+        .outputs = outputs(direction_speed),
+        .claims = {"beyond.any_normal.direction_form", "beyond.any_normal.scale_invariant",
+                   "beyond.immovable.mass_ratio_form"},
+        .names = {{"restitution_factor", 1 + e}},
+    });
+    result.kernels.push_back({
+        .name = "approaching_direction_velocity_change",
+        .brief = "Like direction_velocity_change with d pointing from ball 1 to ball 2, but only for "
+                 "approaching balls ((v2 − v1)·d < 0); separating or resting contacts are left unchanged "
+                 "(zero change), so rounding can never make a separating pair collide again.",
+        .parameters = {s.m1, s.m2, v1d, v2d, ddot, restitution_parameter},
+        .steps = steps_then({{direction_speed, (v2d - v1d) / ddot},
+                             {approach_name, (direction_speed - GiNaC::abs(direction_speed)) / 2}},
+                            coefficient_steps(e)),
+        .outputs = outputs(approach_name),
+        .claims = {"beyond.approaching.kernel_form", "beyond.approaching.resolve_only_approaching",
+                   "beyond.any_normal.direction_form", "beyond.immovable.mass_ratio_form"},
+        .names = {{"restitution_factor", 1 + e}},
+    });
     const GiNaC::symbol vn("vn");
     result.kernels.push_back({
         .name = "cushion_normal_velocity_change",
@@ -984,41 +1348,6 @@ Derivation derive_paper(const Definitions& definitions) {
     });
   }
 
-  // ---- End to end ----------------------------------------------------------------------------
-  record.section("conservation", "End to end: the result conserves momentum and kinetic energy",
-                 "The final x1, x2 in full symbolic components, substituted into P and K.");
-  for (const Space* sp : {&plane, &space}) {
-    const Vec x1 = sp->after_collision(sp->v1, plus_root), x2 = sp->after_collision(sp->v2, x2n_selected);
-    record.add({
-        .id = "conservation.momentum" + sp->suffix,
-        .paper = "P(v1, v2) = P(x1, x2)",
-        .paper_tex = R"tex(P(v_1, v_2) = P(x_1, x_2))tex",
-        .statement = "P(x1, x2) = P(v1, v2) for the final x1, x2 (" + std::to_string(sp->dimension) + "-D).",
-        .method = "identity after normal(), componentwise",
-        .comparison = Comparison::identity,
-        .paper_expression = to_lst(momentum(d, sp->v1, sp->v2)),
-        .derived_expression = to_lst(momentum(d, x1, x2)),
-        .constraints = lst{sp->unit_normal},
-        .paper_display = s.P_of_v,
-        .derived_display = s.P_of_x,
-        .depends_on = {"result.x1_simplified_form", "result.x2_by_symmetry", "definition.conservation"},
-    });
-    record.add({
-        .id = "conservation.kinetic_energy" + sp->suffix,
-        .paper = "K(v1, v2) = K(x1, x2)",
-        .paper_tex = R"tex(K(v_1, v_2) = K(x_1, x_2))tex",
-        .statement = "K(x1, x2) = K(v1, v2) for the final x1, x2 (" + std::to_string(sp->dimension) +
-                     "-D), given n·n = 1.",
-        .method = std::string("identity after normal()") + unit_normal_method,
-        .comparison = Comparison::identity,
-        .paper_expression = kinetic(d, sp->v1, sp->v2),
-        .derived_expression = kinetic(d, x1, x2),
-        .constraints = lst{sp->unit_normal},
-        .paper_display = s.K_of_v,
-        .derived_display = s.K_of_x,
-        .depends_on = {"result.x1_simplified_form", "result.x2_by_symmetry", "definition.conservation"},
-    });
-  }
   return result;
 }
 

@@ -164,6 +164,11 @@ std::string kernels_header(const Derivation& derivation, const std::string& deri
       << "//\n"
       << "// Derivation fingerprint: " << derivation_fingerprint << " (of audit.json)\n"
       << "#pragma once\n\n"
+      << "#if defined(__FINITE_MATH_ONLY__) && __FINITE_MATH_ONLY__\n"
+      << "// -ffast-math assumes no infinities, but an infinite mass is how an immovable body is modelled.\n"
+      << "#error \"billiards: -ffast-math breaks infinite masses (immovable bodies); add "
+         "-fno-finite-math-only\"\n"
+      << "#endif\n\n"
       << "namespace billiards::kernels {\n\n"
       << doc_comment(
              "The changes x1·n − v1·n and x2·n − v2·n of the two balls' velocities along the contact "
@@ -172,7 +177,12 @@ std::string kernels_header(const Derivation& derivation, const std::string& deri
       << "struct NormalVelocityChange {\n"
       << "  Scalar first;   ///< x1·n − v1·n\n"
       << "  Scalar second;  ///< x2·n − v2·n\n"
-      << "};\n";
+      << "};\n\n"
+      << "/// |x|, constexpr (std::abs is not before C++23).\n"
+      << "template <typename Scalar>\n"
+      << "constexpr Scalar absolute_value(Scalar x) noexcept {\n"
+      << "  return x < Scalar(0) ? -x : x;\n"
+      << "}\n";
   for (const Kernel& kernel : derivation.kernels) {
     const EmittedKernel emitted = emit_kernel(kernel);
     std::string claims;

@@ -22,6 +22,8 @@ std::string ginac_print(const ex& e, Notation notation) {
   return out.str();
 }
 
+std::string scalar_literal(const numeric& n) { return "Scalar(" + ginac_print(n, Notation::text) + ")"; }
+
 // A term of a sum or a product, written as coefficient × factors.
 struct Factor {
   ex base;
@@ -99,7 +101,22 @@ std::vector<Product> sorted_terms(const ex& sum) {
   return terms;
 }
 
+std::string print_sum(const ex& sum, Notation notation);
+
+// In C++ a sum whose terms share a denominator q prints as (q × sum) / Scalar(q): (s - |s|) / 2
+// rather than s / 2 - |s| / 2, one division instead of one per term.
+std::string print_sum_over_common_denominator(const ex& sum) {
+  numeric q = 1;
+  for (const ex& term : sum) q = GiNaC::lcm(q, as_product(term).coefficient.denom());
+  if (q == 1) return "";
+  return "(" + print_sum((sum * q).expand(), Notation::cpp) + ") / " + scalar_literal(q);
+}
+
 std::string print_sum(const ex& sum, Notation notation) {
+  if (notation == Notation::cpp) {
+    const std::string over = print_sum_over_common_denominator(sum);
+    if (!over.empty()) return over;
+  }
   std::string out;
   bool first = true;
   std::vector<Product> terms = sorted_terms(sum);
@@ -131,6 +148,7 @@ std::string parenthesized(const std::string& inner, Notation notation) {
 }
 
 std::string print_any(const ex& e, Notation notation);
+std::string print_base(const ex& base, Notation notation, bool will_take_power);
 
 std::string print_base(const ex& base, Notation notation, bool will_take_power) {
   const std::string inner = print_any(base, notation);
@@ -164,8 +182,6 @@ std::string print_factor(const Factor& f, Notation notation) {
   if (notation == Notation::latex) return base + "^{" + exponent + "}";
   return base + "^" + (f.exponent.is_integer() && f.exponent.is_positive() ? exponent : "(" + exponent + ")");
 }
-
-std::string scalar_literal(const numeric& n) { return "Scalar(" + ginac_print(n, Notation::text) + ")"; }
 
 // True when `code` is one token or one parenthesised group, so that "/ code" divides by all of it.
 bool is_one_group(const std::string& code) {
@@ -250,8 +266,26 @@ std::string print_magnitude(const Product& p, Notation notation) {
   return join(numerator) + "/" + below;
 }
 
+// Whether `sum` has as many negative terms as positive ones, so that either orientation reads alike.
+bool is_balanced(const ex& sum) {
+  const std::vector<Product> terms = sorted_terms(sum);
+  const auto negative =
+      std::count_if(terms.begin(), terms.end(), [](const Product& p) { return p.coefficient.is_negative(); });
+  return 2 * negative == static_cast<std::ptrdiff_t>(terms.size());
+}
+
 std::string print_signed_product(const ex& e, Notation notation) {
-  const Product p = as_product(e);
+  Product p = as_product(e);
+  if (notation == Notation::cpp && p.coefficient.is_negative()) {
+    // In code (v2 - v1) / d reads better than -((v1 - v2) / d): turn one balanced sum of odd power.
+    for (Factor& f : p.factors) {
+      if (GiNaC::is_a<GiNaC::add>(f.base) && is_odd_integer(f.exponent) && is_balanced(f.base)) {
+        f.base = -f.base;
+        p.coefficient = -p.coefficient;
+        break;
+      }
+    }
+  }
   Product magnitude = p;
   magnitude.coefficient = GiNaC::abs(p.coefficient);
   const std::string body = print_magnitude(magnitude, notation);
@@ -282,7 +316,8 @@ std::string print_cpp_leaf(const ex& e) {
   }
   if (GiNaC::is_a<GiNaC::symbol>(e)) return GiNaC::ex_to<GiNaC::symbol>(e).get_name();
   if (GiNaC::is_a<GiNaC::function>(e) && GiNaC::ex_to<GiNaC::function>(e).get_name() == "abs") {
-    return "std::abs(" + print_any(e.op(0), Notation::cpp) + ")";
+    // The emitted header defines absolute_value(): constexpr, unlike std::abs before C++23.
+    return "absolute_value(" + print_any(e.op(0), Notation::cpp) + ")";
   }
   throw std::invalid_argument("cannot emit " + print_any(e, Notation::text) +
                               " as C++: expected numbers, symbols, sums, products and powers");

@@ -5,8 +5,13 @@
 // (AUDIT.md) it implements. They take masses and dot products with the contact normal, so they
 // serve vectors of any dimension and need no Eigen.
 //
-// Derivation fingerprint: fnv1a64:1f1bf94e39b9f72e (of audit.json)
+// Derivation fingerprint: fnv1a64:b433aa0c1e613361 (of audit.json)
 #pragma once
+
+#if defined(__FINITE_MATH_ONLY__) && __FINITE_MATH_ONLY__
+// -ffast-math assumes no infinities, but an infinite mass is how an immovable body is modelled.
+#error "billiards: -ffast-math breaks infinite masses (immovable bodies); add -fno-finite-math-only"
+#endif
 
 namespace billiards::kernels {
 
@@ -18,24 +23,93 @@ struct NormalVelocityChange {
   Scalar second;  ///< x2·n − v2·n
 };
 
+/// |x|, constexpr (std::abs is not before C++23).
+template <typename Scalar>
+constexpr Scalar absolute_value(Scalar x) noexcept {
+  return x < Scalar(0) ? -x : x;
+}
+
 /// The paper's perfectly elastic collision in normal components: the changes x1·n − v1·n and x2·n
 /// − v2·n of the two balls' velocities along the unit contact normal n, from the masses and v1·n,
-/// v2·n.
+/// v2·n. A mass may be +∞ (an immovable body), not both.
 ///
-/// Implements the audit claims `kernel.velocity_change_depends_on_relative_normal_speed`,
+/// Implements the audit claims `result.x1_simplified_form`, `result.x2_by_symmetry`,
 /// `kernel.impulse_coefficient_first`, `kernel.impulse_coefficient_second`,
-/// `result.x1_simplified_form`, `result.x2_by_symmetry`.
+/// `beyond.immovable.mass_ratio_form`.
 ///
-/// Total ops: 9
+/// Total ops: 10
 template <typename Scalar>
 constexpr NormalVelocityChange<Scalar> elastic_normal_velocity_change(Scalar m1, Scalar m2, Scalar v1n,
                                                                       Scalar v2n) noexcept {
   const Scalar relative_normal_speed = v2n - v1n;
-  const Scalar total_mass = m1 + m2;
-  const Scalar first_impulse_coefficient = Scalar(2) * m2 / total_mass;
-  const Scalar second_impulse_coefficient = Scalar(2) * m1 / total_mass;
+  const Scalar first_mass_ratio = m1 / m2;
+  const Scalar second_mass_ratio = m2 / m1;
+  const Scalar first_impulse_coefficient = Scalar(2) / (Scalar(1) + first_mass_ratio);
+  const Scalar second_impulse_coefficient = Scalar(2) / (Scalar(1) + second_mass_ratio);
   return {first_impulse_coefficient * relative_normal_speed,
           -(relative_normal_speed * second_impulse_coefficient)};
+}
+
+/// A collision with coefficient of restitution e (0 ≤ e ≤ 1; e = 1 is the paper's): the changes
+/// x1·n − v1·n and x2·n − v2·n along the unit contact normal n. A mass may be +∞.
+///
+/// Implements the audit claims `beyond.restitution.impulse_coefficients`,
+/// `beyond.immovable.mass_ratio_form`, `beyond.restitution.energy_loss`.
+///
+/// Total ops: 11
+template <typename Scalar>
+constexpr NormalVelocityChange<Scalar> normal_velocity_change(Scalar m1, Scalar m2, Scalar v1n, Scalar v2n,
+                                                              Scalar restitution) noexcept {
+  const Scalar relative_normal_speed = v2n - v1n;
+  const Scalar first_mass_ratio = m1 / m2;
+  const Scalar second_mass_ratio = m2 / m1;
+  const Scalar restitution_factor = Scalar(1) + restitution;
+  const Scalar first_impulse_coefficient = restitution_factor / (Scalar(1) + first_mass_ratio);
+  const Scalar second_impulse_coefficient = restitution_factor / (Scalar(1) + second_mass_ratio);
+  return {first_impulse_coefficient * relative_normal_speed,
+          -(relative_normal_speed * second_impulse_coefficient)};
+}
+
+/// The same along a direction d that need not be a unit vector: the multiples of d to add to v1 and v2,
+/// from the masses, v1·d, v2·d, d·d and e. d must not be zero.
+///
+/// Implements the audit claims `beyond.any_normal.direction_form`, `beyond.any_normal.scale_invariant`,
+/// `beyond.immovable.mass_ratio_form`.
+///
+/// Total ops: 12
+template <typename Scalar>
+constexpr NormalVelocityChange<Scalar> direction_velocity_change(Scalar m1, Scalar m2, Scalar v1d, Scalar v2d,
+                                                                 Scalar dd, Scalar restitution) noexcept {
+  const Scalar direction_speed = (v2d - v1d) / dd;
+  const Scalar first_mass_ratio = m1 / m2;
+  const Scalar second_mass_ratio = m2 / m1;
+  const Scalar restitution_factor = Scalar(1) + restitution;
+  const Scalar first_impulse_coefficient = restitution_factor / (Scalar(1) + first_mass_ratio);
+  const Scalar second_impulse_coefficient = restitution_factor / (Scalar(1) + second_mass_ratio);
+  return {direction_speed * first_impulse_coefficient, -(direction_speed * second_impulse_coefficient)};
+}
+
+/// Like direction_velocity_change with d pointing from ball 1 to ball 2, but only for approaching balls
+/// ((v2 − v1)·d < 0); separating or resting contacts are left unchanged (zero change), so rounding
+/// can never make a separating pair collide again.
+///
+/// Implements the audit claims `beyond.approaching.kernel_form`,
+/// `beyond.approaching.resolve_only_approaching`, `beyond.any_normal.direction_form`,
+/// `beyond.immovable.mass_ratio_form`.
+///
+/// Total ops: 14
+template <typename Scalar>
+constexpr NormalVelocityChange<Scalar> approaching_direction_velocity_change(Scalar m1, Scalar m2, Scalar v1d,
+                                                                             Scalar v2d, Scalar dd,
+                                                                             Scalar restitution) noexcept {
+  const Scalar direction_speed = (v2d - v1d) / dd;
+  const Scalar approach_speed = (direction_speed - absolute_value(direction_speed)) / Scalar(2);
+  const Scalar first_mass_ratio = m1 / m2;
+  const Scalar second_mass_ratio = m2 / m1;
+  const Scalar restitution_factor = Scalar(1) + restitution;
+  const Scalar first_impulse_coefficient = restitution_factor / (Scalar(1) + first_mass_ratio);
+  const Scalar second_impulse_coefficient = restitution_factor / (Scalar(1) + second_mass_ratio);
+  return {approach_speed * first_impulse_coefficient, -(approach_speed * second_impulse_coefficient)};
 }
 
 /// A ball meeting an immovable cushion (the paper's limit m2 → ∞ with v2 = 0): the change x·n −

@@ -56,13 +56,16 @@ constexpr void require_same_vector_type() {
 /// unchanged (frictionless, spinless, instantaneous contact):
 /// \f[
 ///   x_1 = v_1 + \frac{2 m_2}{m_1 + m_2}\,\big((v_2 - v_1)\cdot n\big)\,n, \qquad
-///   x_2 = v_2 - \frac{2 m_1}{m_1 + m_2}\,\big((v_2 - v_1)\cdot n\big)\,n.
+///   x_2 = v_2 - \frac{2 m_1}{m_1 + m_2}\,\big((v_2 - v_1)\cdot n\big)\,n,
 /// \f]
-/// Derived and checked in the audit: claims `result.x1_simplified_form`, `result.x2_by_symmetry`;
-/// computed by the generated kernel kernels::elastic_normal_velocity_change.
+/// computed as \f$2/(1 + m_1/m_2)\f$ and \f$2/(1 + m_2/m_1)\f$ so that no mass overflows and a mass
+/// may be \f$+\infty\f$: an immovable body (a cushion, a wall), which keeps its velocity while the other
+/// ball is reflected. Audit claims `result.x1_simplified_form`, `result.x2_by_symmetry`,
+/// `beyond.immovable.mass_ratio_form`; kernel kernels::elastic_normal_velocity_change.
 ///
-/// Preconditions (not checked): \f$m_1, m_2 > 0\f$ and finite, \f$|n| = 1\f$. The result does not
-/// depend on the sign of \f$n\f$ (bit for bit), and swapping the balls swaps the results.
+/// Preconditions (not checked): \f$m_1, m_2 > 0\f$, each finite or \f$+\infty\f$ but not both infinite
+/// (two infinite masses are not a collision: the result is then NaN); \f$|n| = 1\f$. The result does
+/// not depend on the sign of \f$n\f$ (bit for bit), and swapping the balls swaps the results.
 ///
 /// \param m1, m2 the masses, in the vectors' scalar type
 /// \param v1, v2, n fixed-size Eigen column vectors of one dimension and one scalar type (float or
@@ -80,9 +83,78 @@ template <typename D1, typename D2, typename DN>
   return {v1 + change.first * n, v2 + change.second * n};
 }
 
+/// \brief A collision with a coefficient of restitution \f$e\f$ (beyond the paper).
+///
+/// Momentum is conserved and Newton's law \f$(x_2 - x_1)\cdot n = -e\,(v_2 - v_1)\cdot n\f$ holds:
+/// \f[
+///   x_1 = v_1 + \frac{1 + e}{1 + m_1/m_2}\,\big((v_2 - v_1)\cdot n\big)\,n, \qquad
+///   x_2 = v_2 - \frac{1 + e}{1 + m_2/m_1}\,\big((v_2 - v_1)\cdot n\big)\,n.
+/// \f]
+/// \f$e = 1\f$ is the paper's elastic collision (the same bits as the five-argument call), \f$e = 0\f$
+/// leaves equal normal velocities; the kinetic energy lost is
+/// \f$\tfrac12 \mu (1 - e^2)((v_2 - v_1)\cdot n)^2\f$, \f$\mu = m_1 m_2/(m_1 + m_2)\f$. Audit claims
+/// `beyond.restitution.impulse_coefficients`, `beyond.restitution.energy_loss`,
+/// `beyond.immovable.mass_ratio_form`; kernel kernels::normal_velocity_change.
+/// Preconditions as for the elastic call, and \f$0 \le e \le 1\f$ (not checked).
+template <typename D1, typename D2, typename DN>
+[[nodiscard]] Collision<detail::PlainVector<D1>> collide(typename D1::Scalar m1,
+                                                         const Eigen::MatrixBase<D1>& v1,
+                                                         typename D1::Scalar m2,
+                                                         const Eigen::MatrixBase<D2>& v2,
+                                                         const Eigen::MatrixBase<DN>& n,
+                                                         typename D1::Scalar restitution) noexcept {
+  detail::require_same_vector_type<D1, D2>();
+  detail::require_same_vector_type<D1, DN>();
+  const auto change = kernels::normal_velocity_change(m1, m2, v1.dot(n), v2.dot(n), restitution);
+  return {v1 + change.first * n, v2 + change.second * n};
+}
+
+/// \brief The collision along a direction \f$d\f$ that need not be a unit vector (beyond the paper).
+///
+/// \f[ x_1 = v_1 + \frac{1 + e}{1 + m_1/m_2}\,\frac{(v_2 - v_1)\cdot d}{d\cdot d}\,d \f] (and \f$x_2\f$
+/// alike): the same as collide() with \f$n = d/|d|\f$, without a square root, and unchanged when
+/// \f$d\f$ is scaled. Audit claims `beyond.any_normal.direction_form`,
+/// `beyond.any_normal.scale_invariant`; kernel kernels::direction_velocity_change.
+/// Preconditions (not checked): \f$d \ne 0\f$ (a zero direction gives NaN), masses as for collide().
+template <typename D1, typename D2, typename DD>
+[[nodiscard]] Collision<detail::PlainVector<D1>> collide_along_direction(
+    typename D1::Scalar m1, const Eigen::MatrixBase<D1>& v1, typename D1::Scalar m2,
+    const Eigen::MatrixBase<D2>& v2, const Eigen::MatrixBase<DD>& d,
+    typename D1::Scalar restitution = 1) noexcept {
+  detail::require_same_vector_type<D1, D2>();
+  detail::require_same_vector_type<D1, DD>();
+  const auto change =
+      kernels::direction_velocity_change(m1, m2, v1.dot(d), v2.dot(d), d.squaredNorm(), restitution);
+  return {v1 + change.first * d, v2 + change.second * d};
+}
+
+/// \brief Resolves the contact of two balls centred at \f$p_1, p_2\f$ only if they approach (beyond
+/// the paper).
+///
+/// The direction is \f$d = p_2 - p_1\f$, from ball 1 to ball 2, so the convention cannot be got wrong.
+/// The balls approach iff \f$(v_2 - v_1)\cdot d < 0\f$; then the result is collide_along_direction(),
+/// otherwise the velocities are returned unchanged (bit for bit), so rounding can never make a
+/// separating pair collide again. Audit claims `beyond.approaching.resolve_only_approaching`,
+/// `beyond.approaching.kernel_form`; kernel kernels::approaching_direction_velocity_change.
+/// Preconditions (not checked): \f$p_1 \ne p_2\f$, masses as for collide(), \f$0 \le e \le 1\f$.
+template <typename DP1, typename D1, typename DP2, typename D2>
+[[nodiscard]] Collision<detail::PlainVector<D1>> collide_if_approaching(
+    typename D1::Scalar m1, const Eigen::MatrixBase<DP1>& p1, const Eigen::MatrixBase<D1>& v1,
+    typename D1::Scalar m2, const Eigen::MatrixBase<DP2>& p2, const Eigen::MatrixBase<D2>& v2,
+    typename D1::Scalar restitution = 1) noexcept {
+  detail::require_same_vector_type<D1, D2>();
+  detail::require_same_vector_type<D1, DP1>();
+  detail::require_same_vector_type<D1, DP2>();
+  const detail::PlainVector<D1> d = p2 - p1;
+  const auto change = kernels::approaching_direction_velocity_change(m1, m2, v1.dot(d), v2.dot(d),
+                                                                     d.squaredNorm(), restitution);
+  return {v1 + change.first * d, v2 + change.second * d};
+}
+
 /// \brief A ball bouncing off an immovable cushion: the reflection \f$v - 2 (v\cdot n)\,n = -n v n\f$.
 ///
-/// The paper's limit \f$m_2 \to \infty\f$ with \f$v_2 = 0\f$. Audit claims: `cushion.limit`,
+/// The paper's limit \f$m_2 \to \infty\f$ with \f$v_2 = 0\f$; the same bits as
+/// `collide(m, v, infinity, zero, n).first`. Audit claims: `cushion.limit`,
 /// `cushion.reflection_is_sandwich.3d`; computed by kernels::cushion_normal_velocity_change.
 /// Preconditions (not checked): \f$|n| = 1\f$.
 template <typename DV, typename DN>
