@@ -9,16 +9,19 @@ template NormalVelocityChange<float> elastic_normal_velocity_change<float>(float
                                                                            float) noexcept;
 template NormalVelocityChange<double> elastic_normal_velocity_change<double>(double, double, double,
                                                                              double) noexcept;
-template NormalVelocityChange<float> normal_velocity_change<float>(float, float, float, float, float) noexcept;
-template NormalVelocityChange<double> normal_velocity_change<double>(double, double, double, double, double) noexcept;
+template NormalVelocityChange<float> normal_velocity_change<float>(float, float, float, float,
+                                                                   float) noexcept;
+template NormalVelocityChange<double> normal_velocity_change<double>(double, double, double, double,
+                                                                     double) noexcept;
 template NormalVelocityChange<float> direction_velocity_change<float>(float, float, float, float, float,
                                                                       float) noexcept;
-template NormalVelocityChange<double> direction_velocity_change<double>(double, double, double, double, double,
-                                                                        double) noexcept;
-template NormalVelocityChange<float> approaching_direction_velocity_change<float>(float, float, float, float, float,
-                                                                                  float) noexcept;
-template NormalVelocityChange<double> approaching_direction_velocity_change<double>(double, double, double, double,
-                                                                                    double, double) noexcept;
+template NormalVelocityChange<double> direction_velocity_change<double>(double, double, double, double,
+                                                                        double, double) noexcept;
+template NormalVelocityChange<float> approaching_direction_velocity_change<float>(float, float, float, float,
+                                                                                  float, float) noexcept;
+template NormalVelocityChange<double> approaching_direction_velocity_change<double>(double, double, double,
+                                                                                    double, double,
+                                                                                    double) noexcept;
 template float absolute_value<float>(float) noexcept;
 template double absolute_value<double>(double) noexcept;
 template float cushion_normal_velocity_change<float>(float) noexcept;
@@ -28,7 +31,8 @@ template double cushion_normal_velocity_change<double>(double) noexcept;
 static_assert(elastic_normal_velocity_change(1.0f, 1.0f, 0.0f, 2.0f).first == 2.0f);
 static_assert(elastic_normal_velocity_change(1.0, 1.0, 0.0, 2.0).second == -2.0);
 static_assert(cushion_normal_velocity_change(3.0) == -6.0);
-static_assert(approaching_direction_velocity_change(1.0, 1.0, 0.0, 1.0, 1.0, 1.0).first == 0.0);  // separating
+static_assert(approaching_direction_velocity_change(1.0, 1.0, 0.0, 1.0, 1.0, 1.0).first ==
+              0.0);  // separating
 static_assert(approaching_direction_velocity_change(1.0, 1.0, 0.0, -1.0, 1.0, 1.0).first == -1.0);
 
 }  // namespace billiards::kernels

@@ -29,4 +29,15 @@ Vector<N> reflection(const Vector<N>& v, const Vector<N>& n) {
   return v - 2 * v.dot(n) * n;
 }
 
+// Beyond the paper, typed by hand from the textbook formulas (not from the audit): restitution e,
+// x1 = v1 + (1 + e) m2/(m1 + m2) ((v2 − v1)·n) n, x2 = v2 − (1 + e) m1/(m1 + m2) ((v2 − v1)·n) n, with a
+// non-unit direction d entering as n = d/|d|.
+template <int N>
+Result<N> restitution_collision(long double m1, const Vector<N>& v1, long double m2, const Vector<N>& v2,
+                                const Vector<N>& d, long double e) {
+  const Vector<N> n = d / d.norm();
+  const long double approach = (v2 - v1).dot(n);
+  return {v1 + (1 + e) * m2 / (m1 + m2) * approach * n, v2 - (1 + e) * m1 / (m1 + m2) * approach * n};
+}
+
 }  // namespace paper

@@ -1,0 +1,204 @@
+// Beyond the paper: restitution, immovable bodies, extreme masses, any direction, approaching
+// contacts — each against its own hand-written formula (paper_formula.hpp), for float and double in
+// 2-D and 3-D.
+#include <billiards/collision.hpp>
+
+#include "paper_formula.hpp"
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <limits>
+#include <random>
+
+namespace {
+
+template <typename S, int D>
+struct Config {
+  using Scalar = S;
+  static constexpr int dimension = D;
+  using Vector = Eigen::Matrix<S, D, 1>;
+};
+
+template <typename Vector>
+Vector random_vector(std::mt19937_64& random, double scale = 10) {
+  std::uniform_real_distribution<double> component(-scale, scale);
+  Vector v;
+  for (int i = 0; i < v.size(); ++i) v[i] = static_cast<typename Vector::Scalar>(component(random));
+  return v;
+}
+
+template <typename Vector>
+Vector random_unit(std::mt19937_64& random) {
+  Eigen::Matrix<double, Vector::RowsAtCompileTime, 1> n;
+  do {
+    n = random_vector<decltype(n)>(random, 1);
+  } while (n.norm() < 1e-2);
+  return (n / n.norm()).template cast<typename Vector::Scalar>();
+}
+
+template <typename Vector>
+paper::Vector<Vector::RowsAtCompileTime> exact(const Vector& v) {
+  return v.template cast<long double>();
+}
+
+// Checks x1, x2 against the reference componentwise, within 8 scaled ULP: 8ε(|vᵢ| + c Σⱼ(|v1ⱼ| +
+// |v2ⱼ|)|nⱼ| |nᵢ|) with c the ball's impulse coefficient, plus the smallest subnormal for results that
+// underflow.
+template <typename Vector, int N = Vector::RowsAtCompileTime>
+bool within_scaled_ulp(const Vector& x1, const Vector& x2, const paper::Result<N>& reference, long double m1,
+                       const Vector& v1, long double m2, const Vector& v2, const Vector& d, long double e) {
+  using Scalar = typename Vector::Scalar;
+  const long double epsilon = std::numeric_limits<Scalar>::epsilon();
+  const long double tiny = std::numeric_limits<Scalar>::denorm_min();
+  const paper::Vector<N> n = exact(d) / exact(d).norm();
+  const long double c1 = (1 + e) / (1 + m1 / m2), c2 = (1 + e) / (1 + m2 / m1);
+  const long double spread = (exact(v1).cwiseAbs() + exact(v2).cwiseAbs()).dot(n.cwiseAbs());
+  for (int i = 0; i < N; ++i) {
+    const long double bound1 = 8 * epsilon * (std::fabs(exact(v1)[i]) + c1 * spread * std::fabs(n[i])) + tiny;
+    const long double bound2 = 8 * epsilon * (std::fabs(exact(v2)[i]) + c2 * spread * std::fabs(n[i])) + tiny;
+    if (!(std::fabs(x1[i] - reference.x1[i]) <= bound1) || !(std::fabs(x2[i] - reference.x2[i]) <= bound2)) {
+      return false;
+    }
+  }
+  return true;
+}
+
+}  // namespace
+
+TEMPLATE_TEST_CASE("Beyond the paper", "[runtime][beyond]", (Config<float, 2>), (Config<float, 3>),
+                   (Config<double, 2>), (Config<double, 3>)) {
+  using Scalar = typename TestType::Scalar;
+  using Vector = typename TestType::Vector;
+  constexpr int N = TestType::dimension;
+  const long double epsilon = std::numeric_limits<Scalar>::epsilon();
+  const Scalar infinity = std::numeric_limits<Scalar>::infinity();
+  std::mt19937_64 random(42);
+  std::uniform_real_distribution<double> unit_interval(0, 1), decade(-3, 3);
+  const auto random_mass = [&] { return static_cast<Scalar>(std::pow(10.0, decade(random))); };
+
+  SECTION("restitution: the hand-written formula, separation = e × approach, and the energy lost") {
+    for (int trial = 0; trial < 20000; ++trial) {
+      const Scalar m1 = random_mass(), m2 = random_mass();
+      const Vector v1 = random_vector<Vector>(random), v2 = random_vector<Vector>(random);
+      const Vector n = random_unit<Vector>(random);
+      const Scalar e = trial % 10 == 0   ? Scalar(1)
+                       : trial % 10 == 1 ? Scalar(0)
+                                         : Scalar(unit_interval(random));
+      const auto [x1, x2] = billiards::collide(m1, v1, m2, v2, n, e);
+      const auto reference = paper::restitution_collision<N>(m1, exact(v1), m2, exact(v2), exact(n), e);
+      REQUIRE(within_scaled_ulp(x1, x2, reference, m1, v1, m2, v2, n, e));
+
+      const long double approach = (exact(v2) - exact(v1)).dot(exact(n));
+      const long double separation = (exact(x2) - exact(x1)).dot(exact(n));
+      const long double speeds = exact(v1).norm() + exact(v2).norm();
+      CHECK(std::fabs(separation + e * approach) <= 16 * epsilon * speeds * (1 + e));
+
+      const long double M1 = m1, M2 = m2;
+      const long double before = (M1 * exact(v1).squaredNorm() + M2 * exact(v2).squaredNorm()) / 2;
+      const long double after = (M1 * exact(x1).squaredNorm() + M2 * exact(x2).squaredNorm()) / 2;
+      const long double lost =
+          M1 * M2 / (M1 + M2) * (1 - static_cast<long double>(e) * e) * approach * approach / 2;
+      const long double tolerance = 32 * epsilon * (M1 + M2) * speeds * speeds;
+      CHECK(std::fabs((before - after) - lost) <= tolerance);
+      CHECK(before - after >= -8 * epsilon * before);  // ΔK ≥ −8ε K₀: no energy is created beyond rounding
+    }
+  }
+
+  SECTION("e = 1 is the paper's call, bit for bit") {
+    for (int trial = 0; trial < 1000; ++trial) {
+      const Scalar m1 = random_mass(), m2 = random_mass();
+      const Vector v1 = random_vector<Vector>(random), v2 = random_vector<Vector>(random);
+      const Vector n = random_unit<Vector>(random);
+      const auto [x1, x2] = billiards::collide(m1, v1, m2, v2, n);
+      const auto [y1, y2] = billiards::collide(m1, v1, m2, v2, n, Scalar(1));
+      CHECK((x1.array() == y1.array()).all());
+      CHECK((x2.array() == y2.array()).all());
+    }
+  }
+
+  SECTION("an infinite mass on either side is an exact, finite cushion") {
+    for (int trial = 0; trial < 1000; ++trial) {
+      const Scalar m = random_mass();
+      const Vector v = random_vector<Vector>(random), wall_velocity = Vector::Zero();
+      const Vector n = random_unit<Vector>(random);
+      const Vector reflected = billiards::reflect(v, n);
+      const auto [x1, x2] = billiards::collide(m, v, infinity, wall_velocity, n);
+      CHECK((x1.array() == reflected.array()).all());
+      CHECK((x2.array() == wall_velocity.array()).all());
+      const auto [y1, y2] = billiards::collide(infinity, wall_velocity, m, v, n);
+      CHECK((y2.array() == reflected.array()).all());
+      CHECK((y1.array() == wall_velocity.array()).all());
+      // A moving wall keeps its velocity; the ball leaves with v + 2((w − v)·n) n.
+      const Vector w = random_vector<Vector>(random);
+      const auto [z1, z2] = billiards::collide(m, v, infinity, w, n);
+      CHECK(z1.allFinite());
+      CHECK((z2.array() == w.array()).all());
+      const long double relative = (exact(w) - exact(v)).dot(exact(n));
+      CHECK((exact(z1) - (exact(v) + 2 * relative * exact(n))).cwiseAbs().maxCoeff() <=
+            8 * epsilon * (exact(v).cwiseAbs().maxCoeff() + 2 * (exact(v).norm() + exact(w).norm())));
+    }
+  }
+
+  SECTION("masses 2^k for every exponent of the type, subnormals included, in both orders") {
+    const int lowest = std::numeric_limits<Scalar>::min_exponent - std::numeric_limits<Scalar>::digits;
+    const int highest = std::numeric_limits<Scalar>::max_exponent - 1;
+    const Vector v1 = random_vector<Vector>(random), v2 = random_vector<Vector>(random);
+    const Vector n = random_unit<Vector>(random);
+    long checked = 0;
+    for (int j = lowest; j <= highest; ++j) {
+      for (int k = lowest; k <= highest; k += (std::is_same_v<Scalar, double> ? 3 : 1)) {
+        const Scalar m1 = std::ldexp(Scalar(1), j), m2 = std::ldexp(Scalar(1), k);
+        REQUIRE(m1 > 0);
+        const auto [x1, x2] = billiards::collide(m1, v1, m2, v2, n);
+        REQUIRE(x1.allFinite());
+        REQUIRE(x2.allFinite());
+        const auto reference = paper::collision<N>(m1, exact(v1), m2, exact(v2), exact(n));
+        if (!within_scaled_ulp(x1, x2, reference, m1, v1, m2, v2, n, 1)) {
+          FAIL("masses 2^" << j << " and 2^" << k);
+        }
+        ++checked;
+      }
+    }
+    CHECK(checked > 10000);
+  }
+
+  SECTION("a scaled direction gives the unit normal's result") {
+    for (int trial = 0; trial < 10000; ++trial) {
+      const Scalar m1 = random_mass(), m2 = random_mass();
+      const Vector v1 = random_vector<Vector>(random), v2 = random_vector<Vector>(random);
+      const Vector n = random_unit<Vector>(random);
+      const Scalar scale = static_cast<Scalar>(std::pow(10.0, decade(random))) * (trial % 2 ? 1 : -1);
+      const Vector d = scale * n;
+      const Scalar e = Scalar(unit_interval(random));
+      const auto [x1, x2] = billiards::collide_along_direction(m1, v1, m2, v2, d, e);
+      const auto reference = paper::restitution_collision<N>(m1, exact(v1), m2, exact(v2), exact(d), e);
+      REQUIRE(within_scaled_ulp(x1, x2, reference, m1, v1, m2, v2, d, e));
+    }
+  }
+
+  SECTION("only approaching contacts are resolved; separating ones are left unchanged") {
+    int approaching = 0, separating = 0;
+    for (int trial = 0; trial < 10000; ++trial) {
+      const Scalar m1 = random_mass(), m2 = random_mass();
+      const Vector v1 = random_vector<Vector>(random), v2 = random_vector<Vector>(random);
+      const Vector p1 = random_vector<Vector>(random), p2 = random_vector<Vector>(random);
+      const Scalar e = Scalar(unit_interval(random));
+      const auto [x1, x2] = billiards::collide_if_approaching(m1, p1, v1, m2, p2, v2, e);
+      const Vector d = p2 - p1;
+      if ((exact(v2) - exact(v1)).dot(exact(d)) < 0) {
+        ++approaching;
+        const auto reference = paper::restitution_collision<N>(m1, exact(v1), m2, exact(v2), exact(d), e);
+        REQUIRE(within_scaled_ulp(x1, x2, reference, m1, v1, m2, v2, d, e));
+        CHECK((exact(x2) - exact(x1)).dot(exact(d)) >=
+              -16 * epsilon * (exact(v1).norm() + exact(v2).norm()) * exact(d).norm());
+      } else {
+        ++separating;
+        CHECK((x1.array() == v1.array()).all());
+        CHECK((x2.array() == v2.array()).all());
+      }
+    }
+    CHECK(approaching > 1000);
+    CHECK(separating > 1000);
+  }
+}
