@@ -1,0 +1,211 @@
+// billiards::checked: the same calls as <billiards/collision.hpp>, with every argument validated first.
+// A rejected call throws billiards::invalid_argument naming the argument, its value and what was
+// expected, and returns nothing; an accepted call returns exactly what the unchecked call returns,
+// and that result is finite.
+#pragma once
+
+#include <billiards/collision.hpp>
+
+#include <cmath>
+#include <limits>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <utility>
+
+namespace billiards {
+
+/// Thrown by the checked calls for an argument outside their documented domain.
+class invalid_argument : public std::invalid_argument {
+ public:
+  invalid_argument(std::string function, std::string argument, std::string value, std::string expected)
+      : std::invalid_argument(function + ": " + argument + " is " + value + ", expected " + expected),
+        argument_(std::move(argument)),
+        value_(std::move(value)),
+        expected_(std::move(expected)) {}
+
+  /// The parameter's name, e.g. "m1".
+  [[nodiscard]] const std::string& argument() const noexcept { return argument_; }
+  /// The rejected value as text, e.g. "-1" or "(1, 0, nan)".
+  [[nodiscard]] const std::string& value() const noexcept { return value_; }
+  /// What the argument must be.
+  [[nodiscard]] const std::string& expected() const noexcept { return expected_; }
+
+ private:
+  std::string argument_;
+  std::string value_;
+  std::string expected_;
+};
+
+/// The largest velocity (or position) component the checked calls accept: √(largest finite) / 64,
+/// about 2.1e152 for double and 2.9e17 for float. Within it every dot product, difference and
+/// result the calls compute is finite.
+template <typename Scalar>
+[[nodiscard]] Scalar component_limit() noexcept {
+  return std::sqrt(std::numeric_limits<Scalar>::max()) / Scalar(64);
+}
+
+/// How far n·n may be from 1 where a unit normal is required: 64 ε (7.6e-6 for float, 1.4e-14 for
+/// double), loose enough for a vector normalised in its own precision.
+template <typename Scalar>
+[[nodiscard]] constexpr Scalar unit_length_tolerance() noexcept {
+  return Scalar(64) * std::numeric_limits<Scalar>::epsilon();
+}
+
+namespace detail {
+
+template <typename Scalar>
+std::string to_text(Scalar value) {
+  std::ostringstream out;
+  out.precision(std::numeric_limits<Scalar>::max_digits10);
+  out << value;
+  return out.str();
+}
+
+template <typename Derived>
+std::string to_text(const Eigen::MatrixBase<Derived>& v) {
+  std::string text = "(";
+  for (Eigen::Index i = 0; i < v.size(); ++i) text += (i ? ", " : "") + to_text(v[i]);
+  return text + ")";
+}
+
+template <typename Scalar>
+void check_mass(const char* function, const char* name, Scalar m) {
+  if (!(m > 0)) {  // also rejects NaN
+    throw invalid_argument(function, name, to_text(m),
+                           "a positive mass (finite, or +infinity for an immovable body)");
+  }
+}
+
+template <typename Scalar>
+void check_masses(const char* function, Scalar m1, Scalar m2) {
+  check_mass(function, "m1", m1);
+  check_mass(function, "m2", m2);
+  if (std::isinf(m1) && std::isinf(m2)) {
+    throw invalid_argument(function, "m2", to_text(m2),
+                           "a finite mass when m1 is infinite (two immovable bodies do not collide)");
+  }
+}
+
+template <typename Derived>
+void check_components(const char* function, const char* name, const Eigen::MatrixBase<Derived>& v,
+                      const char* what) {
+  using Scalar = typename Derived::Scalar;
+  const Scalar limit = component_limit<Scalar>();
+  for (Eigen::Index i = 0; i < v.size(); ++i) {
+    if (!(std::fabs(v[i]) <= limit)) {  // also rejects NaN and infinities
+      throw invalid_argument(
+          function, name, to_text(v),
+          std::string(what) + " with finite components of magnitude at most " + to_text(limit));
+    }
+  }
+}
+
+template <typename Derived>
+void check_direction(const char* function, const char* name, const Eigen::MatrixBase<Derived>& d) {
+  using Scalar = typename Derived::Scalar;
+  check_components(function, name, d, "a direction");
+  const Scalar length_squared = d.squaredNorm();
+  if (!(length_squared >= std::numeric_limits<Scalar>::min())) {
+    throw invalid_argument(function, name, to_text(d),
+                           "a non-zero direction (d·d at least the smallest normal number)");
+  }
+}
+
+template <typename Derived>
+void check_unit_normal(const char* function, const char* name, const Eigen::MatrixBase<Derived>& n) {
+  using Scalar = typename Derived::Scalar;
+  check_components(function, name, n, "a unit normal");
+  if (!(std::fabs(n.squaredNorm() - Scalar(1)) <= unit_length_tolerance<Scalar>())) {
+    throw invalid_argument(function, name, to_text(n),
+                           "a unit vector (|n·n − 1| ≤ " + to_text(unit_length_tolerance<Scalar>()) + ")");
+  }
+}
+
+template <typename Scalar>
+void check_restitution(const char* function, Scalar e) {
+  if (!(e >= 0 && e <= 1)) {
+    throw invalid_argument(function, "restitution", to_text(e), "a coefficient of restitution in [0, 1]");
+  }
+}
+
+}  // namespace detail
+
+/// The validated calls. Each checks every argument, then returns the unchecked call's result.
+namespace checked {
+
+/// billiards::collide (the paper's elastic collision, or with restitution e), validated: masses
+/// positive (one may be +∞, not both), velocity components finite with magnitude at most
+/// component_limit(), n a unit vector within unit_length_tolerance(), 0 ≤ e ≤ 1.
+/// \throws billiards::invalid_argument naming the first argument out of its domain
+template <typename D1, typename D2, typename DN>
+[[nodiscard]] Collision<detail::PlainVector<D1>> collide(
+    typename D1::Scalar m1, const Eigen::MatrixBase<D1>& v1, typename D1::Scalar m2,
+    const Eigen::MatrixBase<D2>& v2, const Eigen::MatrixBase<DN>& n, typename D1::Scalar restitution = 1) {
+  detail::require_same_vector_type<D1, D2>();
+  detail::require_same_vector_type<D1, DN>();
+  constexpr const char* function = "billiards::checked::collide";
+  detail::check_masses(function, m1, m2);
+  detail::check_components(function, "v1", v1, "a velocity");
+  detail::check_components(function, "v2", v2, "a velocity");
+  detail::check_unit_normal(function, "n", n);
+  detail::check_restitution(function, restitution);
+  return restitution == 1 ? billiards::collide(m1, v1, m2, v2, n)
+                          : billiards::collide(m1, v1, m2, v2, n, restitution);
+}
+
+/// billiards::collide_along_direction, validated: as checked::collide, with d any non-zero
+/// direction whose components are finite and at most component_limit() in magnitude.
+template <typename D1, typename D2, typename DD>
+[[nodiscard]] Collision<detail::PlainVector<D1>> collide_along_direction(
+    typename D1::Scalar m1, const Eigen::MatrixBase<D1>& v1, typename D1::Scalar m2,
+    const Eigen::MatrixBase<D2>& v2, const Eigen::MatrixBase<DD>& d, typename D1::Scalar restitution = 1) {
+  detail::require_same_vector_type<D1, D2>();
+  detail::require_same_vector_type<D1, DD>();
+  constexpr const char* function = "billiards::checked::collide_along_direction";
+  detail::check_masses(function, m1, m2);
+  detail::check_components(function, "v1", v1, "a velocity");
+  detail::check_components(function, "v2", v2, "a velocity");
+  detail::check_direction(function, "d", d);
+  detail::check_restitution(function, restitution);
+  return billiards::collide_along_direction(m1, v1, m2, v2, d, restitution);
+}
+
+/// billiards::collide_if_approaching, validated: as checked::collide_along_direction, with the
+/// centres p1, p2 finite, at most component_limit() in magnitude, and distinct.
+template <typename DP1, typename D1, typename DP2, typename D2>
+[[nodiscard]] Collision<detail::PlainVector<D1>> collide_if_approaching(
+    typename D1::Scalar m1, const Eigen::MatrixBase<DP1>& p1, const Eigen::MatrixBase<D1>& v1,
+    typename D1::Scalar m2, const Eigen::MatrixBase<DP2>& p2, const Eigen::MatrixBase<D2>& v2,
+    typename D1::Scalar restitution = 1) {
+  detail::require_same_vector_type<D1, D2>();
+  detail::require_same_vector_type<D1, DP1>();
+  detail::require_same_vector_type<D1, DP2>();
+  constexpr const char* function = "billiards::checked::collide_if_approaching";
+  detail::check_masses(function, m1, m2);
+  detail::check_components(function, "p1", p1, "a position");
+  detail::check_components(function, "v1", v1, "a velocity");
+  detail::check_components(function, "p2", p2, "a position");
+  detail::check_components(function, "v2", v2, "a velocity");
+  const detail::PlainVector<D1> d = p2 - p1;
+  if (!(d.squaredNorm() >= std::numeric_limits<typename D1::Scalar>::min())) {
+    throw invalid_argument(function, "p2", detail::to_text(p2),
+                           "a centre distinct from p1 = " + detail::to_text(p1));
+  }
+  detail::check_restitution(function, restitution);
+  return billiards::collide_if_approaching(m1, p1, v1, m2, p2, v2, restitution);
+}
+
+/// billiards::reflect, validated: v's components finite and at most component_limit(), n a unit vector.
+template <typename DV, typename DN>
+[[nodiscard]] detail::PlainVector<DV> reflect(const Eigen::MatrixBase<DV>& v,
+                                              const Eigen::MatrixBase<DN>& n) {
+  detail::require_same_vector_type<DV, DN>();
+  constexpr const char* function = "billiards::checked::reflect";
+  detail::check_components(function, "v", v, "a velocity");
+  detail::check_unit_normal(function, "n", n);
+  return billiards::reflect(v, n);
+}
+
+}  // namespace checked
+}  // namespace billiards
