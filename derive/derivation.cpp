@@ -1286,7 +1286,6 @@ Derivation derive_paper(const Definitions& definitions) {
       first.insert(first.end(), then.begin(), then.end());
       return first;
     };
-    const GiNaC::symbol restitution_parameter = GiNaC::ex_to<GiNaC::symbol>(e);
     result.kernels.push_back({
         .name = "elastic_normal_velocity_change",
         .brief = "The paper's perfectly elastic collision in normal components: the changes x1·n − v1·n and "
@@ -1303,7 +1302,7 @@ Derivation derive_paper(const Definitions& definitions) {
         .name = "normal_velocity_change",
         .brief = "A collision with coefficient of restitution e (0 ≤ e ≤ 1; e = 1 is the paper's): the "
                  "changes x1·n − v1·n and x2·n − v2·n along the unit contact normal n. A mass may be +∞.",
-        .parameters = {s.m1, s.m2, s.v1n, s.v2n, restitution_parameter},
+        .parameters = {s.m1, s.m2, s.v1n, s.v2n, e},
         .steps = steps_then({{speed_name, s.v2n - s.v1n}}, coefficient_steps(e)),
         .outputs = outputs(speed_name),
         .claims = {"beyond.restitution.impulse_coefficients", "beyond.immovable.mass_ratio_form",
@@ -1314,7 +1313,7 @@ Derivation derive_paper(const Definitions& definitions) {
         .name = "direction_velocity_change",
         .brief = "The same along a direction d that need not be a unit vector: the multiples of d to add to "
                  "v1 and v2, from the masses, v1·d, v2·d, d·d and e. d must not be zero.",
-        .parameters = {s.m1, s.m2, v1d, v2d, ddot, restitution_parameter},
+        .parameters = {s.m1, s.m2, v1d, v2d, ddot, e},
         .steps = steps_then({{direction_speed, (v2d - v1d) / ddot}}, coefficient_steps(e)),
         .outputs = outputs(direction_speed),
         .claims = {"beyond.any_normal.direction_form", "beyond.any_normal.scale_invariant",
@@ -1326,7 +1325,7 @@ Derivation derive_paper(const Definitions& definitions) {
         .brief = "Like direction_velocity_change with d pointing from ball 1 to ball 2, but only for "
                  "approaching balls ((v2 − v1)·d < 0); separating or resting contacts are left unchanged "
                  "(zero change), so rounding can never make a separating pair collide again.",
-        .parameters = {s.m1, s.m2, v1d, v2d, ddot, restitution_parameter},
+        .parameters = {s.m1, s.m2, v1d, v2d, ddot, e},
         .steps = steps_then({{direction_speed, (v2d - v1d) / ddot},
                              {approach_name, (direction_speed - GiNaC::abs(direction_speed)) / 2}},
                             coefficient_steps(e)),

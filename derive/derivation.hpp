@@ -53,7 +53,7 @@ struct KernelStep {
 struct Kernel {
   std::string name;                       ///< the C++ function name
   std::string brief;                      ///< one sentence for its comment
-  std::vector<GiNaC::symbol> parameters;  ///< in signature order; their names are the C++ names
+  std::vector<GiNaC::ex> parameters;  ///< symbols, in signature order; their names are the C++ names
   std::vector<KernelStep> steps;
   std::vector<GiNaC::ex> outputs;  ///< one: returns Scalar; two: NormalVelocityChange {first, second}
   std::vector<std::string> claims;

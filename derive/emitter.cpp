@@ -188,8 +188,9 @@ std::string kernels_header(const Derivation& derivation, const std::string& deri
     std::string claims;
     for (const std::string& id : kernel.claims) claims += (claims.empty() ? "" : ", ") + ("`" + id + "`");
     std::vector<std::string> parameters;
-    for (const GiNaC::symbol& parameter : kernel.parameters)
-      parameters.push_back("Scalar " + parameter.get_name());
+    for (const ex& parameter : kernel.parameters) {
+      parameters.push_back("Scalar " + GiNaC::ex_to<GiNaC::symbol>(parameter).get_name());
+    }
     const std::string result = kernel.outputs.size() == 1 ? "Scalar" : "NormalVelocityChange<Scalar>";
     out << "\n"
         << doc_comment(kernel.brief) << "///\n"
