@@ -1126,6 +1126,24 @@ Derivation derive_paper(const Definitions& definitions) {
       .derived_display = printed_ratio_forms,
       .depends_on = {"beyond.immovable.mass_ratio_form"},
   });
+  const ex first_small_mass_form = (1 + e) * (speed * s.m2) / (s.m1 + s.m2);
+  const ex second_small_mass_form = -(1 + e) * (speed * s.m1) / (s.m1 + s.m2);
+  record.add({
+      .id = "beyond.immovable.small_mass_form",
+      .statement = "x1·n − v1·n = (1 + e)((v2 − v1)·n m2)/(m1 + m2), and likewise for ball 2: the mass form "
+                   "with the speed multiplied in first.",
+      .method = "the coefficients times (v2 − v1)·n; identity after normal()",
+      .comparison = Comparison::identity,
+      .paper_expression = lst{first_small_mass_form, second_small_mass_form},
+      .derived_expression = lst{first_coefficient_e * speed, second_coefficient_e * speed},
+      .paper_display = lst{first_small_mass_form, second_small_mass_form},
+      .derived_display = factored_form(lst{first_coefficient_e * speed, second_coefficient_e * speed}),
+      .note = "The kernels use it where the ratio form would lose the answer: when ρ1 = m1/m2 exceeds "
+              "1/(smallest normal number), (1 + e)/(1 + ρ1) overflows to 0 or rounds into the subnormal "
+              "range although the change itself may be a normal number (m1 = 1e308, m2 = 0.07). There "
+              "m2 < 4, so (v2 − v1)·n m2 cannot overflow, and m1 + m2 rounds to m1 without overflowing.",
+      .depends_on = {"beyond.restitution.impulse_coefficients"},
+  });
   {
     // m2 = ∞ is ρ1 = 0 and 1/ρ2 = 0: substituted, not a limit.
     const GiNaC::possymbol inverse_rho2("inverse_rho2");
@@ -1269,18 +1287,35 @@ Derivation derive_paper(const Definitions& definitions) {
     const auto with_sign = [](const ex& coefficient, const ex& product) {
       return prints_negative(coefficient) ? ex(-product) : product;
     };
-    // The two impulse coefficients for restitution `restitution` (e, or 1), from the ratio forms.
-    const auto coefficient_steps = [&](const ex& restitution) {
+    // The two changes for restitution `restitution` (e, or 1) and speed `by`: the ratio form, or the
+    // small-mass form where the ratio exceeds 1/(smallest normal) (beyond.immovable.small_mass_form).
+    const GiNaC::symbol ratio_limit("ratio_limit"), smallest_normal("std::numeric_limits<Scalar>::min()");
+    const GiNaC::symbol first_change("first_change"), second_change("second_change");
+    const GiNaC::symbol speed_per_mass("impulse_per_total_mass");
+    const auto change_steps = [&](const ex& restitution, const ex& by) {
       const ex first = first_ratio_form.subs(lst{e == restitution, rho1 == first_ratio});
       const ex second = second_ratio_form.subs(lst{e == restitution, rho2 == second_ratio});
-      return std::vector<KernelStep>{{first_ratio, s.m1 / s.m2},
-                                     {second_ratio, s.m2 / s.m1},
-                                     {first_name, magnitude(first)},
-                                     {second_name, magnitude(second)}};
+      // In the small-mass form (1 + e) s/(m1 + m2) is computed first and the light mass multiplies it
+      // last: the product then rounds once, even into the subnormal range, where m2 (1 + e) s would
+      // round at every step; and (1 + e) s/(m1 + m2) cannot overflow there (m1 ≥ m2/(smallest
+      // normal) ≥ 2 ε).
+      const ex per_mass = (1 + restitution) * by / (s.m1 + s.m2);
+      const ex in_per_mass = speed == speed_per_mass * (s.m1 + s.m2) / (1 + restitution);
+      const ex first_small = first_small_mass_form.subs(e == restitution).subs(in_per_mass);
+      const ex second_small = second_small_mass_form.subs(e == restitution).subs(in_per_mass);
+      return std::vector<KernelStep>{
+          {first_ratio, s.m1 / s.m2},
+          {second_ratio, s.m2 / s.m1},
+          {ratio_limit, 1 / smallest_normal},
+          {first_name, magnitude(first)},
+          {second_name, magnitude(second)},
+          {speed_per_mass, per_mass},
+          {first_change, first_name * by, first_ratio > ratio_limit, magnitude(first_small)},
+          {second_change, second_name * by, second_ratio > ratio_limit, magnitude(second_small)}};
     };
-    const auto outputs = [&](const ex& by) {
-      return std::vector<ex>{with_sign(first_ratio_form, first_name * by),
-                             with_sign(second_ratio_form, second_name * by)};
+    const auto outputs = [&] {
+      return std::vector<ex>{with_sign(first_ratio_form, first_change),
+                             with_sign(second_ratio_form, second_change)};
     };
     const auto steps_then = [](std::vector<KernelStep> first, std::vector<KernelStep> then) {
       first.insert(first.end(), then.begin(), then.end());
@@ -1292,33 +1327,34 @@ Derivation derive_paper(const Definitions& definitions) {
                  "x2·n − v2·n of the two balls' velocities along the unit contact normal n, from the masses "
                  "and v1·n, v2·n. A mass may be +∞ (an immovable body), not both.",
         .parameters = {s.m1, s.m2, s.v1n, s.v2n},
-        .steps = steps_then({{speed_name, s.v2n - s.v1n}}, coefficient_steps(1)),
-        .outputs = outputs(speed_name),
+        .steps = steps_then({{speed_name, s.v2n - s.v1n}}, change_steps(1, speed_name)),
+        .outputs = outputs(),
         .claims = {"result.x1_simplified_form", "result.x2_by_symmetry", "kernel.impulse_coefficient_first",
-                   "kernel.impulse_coefficient_second", "beyond.immovable.mass_ratio_form"},
-        .names = {},
+                   "kernel.impulse_coefficient_second", "beyond.immovable.mass_ratio_form",
+                   "beyond.immovable.small_mass_form"},
+        .names = {{"total_mass", s.m1 + s.m2}},
     });
     result.kernels.push_back({
         .name = "normal_velocity_change",
         .brief = "A collision with coefficient of restitution e (0 ≤ e ≤ 1; e = 1 is the paper's): the "
                  "changes x1·n − v1·n and x2·n − v2·n along the unit contact normal n. A mass may be +∞.",
         .parameters = {s.m1, s.m2, s.v1n, s.v2n, e},
-        .steps = steps_then({{speed_name, s.v2n - s.v1n}}, coefficient_steps(e)),
-        .outputs = outputs(speed_name),
+        .steps = steps_then({{speed_name, s.v2n - s.v1n}}, change_steps(e, speed_name)),
+        .outputs = outputs(),
         .claims = {"beyond.restitution.impulse_coefficients", "beyond.immovable.mass_ratio_form",
                    "beyond.restitution.energy_loss"},
-        .names = {{"restitution_factor", 1 + e}},
+        .names = {{"restitution_factor", 1 + e}, {"total_mass", s.m1 + s.m2}},
     });
     result.kernels.push_back({
         .name = "direction_velocity_change",
         .brief = "The same along a direction d that need not be a unit vector: the multiples of d to add to "
                  "v1 and v2, from the masses, v1·d, v2·d, d·d and e. d must not be zero.",
         .parameters = {s.m1, s.m2, v1d, v2d, ddot, e},
-        .steps = steps_then({{direction_speed, (v2d - v1d) / ddot}}, coefficient_steps(e)),
-        .outputs = outputs(direction_speed),
+        .steps = steps_then({{direction_speed, (v2d - v1d) / ddot}}, change_steps(e, direction_speed)),
+        .outputs = outputs(),
         .claims = {"beyond.any_normal.direction_form", "beyond.any_normal.scale_invariant",
-                   "beyond.immovable.mass_ratio_form"},
-        .names = {{"restitution_factor", 1 + e}},
+                   "beyond.immovable.mass_ratio_form", "beyond.immovable.small_mass_form"},
+        .names = {{"restitution_factor", 1 + e}, {"total_mass", s.m1 + s.m2}},
     });
     result.kernels.push_back({
         .name = "approaching_direction_velocity_change",
@@ -1328,11 +1364,12 @@ Derivation derive_paper(const Definitions& definitions) {
         .parameters = {s.m1, s.m2, v1d, v2d, ddot, e},
         .steps = steps_then({{direction_speed, (v2d - v1d) / ddot},
                              {approach_name, (direction_speed - GiNaC::abs(direction_speed)) / 2}},
-                            coefficient_steps(e)),
-        .outputs = outputs(approach_name),
+                            change_steps(e, approach_name)),
+        .outputs = outputs(),
         .claims = {"beyond.approaching.kernel_form", "beyond.approaching.resolve_only_approaching",
-                   "beyond.any_normal.direction_form", "beyond.immovable.mass_ratio_form"},
-        .names = {{"restitution_factor", 1 + e}},
+                   "beyond.any_normal.direction_form", "beyond.immovable.mass_ratio_form",
+                   "beyond.immovable.small_mass_form"},
+        .names = {{"restitution_factor", 1 + e}, {"total_mass", s.m1 + s.m2}},
     });
     const GiNaC::symbol vn("vn");
     result.kernels.push_back({

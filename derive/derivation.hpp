@@ -46,6 +46,10 @@ struct SelectedResult {
 struct KernelStep {
   GiNaC::symbol name;    ///< its C++ name, as a symbol later steps and outputs use
   GiNaC::ex expression;  ///< derived, in the kernel's parameters and earlier steps
+  /// When set, `const Scalar name = condition ? alternative : expression;`: the same quantity in
+  /// another form (an identity the audit checks), for inputs where `expression` would lose it.
+  GiNaC::ex condition = GiNaC::fail();
+  GiNaC::ex alternative = GiNaC::fail();
 };
 
 /// A scalar kernel for the emitter: derived expressions in its parameters (masses and normal

@@ -3,6 +3,7 @@
 #include "audit.hpp"
 #include "printer.hpp"
 
+#include <algorithm>
 #include <cstdint>
 #include <cstdio>
 #include <map>
@@ -75,12 +76,24 @@ std::string wrapped_list(const std::string& head, const std::vector<std::string>
   return out;
 }
 
+// `head` and a conditional expression `code` ending in ";", broken like clang-format when too long: at
+// " ? " and " : ".
+// `if (condition) statement` on one line when it fits (the project's clang-format style allows short
+// ifs without else), otherwise the statement on the next line, indented.
+std::string short_if(const std::string& head, const std::string& statement) {
+  if (2 + head.size() + 1 + statement.size() <= column_limit) return head + " " + statement;
+  return head + "\n    " + statement;
+}
+
 }  // namespace
 
 EmittedKernel emit_kernel(const Kernel& kernel) {
   // Hoist every sum that occurs more than once across the steps and outputs.
   std::vector<ex> sums;
-  for (const KernelStep& step : kernel.steps) collect_sums(step.expression, sums);
+  for (const KernelStep& step : kernel.steps) {
+    collect_sums(step.expression, sums);
+    if (!GiNaC::is_a<GiNaC::fail>(step.alternative)) collect_sums(step.alternative, sums);
+  }
   for (const ex& output : kernel.outputs) collect_sums(output, sums);
   std::vector<std::pair<GiNaC::symbol, ex>> hoisted;
   std::map<std::string, int> occurrences;
@@ -120,7 +133,20 @@ EmittedKernel emit_kernel(const Kernel& kernel) {
     for (const KernelStep& step : kernel.steps) {
       const ex expression = step.expression.subs(replace);
       place_hoisted_used_by(expression);
-      define(step.name.get_name(), expression);
+      if (GiNaC::is_a<GiNaC::fail>(step.condition)) {
+        define(step.name.get_name(), expression);
+        continue;
+      }
+      const ex alternative = step.alternative.subs(replace);
+      place_hoisted_used_by(alternative);
+      const std::string name = step.name.get_name();
+      const std::string usual = print(expression, Notation::cpp), other = print(alternative, Notation::cpp);
+      const std::string condition =
+          print(step.condition.lhs(), Notation::cpp) + " > " + print(step.condition.rhs(), Notation::cpp);
+      // The usual form, replaced where it would lose the answer: one comparison more than both forms.
+      emitted.operation_count += 1 + count_operations(usual) + count_operations(other);
+      emitted.body.push_back("Scalar " + name + " = " + usual + ";");
+      emitted.body.push_back(short_if("if (" + condition + ")", name + " = " + other + ";"));
     }
     std::vector<std::string> results;
     for (const ex& output : kernel.outputs) {
@@ -164,6 +190,7 @@ std::string kernels_header(const Derivation& derivation, const std::string& deri
       << "//\n"
       << "// Derivation fingerprint: " << derivation_fingerprint << " (of audit.json)\n"
       << "#pragma once\n\n"
+      << "#include <limits>\n\n"
       << "#if defined(__FINITE_MATH_ONLY__) && __FINITE_MATH_ONLY__\n"
       << "// -ffast-math assumes no infinities, but an infinite mass is how an immovable body is modelled.\n"
       << "#error \"billiards: -ffast-math breaks infinite masses (immovable bodies); add "

@@ -5,8 +5,10 @@
 // (AUDIT.md) it implements. They take masses and dot products with the contact normal, so they
 // serve vectors of any dimension and need no Eigen.
 //
-// Derivation fingerprint: fnv1a64:b433aa0c1e613361 (of audit.json)
+// Derivation fingerprint: fnv1a64:29cd405845938ed2 (of audit.json)
 #pragma once
+
+#include <limits>
 
 #if defined(__FINITE_MATH_ONLY__) && __FINITE_MATH_ONLY__
 // -ffast-math assumes no infinities, but an infinite mass is how an immovable body is modelled.
@@ -35,19 +37,24 @@ constexpr Scalar absolute_value(Scalar x) noexcept {
 ///
 /// Implements the audit claims `result.x1_simplified_form`, `result.x2_by_symmetry`,
 /// `kernel.impulse_coefficient_first`, `kernel.impulse_coefficient_second`,
-/// `beyond.immovable.mass_ratio_form`.
+/// `beyond.immovable.mass_ratio_form`, `beyond.immovable.small_mass_form`.
 ///
-/// Total ops: 10
+/// Total ops: 18
 template <typename Scalar>
 constexpr NormalVelocityChange<Scalar> elastic_normal_velocity_change(Scalar m1, Scalar m2, Scalar v1n,
                                                                       Scalar v2n) noexcept {
   const Scalar relative_normal_speed = v2n - v1n;
   const Scalar first_mass_ratio = m1 / m2;
   const Scalar second_mass_ratio = m2 / m1;
+  const Scalar ratio_limit = Scalar(1) / std::numeric_limits<Scalar>::min();
   const Scalar first_impulse_coefficient = Scalar(2) / (Scalar(1) + first_mass_ratio);
   const Scalar second_impulse_coefficient = Scalar(2) / (Scalar(1) + second_mass_ratio);
-  return {first_impulse_coefficient * relative_normal_speed,
-          -(relative_normal_speed * second_impulse_coefficient)};
+  const Scalar impulse_per_total_mass = Scalar(2) * relative_normal_speed / (m1 + m2);
+  Scalar first_change = first_impulse_coefficient * relative_normal_speed;
+  if (first_mass_ratio > ratio_limit) first_change = impulse_per_total_mass * m2;
+  Scalar second_change = relative_normal_speed * second_impulse_coefficient;
+  if (second_mass_ratio > ratio_limit) second_change = impulse_per_total_mass * m1;
+  return {first_change, -second_change};
 }
 
 /// A collision with coefficient of restitution e (0 ≤ e ≤ 1; e = 1 is the paper's): the changes
@@ -56,37 +63,48 @@ constexpr NormalVelocityChange<Scalar> elastic_normal_velocity_change(Scalar m1,
 /// Implements the audit claims `beyond.restitution.impulse_coefficients`,
 /// `beyond.immovable.mass_ratio_form`, `beyond.restitution.energy_loss`.
 ///
-/// Total ops: 11
+/// Total ops: 19
 template <typename Scalar>
 constexpr NormalVelocityChange<Scalar> normal_velocity_change(Scalar m1, Scalar m2, Scalar v1n, Scalar v2n,
                                                               Scalar restitution) noexcept {
   const Scalar relative_normal_speed = v2n - v1n;
   const Scalar first_mass_ratio = m1 / m2;
   const Scalar second_mass_ratio = m2 / m1;
+  const Scalar ratio_limit = Scalar(1) / std::numeric_limits<Scalar>::min();
   const Scalar restitution_factor = Scalar(1) + restitution;
   const Scalar first_impulse_coefficient = restitution_factor / (Scalar(1) + first_mass_ratio);
   const Scalar second_impulse_coefficient = restitution_factor / (Scalar(1) + second_mass_ratio);
-  return {first_impulse_coefficient * relative_normal_speed,
-          -(relative_normal_speed * second_impulse_coefficient)};
+  const Scalar impulse_per_total_mass = relative_normal_speed * restitution_factor / (m1 + m2);
+  Scalar first_change = first_impulse_coefficient * relative_normal_speed;
+  if (first_mass_ratio > ratio_limit) first_change = impulse_per_total_mass * m2;
+  Scalar second_change = relative_normal_speed * second_impulse_coefficient;
+  if (second_mass_ratio > ratio_limit) second_change = impulse_per_total_mass * m1;
+  return {first_change, -second_change};
 }
 
 /// The same along a direction d that need not be a unit vector: the multiples of d to add to v1 and v2,
 /// from the masses, v1·d, v2·d, d·d and e. d must not be zero.
 ///
 /// Implements the audit claims `beyond.any_normal.direction_form`, `beyond.any_normal.scale_invariant`,
-/// `beyond.immovable.mass_ratio_form`.
+/// `beyond.immovable.mass_ratio_form`, `beyond.immovable.small_mass_form`.
 ///
-/// Total ops: 12
+/// Total ops: 20
 template <typename Scalar>
 constexpr NormalVelocityChange<Scalar> direction_velocity_change(Scalar m1, Scalar m2, Scalar v1d, Scalar v2d,
                                                                  Scalar dd, Scalar restitution) noexcept {
   const Scalar direction_speed = (v2d - v1d) / dd;
   const Scalar first_mass_ratio = m1 / m2;
   const Scalar second_mass_ratio = m2 / m1;
+  const Scalar ratio_limit = Scalar(1) / std::numeric_limits<Scalar>::min();
   const Scalar restitution_factor = Scalar(1) + restitution;
   const Scalar first_impulse_coefficient = restitution_factor / (Scalar(1) + first_mass_ratio);
   const Scalar second_impulse_coefficient = restitution_factor / (Scalar(1) + second_mass_ratio);
-  return {direction_speed * first_impulse_coefficient, -(direction_speed * second_impulse_coefficient)};
+  const Scalar impulse_per_total_mass = direction_speed * restitution_factor / (m1 + m2);
+  Scalar first_change = direction_speed * first_impulse_coefficient;
+  if (first_mass_ratio > ratio_limit) first_change = impulse_per_total_mass * m2;
+  Scalar second_change = direction_speed * second_impulse_coefficient;
+  if (second_mass_ratio > ratio_limit) second_change = impulse_per_total_mass * m1;
+  return {first_change, -second_change};
 }
 
 /// Like direction_velocity_change with d pointing from ball 1 to ball 2, but only for approaching balls
@@ -95,9 +113,9 @@ constexpr NormalVelocityChange<Scalar> direction_velocity_change(Scalar m1, Scal
 ///
 /// Implements the audit claims `beyond.approaching.kernel_form`,
 /// `beyond.approaching.resolve_only_approaching`, `beyond.any_normal.direction_form`,
-/// `beyond.immovable.mass_ratio_form`.
+/// `beyond.immovable.mass_ratio_form`, `beyond.immovable.small_mass_form`.
 ///
-/// Total ops: 14
+/// Total ops: 22
 template <typename Scalar>
 constexpr NormalVelocityChange<Scalar> approaching_direction_velocity_change(Scalar m1, Scalar m2, Scalar v1d,
                                                                              Scalar v2d, Scalar dd,
@@ -106,10 +124,16 @@ constexpr NormalVelocityChange<Scalar> approaching_direction_velocity_change(Sca
   const Scalar approach_speed = (direction_speed - absolute_value(direction_speed)) / Scalar(2);
   const Scalar first_mass_ratio = m1 / m2;
   const Scalar second_mass_ratio = m2 / m1;
+  const Scalar ratio_limit = Scalar(1) / std::numeric_limits<Scalar>::min();
   const Scalar restitution_factor = Scalar(1) + restitution;
   const Scalar first_impulse_coefficient = restitution_factor / (Scalar(1) + first_mass_ratio);
   const Scalar second_impulse_coefficient = restitution_factor / (Scalar(1) + second_mass_ratio);
-  return {approach_speed * first_impulse_coefficient, -(approach_speed * second_impulse_coefficient)};
+  const Scalar impulse_per_total_mass = approach_speed * restitution_factor / (m1 + m2);
+  Scalar first_change = approach_speed * first_impulse_coefficient;
+  if (first_mass_ratio > ratio_limit) first_change = impulse_per_total_mass * m2;
+  Scalar second_change = approach_speed * second_impulse_coefficient;
+  if (second_mass_ratio > ratio_limit) second_change = impulse_per_total_mass * m1;
+  return {first_change, -second_change};
 }
 
 /// A ball meeting an immovable cushion (the paper's limit m2 → ∞ with v2 = 0): the change x·n −

@@ -166,6 +166,23 @@ TEMPLATE_TEST_CASE("Beyond the paper", "[runtime][beyond]", (Config<float, 2>), 
     CHECK(checked > 10000);
   }
 
+  SECTION("a heavy ball at rest still moves by its exact tiny amount") {
+    // m1 at the top of the range, m2 small: ρ1 = m1/m2 overflows, yet x1 = (1 + e) s m2/(m1 + m2) n is
+    // a normal number that momentum conservation needs.
+    const Scalar heavy = std::numeric_limits<Scalar>::max(), light = Scalar(0.0686);
+    const Vector n = Vector::Unit(0);
+    const Vector v1 = Vector::Zero(), v2 = Vector::Unit(0) * Scalar(-1e9);
+    for (const Scalar e : {Scalar(1), Scalar(0.5), Scalar(0)}) {
+      const auto [x1, x2] = billiards::collide(heavy, v1, light, v2, n, e);
+      const long double expected = (1 + static_cast<long double>(e)) * -1e9L * light / heavy;
+      REQUIRE(expected != 0);
+      CHECK(std::fabs((x1[0] - expected) / expected) <= 8 * epsilon);
+      const auto [y2, y1] = billiards::collide(light, v2, heavy, v1, n, e);  // the other order
+      CHECK(y1 == x1);
+      CHECK(y2 == x2);
+    }
+  }
+
   SECTION("a scaled direction gives the unit normal's result") {
     for (int trial = 0; trial < 10000; ++trial) {
       const Scalar m1 = random_mass(), m2 = random_mass();
