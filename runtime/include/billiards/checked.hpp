@@ -103,13 +103,8 @@ void check_components(const char* function, const char* name, const Eigen::Matri
 
 template <typename Derived>
 void check_direction(const char* function, const char* name, const Eigen::MatrixBase<Derived>& d) {
-  using Scalar = typename Derived::Scalar;
   check_components(function, name, d, "a direction");
-  const Scalar length_squared = d.squaredNorm();
-  if (!(length_squared >= std::numeric_limits<Scalar>::min())) {
-    throw invalid_argument(function, name, to_text(d),
-                           "a non-zero direction (d·d at least the smallest normal number)");
-  }
+  if (d.isZero(0)) throw invalid_argument(function, name, to_text(d), "a non-zero direction");
 }
 
 template <typename Derived>
@@ -187,8 +182,7 @@ template <typename DP1, typename D1, typename DP2, typename D2>
   detail::check_components(function, "v1", v1, "a velocity");
   detail::check_components(function, "p2", p2, "a position");
   detail::check_components(function, "v2", v2, "a velocity");
-  const detail::PlainVector<D1> d = p2 - p1;
-  if (!(d.squaredNorm() >= std::numeric_limits<typename D1::Scalar>::min())) {
+  if ((p2 - p1).isZero(0)) {
     throw invalid_argument(function, "p2", detail::to_text(p2),
                            "a centre distinct from p1 = " + detail::to_text(p1));
   }

@@ -7,6 +7,7 @@
 
 #include <Eigen/Core>
 
+#include <cmath>
 #include <type_traits>
 
 namespace billiards {
@@ -45,6 +46,22 @@ constexpr void require_same_vector_type() {
                 "billiards: all vectors must have the same scalar type (all float or all double)");
   static_assert(static_cast<int>(A::RowsAtCompileTime) == static_cast<int>(B::RowsAtCompileTime),
                 "billiards: all vectors must have the same dimension");
+}
+
+/// `d` scaled by the power of two that puts its largest component in [0.5, 1). The scaling is exact
+/// (short of components 2^p times smaller than the largest, which change by less than rounding) and a
+/// collision along d does not depend on |d| (audit claim `beyond.any_normal.scale_invariant`); it keeps
+/// the multiple of d that a kernel returns from underflowing or overflowing because |d| is extreme.
+template <typename Derived>
+PlainVector<Derived> power_of_two_scaled(const Eigen::MatrixBase<Derived>& d) noexcept {
+  using Scalar = typename Derived::Scalar;
+  PlainVector<Derived> scaled = d;
+  const Scalar largest = scaled.cwiseAbs().maxCoeff();
+  if (!(largest > 0) || !std::isfinite(largest)) return scaled;  // zero or not finite: the caller's contract
+  int exponent = 0;
+  static_cast<void>(std::frexp(largest, &exponent));
+  for (Eigen::Index i = 0; i < scaled.size(); ++i) scaled[i] = std::ldexp(scaled[i], -exponent);
+  return scaled;
 }
 
 }  // namespace detail
@@ -115,7 +132,9 @@ template <typename D1, typename D2, typename DN>
 /// alike): the same as collide() with \f$n = d/|d|\f$, without a square root, and unchanged when
 /// \f$d\f$ is scaled. Audit claims `beyond.any_normal.direction_form`,
 /// `beyond.any_normal.scale_invariant`; kernel kernels::direction_velocity_change.
-/// Preconditions (not checked): \f$d \ne 0\f$ (a zero direction gives NaN), masses as for collide().
+/// d is first scaled by a power of two (exact), so its length never matters.
+/// Preconditions (not checked): \f$d \ne 0\f$ and finite (a zero direction gives NaN), masses as
+/// for collide().
 template <typename D1, typename D2, typename DD>
 [[nodiscard]] Collision<detail::PlainVector<D1>> collide_along_direction(
     typename D1::Scalar m1, const Eigen::MatrixBase<D1>& v1, typename D1::Scalar m2,
@@ -123,9 +142,10 @@ template <typename D1, typename D2, typename DD>
     typename D1::Scalar restitution = 1) noexcept {
   detail::require_same_vector_type<D1, D2>();
   detail::require_same_vector_type<D1, DD>();
-  const auto change =
-      kernels::direction_velocity_change(m1, m2, v1.dot(d), v2.dot(d), d.squaredNorm(), restitution);
-  return {v1 + change.first * d, v2 + change.second * d};
+  const detail::PlainVector<D1> direction = detail::power_of_two_scaled(d);
+  const auto change = kernels::direction_velocity_change(m1, m2, v1.dot(direction), v2.dot(direction),
+                                                         direction.squaredNorm(), restitution);
+  return {v1 + change.first * direction, v2 + change.second * direction};
 }
 
 /// \brief Resolves the contact of two balls centred at \f$p_1, p_2\f$ only if they approach (beyond
@@ -145,7 +165,7 @@ template <typename DP1, typename D1, typename DP2, typename D2>
   detail::require_same_vector_type<D1, D2>();
   detail::require_same_vector_type<D1, DP1>();
   detail::require_same_vector_type<D1, DP2>();
-  const detail::PlainVector<D1> d = p2 - p1;
+  const detail::PlainVector<D1> d = detail::power_of_two_scaled(p2 - p1);
   const auto change = kernels::approaching_direction_velocity_change(m1, m2, v1.dot(d), v2.dot(d),
                                                                      d.squaredNorm(), restitution);
   return {v1 + change.first * d, v2 + change.second * d};
