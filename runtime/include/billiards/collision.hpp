@@ -7,7 +7,9 @@
 
 #include <Eigen/Core>
 
+#include <cassert>
 #include <cmath>
+#include <limits>
 #include <type_traits>
 
 namespace billiards {
@@ -64,6 +66,25 @@ PlainVector<Derived> power_of_two_scaled(const Eigen::MatrixBase<Derived>& d) no
   return scaled;
 }
 
+// Debug-build checks of the unchecked calls' preconditions (assert: compiled out with NDEBUG). The
+// checked API (billiards/checked.hpp) validates the same and throws instead.
+template <typename Scalar>
+void assert_masses([[maybe_unused]] Scalar m1, [[maybe_unused]] Scalar m2) noexcept {
+  assert(m1 > 0 && m2 > 0 && "billiards: masses must be positive (finite or +infinity)");
+  assert(!(std::isinf(m1) && std::isinf(m2)) && "billiards: two infinite masses do not collide");
+}
+
+template <typename Derived>
+void assert_unit([[maybe_unused]] const Eigen::MatrixBase<Derived>& n) noexcept {
+  assert(std::fabs(n.squaredNorm() - 1) <= 64 * std::numeric_limits<typename Derived::Scalar>::epsilon() &&
+         "billiards: the contact normal must be a unit vector");
+}
+
+template <typename Scalar>
+void assert_restitution([[maybe_unused]] Scalar e) noexcept {
+  assert(e >= 0 && e <= 1 && "billiards: restitution must lie in [0, 1]");
+}
+
 }  // namespace detail
 
 /// \brief The paper's perfectly elastic collision of two balls.
@@ -96,6 +117,8 @@ template <typename D1, typename D2, typename DN>
                                                          const Eigen::MatrixBase<DN>& n) noexcept {
   detail::require_same_vector_type<D1, D2>();
   detail::require_same_vector_type<D1, DN>();
+  detail::assert_masses(m1, m2);
+  detail::assert_unit(n);
   const auto change = kernels::elastic_normal_velocity_change(m1, m2, v1.dot(n), v2.dot(n));
   return {v1 + change.first * n, v2 + change.second * n};
 }
@@ -122,6 +145,9 @@ template <typename D1, typename D2, typename DN>
                                                          typename D1::Scalar restitution) noexcept {
   detail::require_same_vector_type<D1, D2>();
   detail::require_same_vector_type<D1, DN>();
+  detail::assert_masses(m1, m2);
+  detail::assert_unit(n);
+  detail::assert_restitution(restitution);
   const auto change = kernels::normal_velocity_change(m1, m2, v1.dot(n), v2.dot(n), restitution);
   return {v1 + change.first * n, v2 + change.second * n};
 }
@@ -142,6 +168,8 @@ template <typename D1, typename D2, typename DD>
     typename D1::Scalar restitution = 1) noexcept {
   detail::require_same_vector_type<D1, D2>();
   detail::require_same_vector_type<D1, DD>();
+  detail::assert_masses(m1, m2);
+  detail::assert_restitution(restitution);
   const detail::PlainVector<D1> direction = detail::power_of_two_scaled(d);
   const auto change = kernels::direction_velocity_change(m1, m2, v1.dot(direction), v2.dot(direction),
                                                          direction.squaredNorm(), restitution);
@@ -165,6 +193,8 @@ template <typename DP1, typename D1, typename DP2, typename D2>
   detail::require_same_vector_type<D1, D2>();
   detail::require_same_vector_type<D1, DP1>();
   detail::require_same_vector_type<D1, DP2>();
+  detail::assert_masses(m1, m2);
+  detail::assert_restitution(restitution);
   const detail::PlainVector<D1> d = detail::power_of_two_scaled(p2 - p1);
   const auto change = kernels::approaching_direction_velocity_change(m1, m2, v1.dot(d), v2.dot(d),
                                                                      d.squaredNorm(), restitution);
@@ -181,6 +211,7 @@ template <typename DV, typename DN>
 [[nodiscard]] detail::PlainVector<DV> reflect(const Eigen::MatrixBase<DV>& v,
                                               const Eigen::MatrixBase<DN>& n) noexcept {
   detail::require_same_vector_type<DV, DN>();
+  detail::assert_unit(n);
   return v + kernels::cushion_normal_velocity_change(v.dot(n)) * n;
 }
 
