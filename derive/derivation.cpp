@@ -1289,7 +1289,7 @@ Derivation derive_paper(const Definitions& definitions) {
     };
     // The two changes for restitution `restitution` (e, or 1) and speed `by`: the ratio form, or the
     // small-mass form where the ratio exceeds 1/(smallest normal) (beyond.immovable.small_mass_form).
-    const GiNaC::symbol ratio_limit("ratio_limit"), smallest_normal("std::numeric_limits<Scalar>::min()");
+    const GiNaC::symbol ratio_limit("ratio_limit"), smallest_normal("smallest_normal<Scalar>()");
     const GiNaC::symbol first_change("first_change"), second_change("second_change");
     const GiNaC::symbol speed_per_mass("impulse_per_total_mass");
     const auto change_steps = [&](const ex& restitution, const ex& by) {

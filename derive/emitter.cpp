@@ -85,6 +85,17 @@ std::string short_if(const std::string& head, const std::string& statement) {
   return head + "\n    " + statement;
 }
 
+// A function signature as clang-format lays it out in the project's style: on one line when it fits,
+// else broken after the "(" with the parameters on a line of their own, indented by 4.
+std::string signature(const std::string& head, const std::vector<std::string>& parameters,
+                      const std::string& tail) {
+  std::string list;
+  for (const std::string& parameter : parameters) list += (list.empty() ? "" : ", ") + parameter;
+  if (head.size() + list.size() + tail.size() <= column_limit) return head + list + tail;
+  if (4 + list.size() + tail.size() <= column_limit) return head + "\n    " + list + tail;
+  return wrapped_list(head, parameters, tail);
+}
+
 }  // namespace
 
 EmittedKernel emit_kernel(const Kernel& kernel) {
@@ -196,6 +207,16 @@ std::string kernels_header(const Derivation& derivation, const std::string& deri
       << "#error \"billiards: -ffast-math breaks infinite masses (immovable bodies); add "
          "-fno-finite-math-only\"\n"
       << "#endif\n\n"
+      << "// BILLIARDS_HOST_DEVICE marks every kernel __host__ __device__ under a CUDA compiler, so the "
+         "same\n"
+      << "// derived code runs in CUDA kernels; elsewhere it is empty. Define it first to override.\n"
+      << "#ifndef BILLIARDS_HOST_DEVICE\n"
+      << "#if defined(__CUDACC__)\n"
+      << "#define BILLIARDS_HOST_DEVICE __host__ __device__\n"
+      << "#else\n"
+      << "#define BILLIARDS_HOST_DEVICE\n"
+      << "#endif\n"
+      << "#endif\n\n"
       << "namespace billiards::kernels {\n\n"
       << doc_comment(
              "The changes x1·n − v1·n and x2·n − v2·n of the two balls' velocities along the contact "
@@ -207,8 +228,21 @@ std::string kernels_header(const Derivation& derivation, const std::string& deri
       << "};\n\n"
       << "/// |x|, constexpr (std::abs is not before C++23).\n"
       << "template <typename Scalar>\n"
-      << "constexpr Scalar absolute_value(Scalar x) noexcept {\n"
+      << "BILLIARDS_HOST_DEVICE constexpr Scalar absolute_value(Scalar x) noexcept {\n"
       << "  return x < Scalar(0) ? -x : x;\n"
+      << "}\n\n"
+      << "/// The smallest positive normal number, std::numeric_limits<Scalar>::min(), also in device code.\n"
+      << "template <typename Scalar>\n"
+      << "BILLIARDS_HOST_DEVICE constexpr Scalar smallest_normal() noexcept {\n"
+      << "  return std::numeric_limits<Scalar>::min();\n"
+      << "}\n"
+      << "template <>\n"
+      << "BILLIARDS_HOST_DEVICE constexpr float smallest_normal<float>() noexcept {\n"
+      << "  return 0x1p-126f;\n"
+      << "}\n"
+      << "template <>\n"
+      << "BILLIARDS_HOST_DEVICE constexpr double smallest_normal<double>() noexcept {\n"
+      << "  return 0x1p-1022;\n"
       << "}\n";
   for (const Kernel& kernel : derivation.kernels) {
     const EmittedKernel emitted = emit_kernel(kernel);
@@ -224,7 +258,9 @@ std::string kernels_header(const Derivation& derivation, const std::string& deri
         << doc_comment("Implements the audit claims " + claims + ".") << "///\n"
         << "/// Total ops: " << emitted.operation_count << "\n"
         << "template <typename Scalar>\n"
-        << wrapped_list("constexpr " + result + " " + kernel.name + "(", parameters, ") noexcept {") << "\n";
+        << signature("BILLIARDS_HOST_DEVICE constexpr " + result + " " + kernel.name + "(", parameters,
+                     ") noexcept {")
+        << "\n";
     for (const std::string& line : emitted.body) out << "  " << line << "\n";
     out << "}\n";
   }

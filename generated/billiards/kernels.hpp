@@ -15,6 +15,16 @@
 #error "billiards: -ffast-math breaks infinite masses (immovable bodies); add -fno-finite-math-only"
 #endif
 
+// BILLIARDS_HOST_DEVICE marks every kernel __host__ __device__ under a CUDA compiler, so the same
+// derived code runs in CUDA kernels; elsewhere it is empty. Define it first to override.
+#ifndef BILLIARDS_HOST_DEVICE
+#if defined(__CUDACC__)
+#define BILLIARDS_HOST_DEVICE __host__ __device__
+#else
+#define BILLIARDS_HOST_DEVICE
+#endif
+#endif
+
 namespace billiards::kernels {
 
 /// The changes x1·n − v1·n and x2·n − v2·n of the two balls' velocities along the contact
@@ -27,8 +37,22 @@ struct NormalVelocityChange {
 
 /// |x|, constexpr (std::abs is not before C++23).
 template <typename Scalar>
-constexpr Scalar absolute_value(Scalar x) noexcept {
+BILLIARDS_HOST_DEVICE constexpr Scalar absolute_value(Scalar x) noexcept {
   return x < Scalar(0) ? -x : x;
+}
+
+/// The smallest positive normal number, std::numeric_limits<Scalar>::min(), also in device code.
+template <typename Scalar>
+BILLIARDS_HOST_DEVICE constexpr Scalar smallest_normal() noexcept {
+  return std::numeric_limits<Scalar>::min();
+}
+template <>
+BILLIARDS_HOST_DEVICE constexpr float smallest_normal<float>() noexcept {
+  return 0x1p-126f;
+}
+template <>
+BILLIARDS_HOST_DEVICE constexpr double smallest_normal<double>() noexcept {
+  return 0x1p-1022;
 }
 
 /// The paper's perfectly elastic collision in normal components: the changes x1·n − v1·n and x2·n
@@ -41,12 +65,12 @@ constexpr Scalar absolute_value(Scalar x) noexcept {
 ///
 /// Total ops: 18
 template <typename Scalar>
-constexpr NormalVelocityChange<Scalar> elastic_normal_velocity_change(Scalar m1, Scalar m2, Scalar v1n,
-                                                                      Scalar v2n) noexcept {
+BILLIARDS_HOST_DEVICE constexpr NormalVelocityChange<Scalar> elastic_normal_velocity_change(
+    Scalar m1, Scalar m2, Scalar v1n, Scalar v2n) noexcept {
   const Scalar relative_normal_speed = v2n - v1n;
   const Scalar first_mass_ratio = m1 / m2;
   const Scalar second_mass_ratio = m2 / m1;
-  const Scalar ratio_limit = Scalar(1) / std::numeric_limits<Scalar>::min();
+  const Scalar ratio_limit = Scalar(1) / smallest_normal<Scalar>();
   const Scalar first_impulse_coefficient = Scalar(2) / (Scalar(1) + first_mass_ratio);
   const Scalar second_impulse_coefficient = Scalar(2) / (Scalar(1) + second_mass_ratio);
   const Scalar impulse_per_total_mass = Scalar(2) * relative_normal_speed / (m1 + m2);
@@ -65,12 +89,12 @@ constexpr NormalVelocityChange<Scalar> elastic_normal_velocity_change(Scalar m1,
 ///
 /// Total ops: 19
 template <typename Scalar>
-constexpr NormalVelocityChange<Scalar> normal_velocity_change(Scalar m1, Scalar m2, Scalar v1n, Scalar v2n,
-                                                              Scalar restitution) noexcept {
+BILLIARDS_HOST_DEVICE constexpr NormalVelocityChange<Scalar> normal_velocity_change(
+    Scalar m1, Scalar m2, Scalar v1n, Scalar v2n, Scalar restitution) noexcept {
   const Scalar relative_normal_speed = v2n - v1n;
   const Scalar first_mass_ratio = m1 / m2;
   const Scalar second_mass_ratio = m2 / m1;
-  const Scalar ratio_limit = Scalar(1) / std::numeric_limits<Scalar>::min();
+  const Scalar ratio_limit = Scalar(1) / smallest_normal<Scalar>();
   const Scalar restitution_factor = Scalar(1) + restitution;
   const Scalar first_impulse_coefficient = restitution_factor / (Scalar(1) + first_mass_ratio);
   const Scalar second_impulse_coefficient = restitution_factor / (Scalar(1) + second_mass_ratio);
@@ -90,12 +114,12 @@ constexpr NormalVelocityChange<Scalar> normal_velocity_change(Scalar m1, Scalar 
 ///
 /// Total ops: 20
 template <typename Scalar>
-constexpr NormalVelocityChange<Scalar> direction_velocity_change(Scalar m1, Scalar m2, Scalar v1d, Scalar v2d,
-                                                                 Scalar dd, Scalar restitution) noexcept {
+BILLIARDS_HOST_DEVICE constexpr NormalVelocityChange<Scalar> direction_velocity_change(
+    Scalar m1, Scalar m2, Scalar v1d, Scalar v2d, Scalar dd, Scalar restitution) noexcept {
   const Scalar direction_speed = (v2d - v1d) / dd;
   const Scalar first_mass_ratio = m1 / m2;
   const Scalar second_mass_ratio = m2 / m1;
-  const Scalar ratio_limit = Scalar(1) / std::numeric_limits<Scalar>::min();
+  const Scalar ratio_limit = Scalar(1) / smallest_normal<Scalar>();
   const Scalar restitution_factor = Scalar(1) + restitution;
   const Scalar first_impulse_coefficient = restitution_factor / (Scalar(1) + first_mass_ratio);
   const Scalar second_impulse_coefficient = restitution_factor / (Scalar(1) + second_mass_ratio);
@@ -117,14 +141,13 @@ constexpr NormalVelocityChange<Scalar> direction_velocity_change(Scalar m1, Scal
 ///
 /// Total ops: 22
 template <typename Scalar>
-constexpr NormalVelocityChange<Scalar> approaching_direction_velocity_change(Scalar m1, Scalar m2, Scalar v1d,
-                                                                             Scalar v2d, Scalar dd,
-                                                                             Scalar restitution) noexcept {
+BILLIARDS_HOST_DEVICE constexpr NormalVelocityChange<Scalar> approaching_direction_velocity_change(
+    Scalar m1, Scalar m2, Scalar v1d, Scalar v2d, Scalar dd, Scalar restitution) noexcept {
   const Scalar direction_speed = (v2d - v1d) / dd;
   const Scalar approach_speed = (direction_speed - absolute_value(direction_speed)) / Scalar(2);
   const Scalar first_mass_ratio = m1 / m2;
   const Scalar second_mass_ratio = m2 / m1;
-  const Scalar ratio_limit = Scalar(1) / std::numeric_limits<Scalar>::min();
+  const Scalar ratio_limit = Scalar(1) / smallest_normal<Scalar>();
   const Scalar restitution_factor = Scalar(1) + restitution;
   const Scalar first_impulse_coefficient = restitution_factor / (Scalar(1) + first_mass_ratio);
   const Scalar second_impulse_coefficient = restitution_factor / (Scalar(1) + second_mass_ratio);
@@ -143,7 +166,7 @@ constexpr NormalVelocityChange<Scalar> approaching_direction_velocity_change(Sca
 ///
 /// Total ops: 2
 template <typename Scalar>
-constexpr Scalar cushion_normal_velocity_change(Scalar vn) noexcept {
+BILLIARDS_HOST_DEVICE constexpr Scalar cushion_normal_velocity_change(Scalar vn) noexcept {
   return -(Scalar(2) * vn);
 }
 

@@ -85,8 +85,9 @@ TEST_CASE("Kernels", "[derive][emitter]") {
     CHECK(contains(header, "Derivation fingerprint: fnv1a64:0123456789abcdef"));
     CHECK(contains(header, "`some.claim`"));
     CHECK(contains(header, "/// Total ops: 9"));
-    CHECK(
-        contains(header, "template <typename Scalar>\nconstexpr NormalVelocityChange<Scalar> test_kernel("));
+    CHECK(contains(header,
+                   "template <typename Scalar>\nBILLIARDS_HOST_DEVICE constexpr NormalVelocityChange<Scalar> "
+                   "test_kernel("));
     CHECK(contains(header, ") noexcept {"));
     CHECK_FALSE(contains(header, "pow("));
     // Only the standard library: no Eigen, nothing of ours.

@@ -3,6 +3,8 @@
 // float code would promote and fail).
 #include <billiards/kernels.hpp>
 
+#include <limits>
+
 namespace billiards::kernels {
 
 template NormalVelocityChange<float> elastic_normal_velocity_change<float>(float, float, float,
@@ -24,6 +26,8 @@ template NormalVelocityChange<double> approaching_direction_velocity_change<doub
                                                                                     double) noexcept;
 template float absolute_value<float>(float) noexcept;
 template double absolute_value<double>(double) noexcept;
+static_assert(smallest_normal<float>() == std::numeric_limits<float>::min());
+static_assert(smallest_normal<double>() == std::numeric_limits<double>::min());
 template float cushion_normal_velocity_change<float>(float) noexcept;
 template double cushion_normal_velocity_change<double>(double) noexcept;
 
