@@ -4,6 +4,7 @@
 #include <billiards/collision.hpp>
 
 #include "paper_formula.hpp"
+#include "test_support.hpp"
 
 #include <catch2/catch.hpp>
 
@@ -13,12 +14,8 @@
 
 namespace {
 
-template <typename S, int D>
-struct Config {
-  using Scalar = S;
-  static constexpr int dimension = D;
-  using Vector = Eigen::Matrix<S, D, 1>;
-};
+using billiards_test::Config;
+using billiards_test::exact;
 
 template <typename Vector>
 Vector random_vector(std::mt19937_64& random, double scale = 10) {
@@ -35,11 +32,6 @@ Vector random_unit(std::mt19937_64& random) {
     n = random_vector<decltype(n)>(random, 1);
   } while (n.norm() < 1e-2);
   return (n / n.norm()).template cast<typename Vector::Scalar>();
-}
-
-template <typename Vector>
-paper::Vector<Vector::RowsAtCompileTime> exact(const Vector& v) {
-  return v.template cast<long double>();
 }
 
 // Checks x1, x2 against the reference componentwise, within 8 scaled ULP: 8ε(|vᵢ| + c Σⱼ(|v1ⱼ| +

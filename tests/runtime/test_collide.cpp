@@ -4,6 +4,7 @@
 #include <billiards/collision.hpp>
 
 #include "paper_formula.hpp"
+#include "test_support.hpp"
 
 #include <catch2/catch.hpp>
 
@@ -14,12 +15,8 @@
 
 namespace {
 
-template <typename S, int D>
-struct Config {
-  using Scalar = S;
-  static constexpr int dimension = D;
-  using Vector = Eigen::Matrix<S, D, 1>;
-};
+using billiards_test::Config;
+using billiards_test::exact;
 
 template <typename Vector>
 Vector random_unit_normal(std::mt19937_64& random) {
@@ -59,11 +56,6 @@ struct Sample {
         v2(random_velocity<Vector>(random)),
         n(random_unit_normal<Vector>(random)) {}
 };
-
-template <typename Vector>
-paper::Vector<Vector::RowsAtCompileTime> exact(const Vector& v) {
-  return v.template cast<long double>();
-}
 
 }  // namespace
 
