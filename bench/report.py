@@ -1,0 +1,157 @@
+#!/usr/bin/env python3
+"""Turns the JSON of one billiards_bench run into bench/RESULTS.md and bench/throughput.svg.
+
+Usage: bench/report.py RESULTS_JSON [--command "how the JSON was made"]
+
+Every figure is a ratio of two benchmarks measured in the same run (the machines are shared and
+noisy); absolute times are shown only beside them.
+"""
+import argparse
+import json
+import math
+import os
+import sys
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+
+
+def load(path):
+    with open(path, encoding="utf-8") as f:
+        data = json.load(f)
+    runs = {}
+    for b in data["benchmarks"]:
+        if b.get("run_type", "iteration") != "iteration":
+            continue
+        runs[b["name"]] = b
+    return data["context"], runs
+
+
+def per_item_ns(b):
+    return b["real_time"] if b["time_unit"] == "ns" else b["real_time"] * {"us": 1e3, "ms": 1e6, "s": 1e9}[b["time_unit"]]
+
+
+def single_call_table(runs):
+    lines = ["| variant | double (ns) | ratio | float (ns) | ratio |", "|---|---:|---:|---:|---:|"]
+    names = [("generated", "generated `collide` (mass-ratio form, small-mass select)"),
+             ("ratio_formula", "hand-written ratio form 2/(1 + m1/m2)"),
+             ("paper_formula", "hand-written paper formula 2 m2/(m1 + m2)"),
+             ("eigen_expression", "plain Eigen expression")]
+    for key, label in names:
+        row = [label]
+        for scalar in ("double", "float"):
+            b = runs.get(f"collide/{key}/{scalar}")
+            reference = runs.get(f"collide/ratio_formula/{scalar}")
+            if b is None or reference is None:
+                row += ["–", "–"]
+                continue
+            row += [f"{per_item_ns(b):.2f}", f"{per_item_ns(b) / per_item_ns(reference):.2f}×"]
+        lines.append("| " + " | ".join(row) + " |")
+    return "\n".join(lines)
+
+
+def batch_rows(runs, scalar):
+    rows = []
+    for name, b in runs.items():
+        if not name.startswith(f"batch/{scalar}/"):
+            continue
+        pairs = int(name.split("/")[-1])
+        m = runs.get(f"memcpy/{scalar}/{pairs}")
+        rows.append((pairs, b["items_per_second"], b["bytes_per_second"], m["bytes_per_second"] if m else None))
+    return sorted(rows)
+
+
+def batch_table(runs):
+    lines = ["| type | pairs | collisions/s | GB/s | memcpy GB/s | fraction of memcpy |", "|---|---:|---:|---:|---:|---:|"]
+    for scalar in ("double", "float"):
+        for pairs, items, bytes_, copy in batch_rows(runs, scalar):
+            fraction = f"{bytes_ / copy:.2f}" if copy else "–"
+            copy_text = f"{copy / 1e9:.1f}" if copy else "–"
+            lines.append(f"| {scalar} | {pairs:,} | {items / 1e6:.1f} M | {bytes_ / 1e9:.1f} | {copy_text} | {fraction} |")
+    return "\n".join(lines)
+
+
+def svg(runs, path):
+    width, height, left, bottom, top, right = 720, 420, 70, 50, 20, 150
+    series = []
+    for scalar, colour in (("double", "#1f77b4"), ("float", "#2ca02c")):
+        rows = batch_rows(runs, scalar)
+        series.append((f"batch {scalar}", colour, [(p, b) for p, _, b, _ in rows], ""))
+        series.append((f"memcpy ({scalar} bytes)", colour, [(p, c) for p, _, _, c in rows if c], "6,4"))
+    points = [pt for _, _, pts, _ in series for pt in pts]
+    if not points:
+        return False
+    xs = [math.log10(p) for p, _ in points]
+    ys = [v / 1e9 for _, v in points]
+    x0, x1 = min(xs), max(xs)
+    y1 = max(ys) * 1.1
+
+    def sx(p):
+        return left + (math.log10(p) - x0) / max(x1 - x0, 1e-9) * (width - left - right)
+
+    def sy(v):
+        return height - bottom - (v / 1e9) / y1 * (height - bottom - top)
+
+    out = [f'<svg xmlns="http://www.w3.org/2000/svg" width="{width}" height="{height}" font-family="sans-serif" font-size="12">',
+           f'<rect width="{width}" height="{height}" fill="white"/>',
+           f'<line x1="{left}" y1="{height - bottom}" x2="{width - right}" y2="{height - bottom}" stroke="black"/>',
+           f'<line x1="{left}" y1="{top}" x2="{left}" y2="{height - bottom}" stroke="black"/>']
+    for e in range(int(math.floor(x0)), int(math.ceil(x1)) + 1):
+        x = sx(10 ** e)
+        out.append(f'<text x="{x:.1f}" y="{height - bottom + 18}" text-anchor="middle">10^{e}</text>')
+    for k in range(6):
+        v = y1 * k / 5
+        y = height - bottom - v / y1 * (height - bottom - top)
+        out.append(f'<text x="{left - 8}" y="{y + 4:.1f}" text-anchor="end">{v:.0f}</text>')
+    out.append(f'<text x="{(left + width - right) / 2}" y="{height - 10}" text-anchor="middle">pairs (N)</text>')
+    out.append(f'<text x="16" y="{(top + height - bottom) / 2}" transform="rotate(-90 16 {(top + height - bottom) / 2})" text-anchor="middle">GB/s (read + written)</text>')
+    for i, (label, colour, pts, dash) in enumerate(series):
+        if not pts:
+            continue
+        path_d = " ".join(f"{'M' if j == 0 else 'L'}{sx(p):.1f},{sy(v):.1f}" for j, (p, v) in enumerate(pts))
+        dash_attr = f' stroke-dasharray="{dash}"' if dash else ""
+        out.append(f'<path d="{path_d}" fill="none" stroke="{colour}" stroke-width="2"{dash_attr}/>')
+        ly = top + 16 * (i + 1)
+        out.append(f'<line x1="{width - right + 10}" y1="{ly - 4}" x2="{width - right + 30}" y2="{ly - 4}" stroke="{colour}" stroke-width="2"{dash_attr}/>')
+        out.append(f'<text x="{width - right + 35}" y="{ly}">{label}</text>')
+    out.append("</svg>")
+    with open(path, "w", encoding="utf-8") as f:
+        f.write("\n".join(out) + "\n")
+    return True
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("json")
+    parser.add_argument("--command", default="BILLIARDS_BENCH_MAX_PAIRS=10000000 build/bench/billiards_bench "
+                        "--benchmark_format=json --benchmark_out=bench.json")
+    args = parser.parse_args()
+    context, runs = load(args.json)
+    svg_written = svg(runs, os.path.join(HERE, "throughput.svg"))
+    caches = ", ".join(f"L{c['level']} {c['type']} {c['size'] // 1024} KiB" for c in context.get("caches", []))
+    text = f"""# Benchmark results
+
+Generated by `bench/report.py` from one run of `billiards_bench`: every ratio compares two benchmarks
+of that same run.
+
+- Machine: {context.get('num_cpus')} CPUs at {context.get('mhz_per_cpu')} MHz; caches: {caches}
+- Load average at the start: {', '.join(f'{x:.2f}' for x in context.get('load_avg', []))}
+- Command: `{args.command}`
+- Library build: {context.get('library_build_type')} (Debian's libbenchmark); billiards_bench itself at -O3
+
+## One collision per call (3-D, 4096 random cases, ratio to the hand-written ratio form)
+
+{single_call_table(runs)}
+
+## The batch path against memcpy of the same bytes
+
+{batch_table(runs)}
+
+{"![throughput against N](throughput.svg)" if svg_written else ""}
+"""
+    with open(os.path.join(HERE, "RESULTS.md"), "w", encoding="utf-8") as f:
+        f.write(text)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
