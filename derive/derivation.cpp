@@ -1332,7 +1332,7 @@ Derivation derive_paper(const Definitions& definitions) {
         .claims = {"result.x1_simplified_form", "result.x2_by_symmetry", "kernel.impulse_coefficient_first",
                    "kernel.impulse_coefficient_second", "beyond.immovable.mass_ratio_form",
                    "beyond.immovable.small_mass_form"},
-        .names = {{"total_mass", s.m1 + s.m2}},
+        .names = {},
     });
     result.kernels.push_back({
         .name = "normal_velocity_change",
@@ -1343,7 +1343,7 @@ Derivation derive_paper(const Definitions& definitions) {
         .outputs = outputs(),
         .claims = {"beyond.restitution.impulse_coefficients", "beyond.immovable.mass_ratio_form",
                    "beyond.restitution.energy_loss"},
-        .names = {{"restitution_factor", 1 + e}, {"total_mass", s.m1 + s.m2}},
+        .names = {{"restitution_factor", 1 + e}},
     });
     result.kernels.push_back({
         .name = "direction_velocity_change",
@@ -1354,7 +1354,7 @@ Derivation derive_paper(const Definitions& definitions) {
         .outputs = outputs(),
         .claims = {"beyond.any_normal.direction_form", "beyond.any_normal.scale_invariant",
                    "beyond.immovable.mass_ratio_form", "beyond.immovable.small_mass_form"},
-        .names = {{"restitution_factor", 1 + e}, {"total_mass", s.m1 + s.m2}},
+        .names = {{"restitution_factor", 1 + e}},
     });
     result.kernels.push_back({
         .name = "approaching_direction_velocity_change",
@@ -1369,7 +1369,7 @@ Derivation derive_paper(const Definitions& definitions) {
         .claims = {"beyond.approaching.kernel_form", "beyond.approaching.resolve_only_approaching",
                    "beyond.any_normal.direction_form", "beyond.immovable.mass_ratio_form",
                    "beyond.immovable.small_mass_form"},
-        .names = {{"restitution_factor", 1 + e}, {"total_mass", s.m1 + s.m2}},
+        .names = {{"restitution_factor", 1 + e}},
     });
     const GiNaC::symbol vn("vn");
     result.kernels.push_back({

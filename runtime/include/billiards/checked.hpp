@@ -124,6 +124,17 @@ void check_restitution(const char* function, Scalar e) {
   }
 }
 
+// What every collision call checks: the masses, both velocities and the restitution.
+template <typename D1, typename D2>
+void check_collision(const char* function, typename D1::Scalar m1, const Eigen::MatrixBase<D1>& v1,
+                     typename D1::Scalar m2, const Eigen::MatrixBase<D2>& v2,
+                     typename D1::Scalar restitution) {
+  check_masses(function, m1, m2);
+  check_components(function, "v1", v1, "a velocity");
+  check_components(function, "v2", v2, "a velocity");
+  check_restitution(function, restitution);
+}
+
 }  // namespace detail
 
 /// The validated calls. Each checks every argument, then returns the unchecked call's result.
@@ -140,11 +151,8 @@ template <typename D1, typename D2, typename DN>
   detail::require_same_vector_type<D1, D2>();
   detail::require_same_vector_type<D1, DN>();
   constexpr const char* function = "billiards::checked::collide";
-  detail::check_masses(function, m1, m2);
-  detail::check_components(function, "v1", v1, "a velocity");
-  detail::check_components(function, "v2", v2, "a velocity");
+  detail::check_collision(function, m1, v1, m2, v2, restitution);
   detail::check_unit_normal(function, "n", n);
-  detail::check_restitution(function, restitution);
   return restitution == 1 ? billiards::collide(m1, v1, m2, v2, n)
                           : billiards::collide(m1, v1, m2, v2, n, restitution);
 }
@@ -158,11 +166,8 @@ template <typename D1, typename D2, typename DD>
   detail::require_same_vector_type<D1, D2>();
   detail::require_same_vector_type<D1, DD>();
   constexpr const char* function = "billiards::checked::collide_along_direction";
-  detail::check_masses(function, m1, m2);
-  detail::check_components(function, "v1", v1, "a velocity");
-  detail::check_components(function, "v2", v2, "a velocity");
+  detail::check_collision(function, m1, v1, m2, v2, restitution);
   detail::check_direction(function, "d", d);
-  detail::check_restitution(function, restitution);
   return billiards::collide_along_direction(m1, v1, m2, v2, d, restitution);
 }
 
@@ -177,16 +182,13 @@ template <typename DP1, typename D1, typename DP2, typename D2>
   detail::require_same_vector_type<D1, DP1>();
   detail::require_same_vector_type<D1, DP2>();
   constexpr const char* function = "billiards::checked::collide_if_approaching";
-  detail::check_masses(function, m1, m2);
+  detail::check_collision(function, m1, v1, m2, v2, restitution);
   detail::check_components(function, "p1", p1, "a position");
-  detail::check_components(function, "v1", v1, "a velocity");
   detail::check_components(function, "p2", p2, "a position");
-  detail::check_components(function, "v2", v2, "a velocity");
   if ((p2 - p1).isZero(0)) {
     throw invalid_argument(function, "p2", detail::to_text(p2),
                            "a centre distinct from p1 = " + detail::to_text(p1));
   }
-  detail::check_restitution(function, restitution);
   return billiards::collide_if_approaching(m1, p1, v1, m2, p2, v2, restitution);
 }
 
