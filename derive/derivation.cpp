@@ -73,6 +73,7 @@ struct Symbols {
   GiNaC::symbol x1_scaled_direction{"x1_scaled",
                                     "\\mathbf{x}_1\\big|_{\\mathbf{d} \\to \\lambda \\mathbf{d}}"};
   GiNaC::symbol a_par_dot_b_perp{"apar_bperp", "a^{\\parallel} \\cdot b^{\\perp}"};
+  GiNaC::symbol cross_product_squared{"pxw2", "|\\mathbf{p} \\times \\mathbf{w}|^2"};
 };
 
 const Symbols& symbols() {
@@ -188,6 +189,10 @@ Derivation derive_paper(const Definitions& definitions) {
         {"definition.restitution",
          "Newton's law of restitution (beyond the paper): (x2 − x1)·n = −e (v2 − v1)·n with 0 ≤ e ≤ 1; "
          "e = 1 is the paper's perfectly elastic collision.",
+         ex(0)},
+        {"definition.time_of_impact",
+         "Balls move in straight lines between collisions (beyond the paper): centres p1 + t v1 and "
+         "p2 + t v2; spheres of radii r1, r2 touch when |(p2 − p1) + t (v2 − v1)| = r1 + r2.",
          ex(0)},
         {"definition.conservation",
          "Momentum is conserved, P(v1, v2) = P(x1, x2); for a perfectly elastic collision so is the "
@@ -1271,6 +1276,162 @@ Derivation derive_paper(const Definitions& definitions) {
     });
   }
 
+  // ---- Time of impact ------------------------------------------------------------------------
+  // Two spheres with centres p1 + t v1 and p2 + t v2 and radii r1, r2 touch when |p + t w| = r, with
+  // p = p2 − p1, w = v2 − v1 and r = r1 + r2 (3-D components): another quadratic, in t.
+  const Vec relative_position = component_symbols("p", "p", "", 3);
+  const Vec relative_velocity = component_symbols("w", "w", "", 3);
+  const GiNaC::possymbol contact_distance("contact_distance", "r");
+  const GiNaC::realsymbol time("t", "t");
+  const Vec separation_at_time = add(relative_position, scale(time, relative_velocity));
+  const ex touching =
+      (dot(separation_at_time, separation_at_time) - contact_distance * contact_distance).expand();
+  // Read off as a t² + 2 b t + c.
+  const ex coefficient_a = touching.coeff(time, 2), coefficient_b = touching.coeff(time, 1) / 2,
+           coefficient_c = touching.coeff(time, 0);
+  const GiNaC::possymbol qa("a", "a"), root_of_d("s", "\\sqrt{D}");
+  const GiNaC::realsymbol qb("b", "b"), qc("c", "c");
+  const std::vector<std::string> time_premises = {"definition.time_of_impact"};
+  record.add({
+      .id = "beyond.time_of_impact.quadratic",
+      .statement = "|p + t w|² − r² = a t² + 2 b t + c with a = w·w, b = p·w, c = p·p − r²: the spheres "
+                   "touch at the roots t of a quadratic.",
+      .method = "|p + t w|² − r² expanded in 3-D components; coeff() in t; identity",
+      .comparison = Comparison::identity,
+      .paper_expression =
+          lst{dot(relative_velocity, relative_velocity), dot(relative_position, relative_velocity),
+              dot(relative_position, relative_position) - contact_distance * contact_distance},
+      .derived_expression = lst{coefficient_a, coefficient_b, coefficient_c},
+      .paper_display = qa * GiNaC::pow(time, 2) + 2 * qb * time + qc,
+      .derived_display = touching,
+      .depends_on = time_premises,
+  });
+  // D/4 = b² − a c from the coefficients read off; in 3-D it is a r² − |p × w|² (Lagrange's identity).
+  const ex quarter_discriminant = (coefficient_b * coefficient_b - coefficient_a * coefficient_c).expand();
+  const Vec& pp_ = relative_position;
+  const Vec& ww_ = relative_velocity;
+  const Vec cross = {pp_[1] * ww_[2] - pp_[2] * ww_[1], pp_[2] * ww_[0] - pp_[0] * ww_[2],
+                     pp_[0] * ww_[1] - pp_[1] * ww_[0]};
+  const ex lagrange =
+      dot(relative_velocity, relative_velocity) * contact_distance * contact_distance - dot(cross, cross);
+  record.add({
+      .id = "beyond.time_of_impact.discriminant",
+      .statement = "D = b² − a c = (w·w) r² − |p × w|²: real roots exist iff the line of relative motion "
+                   "passes within r, |p × w|/|w| ≤ r. D < 0 is a miss, D = 0 a graze.",
+      .method = "b² − a c of the coefficients read off, 3-D components; identity after expand()",
+      .comparison = Comparison::identity,
+      .paper_expression = lagrange,
+      .derived_expression = quarter_discriminant,
+      .paper_display = qa * contact_distance * contact_distance - s.cross_product_squared,
+      .derived_display = qb * qb - qa * qc,
+      .note = "D here is a quarter of the usual B² − 4AC with B = 2b.",
+      .depends_on = {"beyond.time_of_impact.quadratic"},
+  });
+  // The roots by the quadratic formula, A = a, B = 2b, C = c, with √(B² − 4AC) = 2√D = 2 s.
+  const ex quadratic_in_t = qa * GiNaC::pow(time, 2) + 2 * qb * time + qc;
+  const ex big_a = quadratic_in_t.coeff(time, 2), big_b = quadratic_in_t.coeff(time, 1),
+           big_c = quadratic_in_t.coeff(time, 0);
+  const ex d_of_coefficients = ((big_b * big_b - 4 * big_a * big_c) / 4).expand();
+  const ex root_relation = GiNaC::pow(root_of_d, 2) == d_of_coefficients;
+  const ex earlier_root = GiNaC::normal((-big_b - 2 * root_of_d) / (2 * big_a));
+  const ex later_root = GiNaC::normal((-big_b + 2 * root_of_d) / (2 * big_a));
+  const lst printed_roots{(-qb - root_of_d) / qa, (-qb + root_of_d) / qa};
+  record.add({
+      .id = "beyond.time_of_impact.roots",
+      .statement = "t∓ = (−b ∓ √D)/a, D = b² − a c, and both solve a t² + 2 b t + c = 0.",
+      .method = "quadratic formula with A, B, C read off by coeff(); each root substituted back, the "
+                "numerator reduced modulo s² = b² − a c (s = √D); identity",
+      .comparison = Comparison::identity,
+      .paper_expression = lst{printed_roots.op(0), printed_roots.op(1), 0, 0},
+      .derived_expression = lst{earlier_root, later_root, quadratic_in_t.subs(time == earlier_root),
+                                quadratic_in_t.subs(time == later_root)},
+      .constraints = lst{root_relation},
+      .paper_display = printed_roots,
+      .derived_display = lst{earlier_root, later_root},
+      .depends_on = {"beyond.time_of_impact.discriminant"},
+  });
+  // (p + t w)·w is the rate of change of |p + t w|²/2: negative while the gap closes.
+  const ex closing_rate = dot(separation_at_time, relative_velocity);
+  record.add({
+      .id = "beyond.time_of_impact.first_contact_approaches",
+      .statement = "At t− the spheres approach, (p + t w)·w = −√D ≤ 0, and at t+ they separate (+√D): t− "
+                   "is the physical contact, t+ the moment they would part after passing through "
+                   "each other.",
+      .method = "(p + t w)·w − (b + a t) in 3-D components (zero), then b + a t at t∓; identity",
+      .comparison = Comparison::identity,
+      .paper_expression = lst{0, -root_of_d, root_of_d},
+      .derived_expression = lst{(closing_rate - (coefficient_b + coefficient_a * time)).expand(),
+                                qb + qa * earlier_root, qb + qa * later_root},
+      .paper_display = lst{-root_of_d, root_of_d},
+      .derived_display = lst{qb + qa * time},
+      .depends_on = {"beyond.time_of_impact.roots"},
+  });
+  // The earlier root without cancellation: multiply by (s − b)/(s − b) and reduce s² = b² − a c.
+  const ex rationalized_numerator =
+      reduce_modulo(((-qb - root_of_d) * (root_of_d - qb)).expand(), root_relation);
+  const ex stable_root = GiNaC::normal(rationalized_numerator / (qa * (root_of_d - qb)));
+  record.add({
+      .id = "beyond.time_of_impact.stable_form",
+      .statement = "t− = c/(√D − b): for approaching spheres (b < 0) no cancellation (√D ≥ 0 and −b > 0 are "
+                   "added) and no division by a, so no division by zero.",
+      .method = "t− multiplied by (s − b)/(s − b), the numerator reduced modulo s² = b² − a c; identity",
+      .comparison = Comparison::identity,
+      .paper_expression = qc / (root_of_d - qb),
+      .derived_expression = stable_root,
+      .constraints = lst{root_relation},
+      .paper_display = qc / (root_of_d - qb),
+      .derived_display = printed_roots.op(0),
+      .note = "(−b − √D)/a loses every digit when a c is small beside b² (spheres nearly touching); "
+              "c/(√D − b) does not.",
+      .depends_on = {"beyond.time_of_impact.roots"},
+  });
+  record.add({
+      .id = "beyond.time_of_impact.no_contact",
+      .statement = "t− t+ = c/a and t− + t+ = −2b/a: spheres apart (c > 0) that are not approaching (b ≥ 0) "
+                   "have no root t > 0, and neither have spheres that miss (D < 0). There is no contact: "
+                   "the kernel returns +∞.",
+      .method = "product and sum of the roots, reduced modulo s² = b² − a c; identity",
+      .comparison = Comparison::identity,
+      .paper_expression = lst{qc / qa, -2 * qb / qa},
+      .derived_expression = lst{earlier_root * later_root, earlier_root + later_root},
+      .constraints = lst{root_relation},
+      .paper_display = lst{qc / qa, -2 * qb / qa},
+      .derived_display = lst{earlier_root * later_root, earlier_root + later_root},
+      .depends_on = {"beyond.time_of_impact.roots"},
+  });
+  record.add({
+      .id = "beyond.time_of_impact.grazing",
+      .statement =
+          "D = 0 (a graze): the roots coincide and at the contact (p + t w)·w = 0, no closing speed, "
+          "so resolving only approaching contacts changes nothing. The kernel treats D ≤ 0 as no "
+          "contact (+∞).",
+      .method = "√D = 0 substituted; identity",
+      .comparison = Comparison::identity,
+      .paper_expression = lst{0, 0},
+      .derived_expression = lst{(earlier_root - later_root).subs(root_of_d == 0),
+                                GiNaC::normal(qb + qa * earlier_root).subs(root_of_d == 0)},
+      .paper_display = lst{0, 0},
+      .derived_display = lst{earlier_root - later_root, qb + qa * earlier_root},
+      .depends_on = {"beyond.time_of_impact.first_contact_approaches", "beyond.approaching.kernel_form"},
+  });
+  {
+    const GiNaC::possymbol overlap("gamma", "\\gamma"), approach("beta", "\\beta");
+    const ex negated_time = GiNaC::normal(-stable_root.subs(lst{qc == -overlap, qb == -approach}));
+    record.add({
+        .id = "beyond.time_of_impact.touching_now",
+        .statement = "Spheres already touching or overlapping by rounding (c ≤ 0) and approaching (b < 0) "
+                     "give t− ≤ 0: the contact is now, and the kernel returns 0.",
+        .method = "sign: c = −γ, b = −β (γ, β > 0) in the stable form; −t− factors into positive "
+                  "symbols (√D ≥ 0)",
+        .comparison = Comparison::nonnegative,
+        .paper_expression = 0,
+        .derived_expression = negated_time,
+        .paper_display = 0,
+        .derived_display = negated_time,
+        .depends_on = {"beyond.time_of_impact.stable_form"},
+    });
+  }
+
   // ---- The emitted kernels -------------------------------------------------------------------
   // Every kernel uses the mass-ratio form (beyond.immovable.mass_ratio_form); the paper's elastic one
   // is the same with e = 1. Coefficients are emitted as magnitudes with the sign on the product, so
@@ -1310,8 +1471,8 @@ Derivation derive_paper(const Definitions& definitions) {
           {first_name, magnitude(first)},
           {second_name, magnitude(second)},
           {speed_per_mass, per_mass},
-          {first_change, first_name * by, first_ratio > ratio_limit, magnitude(first_small)},
-          {second_change, second_name * by, second_ratio > ratio_limit, magnitude(second_small)}};
+          {first_change, first_name * by, {{first_ratio > ratio_limit, magnitude(first_small)}}},
+          {second_change, second_name * by, {{second_ratio > ratio_limit, magnitude(second_small)}}}};
     };
     const auto outputs = [&] {
       return std::vector<ex>{with_sign(first_ratio_form, first_change),
@@ -1380,6 +1541,40 @@ Derivation derive_paper(const Definitions& definitions) {
         .steps = {},
         .outputs = {cushion_change.subs(s.v1n == vn)},
         .claims = {"kernel.cushion_velocity_change", "cushion.limit"},
+        .names = {},
+    });
+    // The time of impact in the dot products pp = p·p, pv = p·w, vv = w·w: the coefficients read off
+    // in components, the last component eliminated through each dot product.
+    const GiNaC::realsymbol pp("pp"), pv("pv"), vv("vv");
+    const Vec& p = relative_position;
+    const Vec& w = relative_velocity;
+    const ex a_in_dots = reduce_modulo(coefficient_a, GiNaC::pow(w[2], 2) == vv - w[0] * w[0] - w[1] * w[1]);
+    const ex b_in_dots = GiNaC::normal(coefficient_b.subs(p[2] == (pv - p[0] * w[0] - p[1] * w[1]) / w[2]));
+    const ex c_in_dots = reduce_modulo(coefficient_c, GiNaC::pow(p[2], 2) == pp - p[0] * p[0] - p[1] * p[1]);
+    const GiNaC::symbol gap("gap"), discriminant("discriminant"), contact_time("contact_time");
+    const GiNaC::symbol infinity("infinity<Scalar>()");
+    const lst in_kernel{qa == a_in_dots, qb == b_in_dots, qc == gap};
+    using Kind = Guard::Kind;
+    result.kernels.push_back({
+        .name = "time_of_impact",
+        .brief =
+            "The time until two spheres moving in straight lines first touch: from pp = p·p, pv = p·w, "
+            "vv = w·w with p = p2 − p1 and w = v2 − v1 (relative position and velocity) and the "
+            "contact distance r1 + r2. Returns the earliest t ≥ 0 at which they touch while approaching; "
+            "0 when they already touch (or overlap by rounding) and approach; +∞ when they never touch "
+            "(separating, no relative motion, a miss or a graze).",
+        .parameters = {pp, pv, vv, contact_distance},
+        .steps = {{gap, c_in_dots},
+                  {discriminant, d_of_coefficients.subs(in_kernel)},
+                  {contact_time,
+                   stable_root.subs(in_kernel).subs(root_of_d == GiNaC::sqrt(discriminant)),
+                   {{gap < 0, 0, Kind::piecewise},
+                    {discriminant <= 0, infinity, Kind::piecewise},
+                    {pv >= 0, infinity, Kind::piecewise}}}},
+        .outputs = {contact_time},
+        .claims = {"beyond.time_of_impact.quadratic", "beyond.time_of_impact.discriminant",
+                   "beyond.time_of_impact.stable_form", "beyond.time_of_impact.no_contact",
+                   "beyond.time_of_impact.grazing", "beyond.time_of_impact.touching_now"},
         .names = {},
     });
   }

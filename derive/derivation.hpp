@@ -42,21 +42,35 @@ struct SelectedResult {
   GiNaC::ex x2_normal;  ///< x2·n, from momentum conservation
 };
 
-/// A named quantity of an emitted kernel, `const Scalar name = expression;`.
+/// An override of a kernel step: under `condition` (a relational such as `x > y`, `x <= y`), the step
+/// takes `alternative` instead of its usual expression. Later guards of a step win.
+struct Guard {
+  enum class Kind {
+    /// The same quantity in another form (an identity the audit checks), for inputs where the usual
+    /// form would lose it to rounding: an exact evaluation may ignore the guard.
+    same_value,
+    /// A different value where the usual expression does not apply (no contact: +∞): part of the
+    /// kernel's definition, which an exact evaluation must honour.
+    piecewise,
+  };
+  GiNaC::ex condition;
+  GiNaC::ex alternative;
+  Kind kind = Kind::same_value;
+};
+
+/// A named quantity of an emitted kernel, `const Scalar name = expression;`, or with guards
+/// `Scalar name = expression; if (condition) name = alternative; ...`.
 struct KernelStep {
   GiNaC::symbol name;    ///< its C++ name, as a symbol later steps and outputs use
   GiNaC::ex expression;  ///< derived, in the kernel's parameters and earlier steps
-  /// When set, `const Scalar name = condition ? alternative : expression;`: the same quantity in
-  /// another form (an identity the audit checks), for inputs where `expression` would lose it.
-  GiNaC::ex condition = GiNaC::fail();
-  GiNaC::ex alternative = GiNaC::fail();
+  std::vector<Guard> guards = {};
 };
 
 /// A scalar kernel for the emitter: derived expressions in its parameters (masses and normal
 /// components), and the audit claims that vouch for them.
 struct Kernel {
-  std::string name;                       ///< the C++ function name
-  std::string brief;                      ///< one sentence for its comment
+  std::string name;                   ///< the C++ function name
+  std::string brief;                  ///< one sentence for its comment
   std::vector<GiNaC::ex> parameters;  ///< symbols, in signature order; their names are the C++ names
   std::vector<KernelStep> steps;
   std::vector<GiNaC::ex> outputs;  ///< one: returns Scalar; two: NormalVelocityChange {first, second}

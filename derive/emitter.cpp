@@ -25,8 +25,8 @@ void collect_sums(const ex& e, std::vector<ex>& sums) {
   }
 }
 
-// + − × ÷ and negations in a line of emitted C++: binary operators stand between spaces, a unary
-// minus is followed directly by its operand.
+// + − × ÷, square roots and negations in a line of emitted C++: binary operators stand between spaces, a
+// unary minus is followed directly by its operand.
 int count_operations(const std::string& code) {
   int count = 0;
   for (std::size_t i = 0; i < code.size(); ++i) {
@@ -34,6 +34,10 @@ int count_operations(const std::string& code) {
     const bool spaced = i > 0 && code[i - 1] == ' ' && i + 1 < code.size() && code[i + 1] == ' ';
     if ((c == '+' || c == '*' || c == '/' || c == '-') && spaced) ++count;
     if (c == '-' && i + 1 < code.size() && code[i + 1] != ' ') ++count;
+  }
+  for (std::size_t at = code.find("std::sqrt("); at != std::string::npos;
+       at = code.find("std::sqrt(", at + 1)) {
+    ++count;  // a square root counts as one operation
   }
   return count;
 }
@@ -85,15 +89,62 @@ std::string short_if(const std::string& head, const std::string& statement) {
   return head + "\n    " + statement;
 }
 
+// A relational as a C++ condition: `lhs op rhs`.
+std::string print_condition(const ex& condition) {
+  if (!GiNaC::is_a<GiNaC::relational>(condition)) {
+    throw std::invalid_argument("a guard's condition must be a relational, not " +
+                                print(condition, Notation::text));
+  }
+  static const std::pair<unsigned, const char*> operators[] = {
+      {GiNaC::info_flags::relation_equal, " == "},  {GiNaC::info_flags::relation_not_equal, " != "},
+      {GiNaC::info_flags::relation_less, " < "},    {GiNaC::info_flags::relation_less_or_equal, " <= "},
+      {GiNaC::info_flags::relation_greater, " > "}, {GiNaC::info_flags::relation_greater_or_equal, " >= "},
+  };
+  for (const auto& [flag, op] : operators) {
+    if (condition.info(flag)) {
+      return print(condition.lhs(), Notation::cpp) + op + print(condition.rhs(), Notation::cpp);
+    }
+  }
+  throw std::logic_error("unknown relational operator");
+}
+
+// True when the kernel calls a function that is not constexpr (std::sqrt).
+bool needs_runtime_math(const Kernel& kernel) {
+  const auto has_root = [](const ex& e) {
+    for (GiNaC::const_preorder_iterator it = e.preorder_begin(); it != e.preorder_end(); ++it) {
+      if (GiNaC::is_a<GiNaC::power>(*it) && it->op(1) == GiNaC::numeric(1, 2)) return true;
+    }
+    return false;
+  };
+  for (const KernelStep& step : kernel.steps) {
+    if (has_root(step.expression)) return true;
+    for (const Guard& guard : step.guards) {
+      if (has_root(guard.alternative)) return true;
+    }
+  }
+  for (const ex& output : kernel.outputs) {
+    if (has_root(output)) return true;
+  }
+  return false;
+}
+
 // A function signature as clang-format lays it out in the project's style: on one line when it fits,
-// else broken after the "(" with the parameters on a line of their own, indented by 4.
+// else on two lines aligned under the "(", else broken after the "(" with the parameters on a line of
+// their own, indented by 4.
 std::string signature(const std::string& head, const std::vector<std::string>& parameters,
                       const std::string& tail) {
   std::string list;
   for (const std::string& parameter : parameters) list += (list.empty() ? "" : ", ") + parameter;
   if (head.size() + list.size() + tail.size() <= column_limit) return head + list + tail;
+  // Aligned under the "(" when that takes two lines, as clang-format prefers it then.
+  const std::string aligned = wrapped_list(head, parameters, tail);
+  const std::size_t line_break = aligned.find('\n');
+  const bool two_lines =
+      line_break != std::string::npos && aligned.find('\n', line_break + 1) == std::string::npos;
+  if (two_lines && aligned.size() - line_break - 1 <= column_limit && line_break <= column_limit)
+    return aligned;
   if (4 + list.size() + tail.size() <= column_limit) return head + "\n    " + list + tail;
-  return wrapped_list(head, parameters, tail);
+  return aligned;
 }
 
 }  // namespace
@@ -103,7 +154,7 @@ EmittedKernel emit_kernel(const Kernel& kernel) {
   std::vector<ex> sums;
   for (const KernelStep& step : kernel.steps) {
     collect_sums(step.expression, sums);
-    if (!GiNaC::is_a<GiNaC::fail>(step.alternative)) collect_sums(step.alternative, sums);
+    for (const Guard& guard : step.guards) collect_sums(guard.alternative, sums);
   }
   for (const ex& output : kernel.outputs) collect_sums(output, sums);
   std::vector<std::pair<GiNaC::symbol, ex>> hoisted;
@@ -144,20 +195,23 @@ EmittedKernel emit_kernel(const Kernel& kernel) {
     for (const KernelStep& step : kernel.steps) {
       const ex expression = step.expression.subs(replace);
       place_hoisted_used_by(expression);
-      if (GiNaC::is_a<GiNaC::fail>(step.condition)) {
+      if (step.guards.empty()) {
         define(step.name.get_name(), expression);
         continue;
       }
-      const ex alternative = step.alternative.subs(replace);
-      place_hoisted_used_by(alternative);
-      const std::string name = step.name.get_name();
-      const std::string usual = print(expression, Notation::cpp), other = print(alternative, Notation::cpp);
-      const std::string condition =
-          print(step.condition.lhs(), Notation::cpp) + " > " + print(step.condition.rhs(), Notation::cpp);
-      // The usual form, replaced where it would lose the answer: one comparison more than both forms.
-      emitted.operation_count += 1 + count_operations(usual) + count_operations(other);
+      const std::string name = step.name.get_name(), usual = print(expression, Notation::cpp);
+      emitted.operation_count += count_operations(usual);
       emitted.body.push_back("Scalar " + name + " = " + usual + ";");
-      emitted.body.push_back(short_if("if (" + condition + ")", name + " = " + other + ";"));
+      for (const Guard& guard : step.guards) {
+        // The usual value, replaced under the condition: one comparison more, and the other form.
+        const ex alternative = guard.alternative.subs(replace), condition = guard.condition.subs(replace);
+        place_hoisted_used_by(alternative);
+        place_hoisted_used_by(condition);
+        const std::string other = print(alternative, Notation::cpp);
+        emitted.operation_count += 1 + count_operations(other);
+        emitted.body.push_back(
+            short_if("if (" + print_condition(condition) + ")", name + " = " + other + ";"));
+      }
     }
     std::vector<std::string> results;
     for (const ex& output : kernel.outputs) {
@@ -190,6 +244,8 @@ std::string fingerprint(const std::string& text) {
 }
 
 std::string kernels_header(const Derivation& derivation, const std::string& derivation_fingerprint) {
+  const bool runtime_math =
+      std::any_of(derivation.kernels.begin(), derivation.kernels.end(), needs_runtime_math);
   std::ostringstream out;
   out << "// Generated by derive/ (billiards-derive): do not edit. Regenerate with ./tools/derive "
          "generated.\n"
@@ -201,7 +257,7 @@ std::string kernels_header(const Derivation& derivation, const std::string& deri
       << "//\n"
       << "// Derivation fingerprint: " << derivation_fingerprint << " (of audit.json)\n"
       << "#pragma once\n\n"
-      << "#include <limits>\n\n"
+      << (runtime_math ? "#include <cmath>\n" : "") << "#include <limits>\n\n"
       << "#if defined(__FINITE_MATH_ONLY__) && __FINITE_MATH_ONLY__\n"
       << "// -ffast-math assumes no infinities, but an infinite mass is how an immovable body is modelled.\n"
       << "#error \"billiards: -ffast-math breaks infinite masses (immovable bodies); add "
@@ -243,6 +299,19 @@ std::string kernels_header(const Derivation& derivation, const std::string& deri
       << "template <>\n"
       << "BILLIARDS_HOST_DEVICE constexpr double smallest_normal<double>() noexcept {\n"
       << "  return 0x1p-1022;\n"
+      << "}\n\n"
+      << "/// +∞, std::numeric_limits<Scalar>::infinity(), also in device code.\n"
+      << "template <typename Scalar>\n"
+      << "BILLIARDS_HOST_DEVICE constexpr Scalar infinity() noexcept {\n"
+      << "  return std::numeric_limits<Scalar>::infinity();\n"
+      << "}\n"
+      << "template <>\n"
+      << "BILLIARDS_HOST_DEVICE constexpr float infinity<float>() noexcept {\n"
+      << "  return __builtin_huge_valf();\n"
+      << "}\n"
+      << "template <>\n"
+      << "BILLIARDS_HOST_DEVICE constexpr double infinity<double>() noexcept {\n"
+      << "  return __builtin_huge_val();\n"
       << "}\n";
   for (const Kernel& kernel : derivation.kernels) {
     const EmittedKernel emitted = emit_kernel(kernel);
@@ -258,8 +327,9 @@ std::string kernels_header(const Derivation& derivation, const std::string& deri
         << doc_comment("Implements the audit claims " + claims + ".") << "///\n"
         << "/// Total ops: " << emitted.operation_count << "\n"
         << "template <typename Scalar>\n"
-        << signature("BILLIARDS_HOST_DEVICE constexpr " + result + " " + kernel.name + "(", parameters,
-                     ") noexcept {")
+        << signature(std::string("BILLIARDS_HOST_DEVICE ") +
+                         (needs_runtime_math(kernel) ? "" : "constexpr ") + result + " " + kernel.name + "(",
+                     parameters, ") noexcept {")
         << "\n";
     for (const std::string& line : emitted.body) out << "  " << line << "\n";
     out << "}\n";

@@ -22,6 +22,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include <array>
 #include <cmath>
 #include <functional>
 #include <iostream>
@@ -67,15 +68,34 @@ std::vector<Scalar> call_kernel(const std::string& name, const Inputs<Scalar>& i
     return {r.first, r.second};
   }
   if (name == "cushion_normal_velocity_change") return {cushion_normal_velocity_change(at("vn"))};
+  if (name == "time_of_impact") return {time_of_impact(at("pp"), at("pv"), at("vv"), at("contact_distance"))};
   throw std::invalid_argument("kernel " + name + " has no caller in billiards-accuracy: add one");
 }
 
+// An exact output: a number, or +∞ where a piecewise guard says "no contact".
+struct Exact {
+  numeric value;
+  bool infinite = false;
+};
+
+bool names_infinity(const ex& e) {
+  for (GiNaC::const_preorder_iterator it = e.preorder_begin(); it != e.preorder_end(); ++it) {
+    if (GiNaC::is_a<GiNaC::symbol>(*it) &&
+        GiNaC::ex_to<GiNaC::symbol>(*it).get_name() == "infinity<Scalar>()")
+      return true;
+  }
+  return false;
+}
+
 // The kernel's outputs evaluated exactly from its derived steps. An infinite mass is the limit
-// t → 0 of 1/t, taken after normal(): the steps are rational in t.
+// t → 0 of 1/t, taken after normal(): the steps are rational in t. Piecewise guards are honoured (the
+// last one whose condition holds, exactly, gives the value); same-value guards are alternative forms
+// of the same quantity and are skipped. A square root is evaluated to GiNaC::Digits digits.
 template <typename Scalar>
-std::vector<numeric> exact_outputs(const billiards::derive::Kernel& kernel, const Inputs<Scalar>& in) {
+std::vector<Exact> exact_outputs(const billiards::derive::Kernel& kernel, const Inputs<Scalar>& in) {
   const GiNaC::symbol t("t");
   GiNaC::exmap values;
+  std::map<ex, bool, GiNaC::ex_is_less> infinite;
   bool has_infinity = false;
   for (const ex& parameter : kernel.parameters) {
     const Scalar x = in.at(GiNaC::ex_to<GiNaC::symbol>(parameter).get_name());
@@ -83,12 +103,28 @@ std::vector<numeric> exact_outputs(const billiards::derive::Kernel& kernel, cons
     values[parameter] = std::isinf(x) ? ex(1 / t) : ex(exact_rational(x));
   }
   const auto evaluate = [&](const ex& e) {
-    return has_infinity ? GiNaC::normal(e.subs(values)) : e.subs(values);
+    const ex value = has_infinity ? GiNaC::normal(e.subs(values)) : e.subs(values);
+    return GiNaC::is_a<numeric>(value) ? value : GiNaC::evalf(value);
   };
-  for (const billiards::derive::KernelStep& step : kernel.steps)
-    values[step.name] = evaluate(step.expression);
-  std::vector<numeric> outputs;
+  for (const billiards::derive::KernelStep& step : kernel.steps) {
+    const billiards::derive::Guard* chosen = nullptr;
+    for (const billiards::derive::Guard& guard : step.guards) {
+      if (guard.kind != billiards::derive::Guard::Kind::piecewise) continue;
+      const ex condition = guard.condition.subs(values);
+      if (!GiNaC::is_a<GiNaC::relational>(condition) || has_infinity)
+        throw std::logic_error("kernel " + kernel.name + ": a piecewise guard cannot be evaluated exactly");
+      if (static_cast<bool>(GiNaC::ex_to<GiNaC::relational>(condition))) chosen = &guard;
+    }
+    infinite[step.name] = chosen != nullptr && names_infinity(chosen->alternative);
+    values[step.name] =
+        infinite[step.name] ? ex(0) : evaluate(chosen ? chosen->alternative : step.expression);
+  }
+  std::vector<Exact> outputs;
   for (const ex& output : kernel.outputs) {
+    if (infinite.count(output) && infinite[output]) {
+      outputs.push_back({0, true});
+      continue;
+    }
     const ex value = has_infinity ? GiNaC::normal(evaluate(output)).subs(t == 0) : evaluate(output);
     if (!GiNaC::is_a<numeric>(value)) {
       std::ostringstream text;
@@ -96,7 +132,7 @@ std::vector<numeric> exact_outputs(const billiards::derive::Kernel& kernel, cons
       throw std::logic_error("kernel " + kernel.name +
                              ": an output did not evaluate to a number: " + text.str());
     }
-    outputs.push_back(GiNaC::ex_to<numeric>(value));
+    outputs.push_back({GiNaC::ex_to<numeric>(value)});
   }
   return outputs;
 }
@@ -111,6 +147,38 @@ numeric changed_velocity(const billiards::derive::Kernel& kernel, const Inputs<S
   if (in.count("v" + ball + "d"))
     return exact_rational(in.at("v" + ball + "d")) / exact_rational(in.at("dd"));
   throw std::invalid_argument("kernel " + kernel.name + ": no velocity for output " + std::to_string(index));
+}
+
+// The time of impact is judged by its backward error: the computed t̂ is the exact contact time of
+// inputs perturbed by how many ulps? Near a graze the root is ill-conditioned (D = pv² − vv (pp − r²)
+// cancels), so a forward error says more about the inputs than the kernel; the residual
+// q(t̂) = vv t̂² + 2 pv t̂ + pp − r², against the sum of the magnitudes of its terms, does not:
+//
+//   scaled ULP = |q(t̂)| / (ε (vv t̂² + 2 |pv| t̂ + pp + r²)).
+//
+// Both +∞ agree. A finite time where the exact answer is +∞, or the other way round, is judged by the
+// perturbation that would flip the decision: |D| / (ε (pv² + vv (pp + r²))) for a graze, and
+// |pv| / (ε √(pp vv)) for a contact that is neither approaching nor separating.
+template <typename Scalar>
+double time_of_impact_error(Scalar computed, const Exact& exact, const Inputs<Scalar>& in) {
+  const numeric pp = exact_rational(in.at("pp")), pv = exact_rational(in.at("pv")),
+                vv = exact_rational(in.at("vv")), r = exact_rational(in.at("contact_distance"));
+  const numeric epsilon = exact_rational(std::numeric_limits<Scalar>::epsilon());
+  const auto in_ulps = [](const numeric& error, const numeric& scale) {
+    if (scale.is_zero()) return error.is_zero() ? 0.0 : 1e6;
+    const numeric ratio = GiNaC::abs(error) / scale;
+    return ratio > numeric(1000000) ? 1e6 : ratio.to_double();
+  };
+  if (exact.infinite && std::isinf(computed)) return 0;
+  if (exact.infinite || std::isinf(computed)) {
+    const numeric discriminant = pv * pv - vv * (pp - r * r);
+    const double graze = in_ulps(discriminant, epsilon * (pv * pv + vv * (pp + r * r)));
+    const double still = std::sqrt(in_ulps(pv * pv, epsilon * epsilon * pp * vv));
+    return std::min(graze, still);
+  }
+  const numeric t = exact_rational(computed);
+  return in_ulps(vv * t * t + 2 * pv * t + pp - r * r,
+                 epsilon * (vv * t * t + 2 * GiNaC::abs(pv) * t + pp + r * r));
 }
 
 template <typename Scalar>
@@ -132,6 +200,7 @@ class InputGenerator {
   Inputs<Scalar> operator()(const billiards::derive::Kernel& kernel, int sample) {
     Inputs<Scalar> in;
     const int mode = sample % 8;  // which adversarial family this sample stresses
+    if (kernel.name == "time_of_impact") return contact_geometry(mode);
     const Scalar limit = std::sqrt(std::numeric_limits<Scalar>::max()) / Scalar(64);
     const Scalar direction_length = log_uniform(std::sqrt(std::numeric_limits<Scalar>::min()), limit);
     for (const ex& parameter : kernel.parameters) {
@@ -168,6 +237,50 @@ class InputGenerator {
   }
 
  private:
+  // Two spheres for the time of impact: contact distance r over six decades, the gap from nearly
+  // touching (a relative 1e-7, or touching up to rounding) to a hundred radii, aimed at each other,
+  // nearly grazing (missing or hitting by 0.1 %) or in any direction (separating or missing).
+  Inputs<Scalar> contact_geometry(int mode) {
+    std::normal_distribution<double> normal;
+    std::array<double, 3> along{}, across{};
+    for (double& x : along) x = normal(random_);
+    for (double& x : across) x = normal(random_);
+    const double along_length = std::sqrt(along[0] * along[0] + along[1] * along[1] + along[2] * along[2]);
+    for (double& x : along) x /= along_length;
+    const double overlap = across[0] * along[0] + across[1] * along[1] + across[2] * along[2];
+    for (int i = 0; i < 3; ++i) across[i] -= overlap * along[i];
+    const double across_length =
+        std::sqrt(across[0] * across[0] + across[1] * across[1] + across[2] * across[2]);
+    for (double& x : across) x /= across_length;
+    const double r = log_uniform(Scalar(1e-3), Scalar(1e3));
+    const double gap = mode == 1   ? 0.0
+                       : mode == 2 ? log_uniform(Scalar(1e-7), Scalar(1))
+                                   : log_uniform(Scalar(1e-3), Scalar(100));
+    const double distance = r * (1 + gap);
+    const double speed = log_uniform(Scalar(1e-3), Scalar(1e3));
+    // Aim: the miss distance b (impact parameter) of the relative line, against r.
+    double aim = unit_(random_) * r * 0.999;
+    if (mode == 3) aim = r * (random_() % 2 ? 0.999 : 1.001);
+    std::array<double, 3> w{};
+    const double sine = std::min(aim / distance, 1.0), cosine = std::sqrt(1 - sine * sine);
+    for (int i = 0; i < 3; ++i) w[i] = speed * (-cosine * along[i] + sine * across[i]);
+    if (mode == 4) {
+      for (double& x : w) x = speed * normal(random_);
+    }
+    std::array<Scalar, 3> p{}, v{};
+    for (int i = 0; i < 3; ++i) {
+      p[i] = static_cast<Scalar>(distance * along[i]);
+      v[i] = static_cast<Scalar>(w[i]);
+    }
+    const auto dot = [](const std::array<Scalar, 3>& a, const std::array<Scalar, 3>& b) {
+      return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+    };
+    return {{"pp", dot(p, p)},
+            {"pv", dot(p, v)},
+            {"vv", dot(v, v)},
+            {"contact_distance", static_cast<Scalar>(r)}};
+  }
+
   Scalar log_uniform(Scalar low, Scalar high) {
     std::uniform_real_distribution<double> exponent(std::log2(static_cast<double>(low)),
                                                     std::log2(static_cast<double>(high)));
@@ -213,20 +326,24 @@ Row measure(const billiards::derive::Kernel& kernel, const char* type, long samp
   for (long sample = 0; sample < samples; ++sample) {
     const Inputs<Scalar> in = generate(kernel, static_cast<int>(sample));
     const std::vector<Scalar> computed = call_kernel<Scalar>(kernel.name, in);
-    const std::vector<numeric> exact = exact_outputs(kernel, in);
+    const std::vector<Exact> exact = exact_outputs(kernel, in);
+    const bool is_time = kernel.name == "time_of_impact";
     for (std::size_t i = 0; i < computed.size(); ++i) {
-      if (!std::isfinite(computed[i])) {
+      if (std::isnan(computed[i]) || (!is_time && std::isinf(computed[i]))) {
         ++row.non_finite;
         continue;
       }
-      const double error = scaled_ulp_error(computed[i], exact[i], changed_velocity(kernel, in, i));
+      const double error =
+          is_time ? time_of_impact_error(computed[i], exact[i], in)
+                  : scaled_ulp_error(computed[i], exact[i].value, changed_velocity(kernel, in, i));
       if (error > row.worst) {
         row.worst = error;
         row.worst_input.clear();
         for (const auto& [name, value] : in)
           row.worst_input += name + "=" + std::to_string(static_cast<double>(value)) + " ";
         std::ostringstream text;
-        text << "output " << i << " computed " << computed[i] << " exact " << exact[i].to_double();
+        text << "output " << i << " computed " << computed[i] << " exact "
+             << (exact[i].infinite ? "inf" : std::to_string(exact[i].value.to_double()));
         row.worst_input += text.str();
       }
     }
@@ -254,6 +371,7 @@ int main(int argc, char** argv) {
     return 2;
   }
 
+  GiNaC::Digits = 60;  // square roots, far beyond double precision
   const billiards::derive::Derivation derivation = billiards::derive::derive_paper();
   std::vector<Row> rows;
   for (const billiards::derive::Kernel& kernel : derivation.kernels) {

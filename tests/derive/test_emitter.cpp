@@ -66,12 +66,39 @@ TEST_CASE("Kernels", "[derive][emitter]") {
   }
   SECTION("a step with a guarded alternative form is the usual form, replaced under its condition") {
     const GiNaC::symbol limit("limit"), change("change");
-    kernel.steps.push_back({change, c1 * s, m1 / m2 > limit, 2 * m2 * s / (m1 + m2)});
+    kernel.steps.push_back({change, c1 * s, {{m1 / m2 > limit, 2 * m2 * s / (m1 + m2)}}});
     kernel.outputs = {change, -c2 * s};
     const EmittedKernel emitted = emit_kernel(kernel);
     CHECK(emitted.body[4] == "Scalar change = c1 * relative_normal_speed;");
     CHECK(emitted.body[5] ==
           "if (m1 / m2 > limit) change = Scalar(2) * m2 * relative_normal_speed / total_mass;");
+  }
+  SECTION("guards apply in order, with every comparison operator, and a square root drops constexpr") {
+    const GiNaC::symbol limit("limit"), change("change");
+    kernel.steps.push_back({change,
+                            GiNaC::sqrt(m1) * s,
+                            {{m1 < limit, 0, Guard::Kind::piecewise},
+                             {m1 <= limit, 1, Guard::Kind::piecewise},
+                             {m1 >= limit, 2, Guard::Kind::piecewise},
+                             {m1 == limit, 3, Guard::Kind::piecewise},
+                             {m1 != limit, 4, Guard::Kind::piecewise}}});
+    kernel.outputs = {change, -c2 * s};
+    const EmittedKernel emitted = emit_kernel(kernel);
+    CHECK(emitted.body[4] == "Scalar change = relative_normal_speed * std::sqrt(m1);");
+    CHECK(emitted.body[5] == "if (m1 < limit) change = Scalar(0);");
+    CHECK(emitted.body[6] == "if (m1 <= limit) change = Scalar(1);");
+    CHECK(emitted.body[7] == "if (m1 >= limit) change = Scalar(2);");
+    CHECK(emitted.body[8] == "if (m1 == limit) change = Scalar(3);");
+    CHECK(emitted.body[9] == "if (m1 != limit) change = Scalar(4);");
+    Derivation derivation;
+    derivation.kernels = {kernel};
+    const std::string header = kernels_header(derivation, "fnv1a64:0123456789abcdef");
+    CHECK(contains(header, "#include <cmath>\n"));
+    CHECK(contains(header, "BILLIARDS_HOST_DEVICE NormalVelocityChange<Scalar> test_kernel("));
+  }
+  SECTION("a guard whose condition is no comparison names the kernel") {
+    kernel.steps.push_back({GiNaC::symbol("change"), c1 * s, {{m1 + m2, 0}}});
+    CHECK_THROWS_WITH(emit_kernel(kernel), Catch::Contains("test_kernel") && Catch::Contains("relational"));
   }
   SECTION("an expression with no C++ form names the kernel") {
     kernel.outputs = {GiNaC::Pi * s};

@@ -7,6 +7,9 @@
 
 #include <Eigen/Core>
 
+#include <cmath>
+#include <limits>
+
 namespace paper {
 
 template <int N>
@@ -38,6 +41,20 @@ Result<N> restitution_collision(long double m1, const Vector<N>& v1, long double
   const Vector<N> n = d / d.norm();
   const long double approach = (v2 - v1).dot(n);
   return {v1 + (1 + e) * m2 / (m1 + m2) * approach * n, v2 - (1 + e) * m1 / (m1 + m2) * approach * n};
+}
+
+// The time of impact, typed from the textbook: spheres at p1 + t v1 and p2 + t v2 touch when
+// |p + t w|² = r² (p = p2 − p1, w = v2 − v1, r the sum of the radii), whose smaller root is
+// (−p·w − √((p·w)² − (w·w)(p·p − r²)))/(w·w). The first contact in the future while approaching, or +∞.
+template <int N>
+long double time_of_impact(const Vector<N>& p1, const Vector<N>& v1, const Vector<N>& p2, const Vector<N>& v2,
+                           long double r) {
+  const Vector<N> p = p2 - p1, w = v2 - v1;
+  const long double a = w.dot(w), b = p.dot(w), c = p.dot(p) - r * r;
+  const long double discriminant = b * b - a * c;
+  if (a == 0 || b >= 0 || discriminant <= 0) return std::numeric_limits<long double>::infinity();
+  const long double t = (-b - std::sqrt(discriminant)) / a;
+  return t < 0 ? 0 : t;
 }
 
 }  // namespace paper

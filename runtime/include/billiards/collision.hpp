@@ -201,6 +201,36 @@ template <typename DP1, typename D1, typename DP2, typename D2>
   return {v1 + change.first * d, v2 + change.second * d};
 }
 
+/// \brief When two spheres moving in straight lines first touch (beyond the paper).
+///
+/// Centres \f$p_1 + t v_1\f$ and \f$p_2 + t v_2\f$ touch when \f$|p + t w| = r\f$, \f$p = p_2 - p_1\f$,
+/// \f$w = v_2 - v_1\f$, \f$r\f$ the contact distance (the sum of the radii): a quadratic
+/// \f$a t^2 + 2 b t + c = 0\f$ with \f$a = w\cdot w\f$, \f$b = p\cdot w\f$, \f$c = p\cdot p - r^2\f$, whose
+/// earlier root is taken in the form \f$t = c/(\sqrt{D} - b)\f$, \f$D = b^2 - a c\f$ (no cancellation, no
+/// division by \f$a\f$). Audit claims `beyond.time_of_impact.*`; kernel kernels::time_of_impact.
+///
+/// \return the earliest \f$t \ge 0\f$ at which the spheres touch while approaching; 0 when they already
+///         touch (or overlap by rounding) and approach; \f$+\infty\f$ when they never touch: separating
+///         (\f$b \ge 0\f$), no relative motion, a miss (\f$D < 0\f$) or a graze (\f$D = 0\f$, no closing
+///         speed at the contact, so nothing to resolve).
+///
+/// Preconditions (not checked): \f$r > 0\f$ and finite; every component finite and
+/// \f$|p|^2 |w|^2\f$ below the type's largest finite value (else \f$b^2\f$ overflows).
+template <typename DP1, typename D1, typename DP2, typename D2>
+[[nodiscard]] typename D1::Scalar time_of_impact(const Eigen::MatrixBase<DP1>& p1,
+                                                 const Eigen::MatrixBase<D1>& v1,
+                                                 const Eigen::MatrixBase<DP2>& p2,
+                                                 const Eigen::MatrixBase<D2>& v2,
+                                                 typename D1::Scalar contact_distance) noexcept {
+  detail::require_same_vector_type<D1, D2>();
+  detail::require_same_vector_type<D1, DP1>();
+  detail::require_same_vector_type<D1, DP2>();
+  assert(contact_distance > 0 && std::isfinite(contact_distance) &&
+         "billiards: the contact distance must be positive and finite");
+  const detail::PlainVector<D1> p = p2 - p1, w = v2 - v1;
+  return kernels::time_of_impact(p.squaredNorm(), p.dot(w), w.squaredNorm(), contact_distance);
+}
+
 /// \brief A ball bouncing off an immovable cushion: the reflection \f$v - 2 (v\cdot n)\,n = -n v n\f$.
 ///
 /// The paper's limit \f$m_2 \to \infty\f$ with \f$v_2 = 0\f$; the same bits as
