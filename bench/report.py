@@ -70,6 +70,19 @@ def batch_table(runs):
     return "\n".join(lines)
 
 
+def table_events(runs):
+    rows = sorted((int(name.split("/")[-1]), b) for name, b in runs.items() if name.startswith("table/events/"))
+    if not rows:
+        return "(not in this run)"
+    lines = ["| balls | events/s | ns per event | ns per event and ball | cost per event against 16 balls |",
+             "|---:|---:|---:|---:|---:|"]
+    base = per_item_ns(rows[0][1])
+    for balls, b in rows:
+        ns = per_item_ns(b)
+        lines.append(f"| {balls} | {b['items_per_second'] / 1e3:,.0f} k | {ns:,.0f} | {ns / balls:.1f} | {ns / base:.1f}× |")
+    return "\n".join(lines)
+
+
 def svg(runs, path):
     width, height, left, bottom, top, right = 720, 420, 70, 50, 20, 150
     series = []
@@ -147,6 +160,14 @@ of that same run.
 {batch_table(runs)}
 
 {"![throughput against N](throughput.svg)" if svg_written else ""}
+
+## The event-driven table (examples/), events per second as the balls grow
+
+At a constant density (the area per ball of 16 balls on a 9-ft table); each event re-predicts the one
+or two balls it changed against every other ball (naive all-pairs prediction), so the cost per event
+grows as O(N): the last column should grow about as the number of balls.
+
+{table_events(runs)}
 """
     with open(os.path.join(HERE, "RESULTS.md"), "w", encoding="utf-8") as f:
         f.write(text)

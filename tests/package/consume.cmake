@@ -51,6 +51,13 @@ elseif(STEP STREQUAL "pkg_config")
   file(MAKE_DIRECTORY ${SCRATCH}/pkg_config)
   run(${CXX} -std=c++20 ${cflags} ${tests}/consumer_main.cpp -o ${SCRATCH}/pkg_config/consumer)
   run(${SCRATCH}/pkg_config/consumer)
+elseif(STEP STREQUAL "examples")
+  # examples/ is a project of its own that finds the installed package, as a user's program would.
+  file(REMOVE_RECURSE ${SCRATCH}/examples)
+  run(${CMAKE_COMMAND} -S ${SOURCE}/examples -B ${SCRATCH}/examples -DCMAKE_CXX_COMPILER=${CXX}
+      -DCMAKE_BUILD_TYPE=Release -DCMAKE_PREFIX_PATH=${prefix})
+  run(${CMAKE_COMMAND} --build ${SCRATCH}/examples)
+  run(${SCRATCH}/examples/billiards-table --collisions 1000 --max-drift 1e-12)
 else()
   message(FATAL_ERROR "unknown STEP '${STEP}'")
 endif()

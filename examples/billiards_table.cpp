@@ -1,0 +1,130 @@
+// billiards-table: an event-driven billiards table on billiards::runtime (see table.hpp), run for a
+// number of ball–ball collisions; prints the relative drift of the kinetic energy and the events per
+// second, and can draw the trajectories as SVG.
+//
+//   billiards-table [--balls N] [--width W] [--height H] [--radius R] [--seed S] [--collisions C]
+//                   [--setup FILE | --break] [--svg FILE] [--max-drift X] [--check-every-pair true|false]
+//
+// Exit status: 0 on success; 1 when the drift exceeds --max-drift or two balls overlapped; 2 on a bad
+// command line or setup (one line on stderr naming what and why); 3 when the SVG cannot be written.
+#include "table.hpp"
+#include "table_io.hpp"
+
+#include <CLI/CLI.hpp>
+
+#include <chrono>
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+#include <string>
+
+int main(int argc, char** argv) {
+  using namespace billiards_example;
+  CLI::App app{
+      "An event-driven billiards table on billiards::runtime: runs C ball-ball collisions and reports "
+      "the drift of the kinetic energy.",
+      "billiards-table"};
+  std::size_t balls = 16;
+  Setup table;
+  std::uint64_t seed = 1;
+  std::uint64_t collisions = 1000000;
+  std::string setup_file, svg_file;
+  bool break_shot = false, check_every_pair = true;
+  double max_drift = -1;
+  std::uint64_t svg_events = 120;
+  app.add_option("--balls", balls, "Number of balls placed at random (default 16)")
+      ->check(CLI::PositiveNumber);
+  app.add_option("--width", table.width, "Table width in metres (default 2.54)")->check(CLI::PositiveNumber);
+  app.add_option("--height", table.height, "Table height in metres (default 1.27)")
+      ->check(CLI::PositiveNumber);
+  app.add_option("--radius", table.radius, "Ball radius in metres (default 0.028575)")
+      ->check(CLI::PositiveNumber);
+  app.add_option("--seed", seed, "Seed of the random placement (default 1)");
+  app.add_option("--collisions", collisions, "Ball-ball collisions to run (default 1000000)");
+  auto* setup_option =
+      app.add_option("--setup", setup_file, "Read the table and balls from FILE (see examples/README.md)")
+          ->check(CLI::ExistingFile);
+  app.add_flag("--break", break_shot, "Rack 15 balls and strike the cue ball at the apex")
+      ->excludes(setup_option);
+  app.add_option("--svg", svg_file, "Write the trajectories of the first --svg-events events to FILE");
+  app.add_option("--svg-events", svg_events, "Events drawn in the SVG (default 120)")
+      ->check(CLI::PositiveNumber);
+  app.add_option("--max-drift", max_drift, "Exit 1 if the relative drift of the kinetic energy exceeds this");
+  app.add_option("--check-every-pair", check_every_pair,
+                 "Check every pair for overlap at each event (default true; false: the event's balls only)");
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& help) {
+    return app.exit(help);
+  } catch (const CLI::ParseError& error) {
+    std::cerr << "billiards-table: " << error.what() << " (run with --help for usage)\n";
+    return 2;
+  }
+
+  Setup setup;
+  try {
+    if (!setup_file.empty()) {
+      std::ifstream in(setup_file);
+      setup = read_setup(in, setup_file);
+    } else if (break_shot) {
+      setup = break_setup(table);
+    } else {
+      setup = random_setup(table, balls, seed);
+    }
+    validate(setup);
+  } catch (const std::invalid_argument& error) {
+    std::cerr << "billiards-table: bad setup: " << error.what() << "\n";
+    return 2;
+  }
+
+  Simulation simulation(setup, check_every_pair);
+  Trajectories trajectories(setup);
+  const long double initial_energy = simulation.kinetic_energy();
+  const auto start = std::chrono::steady_clock::now();
+  try {
+    while (simulation.ball_collisions() < collisions) {
+      const Event event = simulation.step();
+      if (!svg_file.empty() && simulation.events() <= svg_events) {
+        trajectories.record(event, simulation.balls());
+        if (simulation.events() == svg_events) trajectories.finish(simulation.balls());
+      }
+    }
+  } catch (const std::logic_error& error) {
+    std::cerr << "billiards-table: " << error.what() << "\n";
+    return 1;
+  }
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const long double final_energy = simulation.kinetic_energy();
+  const double drift = static_cast<double>(std::fabs(final_energy - initial_energy) / initial_energy);
+
+  std::printf("billiards-table: %zu balls on a %g x %g table (radius %g)\n", setup.balls.size(), setup.width,
+              setup.height, setup.radius);
+  std::printf("events: %llu (ball-ball collisions %llu, cushion %llu) over %.6g s of table time\n",
+              static_cast<unsigned long long>(simulation.events()),
+              static_cast<unsigned long long>(simulation.ball_collisions()),
+              static_cast<unsigned long long>(simulation.cushion_collisions()), simulation.time());
+  std::printf("kinetic energy: initial %.17Lg, final %.17Lg\n", initial_energy, final_energy);
+  std::printf("relative drift of the kinetic energy: %.3e\n", drift);
+  std::printf("largest overlap at an event: %.3e of a radius (allowed %.0e)\n", simulation.largest_overlap(),
+              Simulation::overlap_tolerance);
+  std::printf("events per second: %.4g (%.3f s)\n", static_cast<double>(simulation.events()) / seconds,
+              seconds);
+
+  if (!svg_file.empty()) {
+    if (simulation.events() < svg_events) trajectories.finish(simulation.balls());
+    try {
+      write_file_atomically(
+          svg_file, trajectories.svg("billiards-table: the first " + std::to_string(svg_events) + " events"));
+      std::printf("wrote %s\n", svg_file.c_str());
+    } catch (const std::runtime_error& error) {
+      std::cerr << "billiards-table: " << error.what() << "\n";
+      return 3;
+    }
+  }
+  if (max_drift >= 0 && drift > max_drift) {
+    std::cerr << "billiards-table: the relative drift " << drift << " exceeds --max-drift " << max_drift
+              << "\n";
+    return 1;
+  }
+  return 0;
+}

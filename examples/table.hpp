@@ -1,0 +1,345 @@
+// An event-driven billiards table on billiards::runtime: N equal balls on a rectangular table with
+// cushions. No time stepping: the simulation jumps from one contact to the next, the earliest
+// ball–ball contact (billiards::time_of_impact, the emitted kernel of audit claims
+// beyond.time_of_impact.*) or ball–cushion contact, and resolves it exactly there —
+// billiards::collide_if_approaching for two balls (so rounding can never make a separating pair
+// collide again) and billiards::collide with an infinite mass for a cushion (the immovable-body form).
+// No velocity is ever corrected.
+//
+// Cost: each event re-predicts the one or two balls it changed against every other ball, O(N) per
+// event (naive all-pairs prediction), plus O(log E) for the event queue and O(N) to move every ball
+// to the event's time. See README "An event-driven table".
+#pragma once
+
+#include <billiards/collision.hpp>
+
+#include <Eigen/Core>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <random>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace billiards_example {
+
+using Vector = Eigen::Vector2d;
+
+struct Ball {
+  Vector position;
+  Vector velocity;
+};
+
+/// A table and the balls on it. All balls have the same radius and mass.
+struct Setup {
+  double width = 2.54;       ///< metres, the playing area of a 9-ft table
+  double height = 1.27;      ///< metres
+  double radius = 0.028575;  ///< metres (57.15 mm balls)
+  double mass = 0.17;        ///< kilograms
+  std::vector<Ball> balls;
+};
+
+/// Rejects a setup that is not a valid table: a clear message naming the ball, the value and what was
+/// expected. Throws std::invalid_argument.
+inline void validate(const Setup& setup) {
+  const auto fail = [](const std::string& message) { throw std::invalid_argument(message); };
+  const auto positive = [&](const char* name, double value) {
+    if (!(value > 0) || !std::isfinite(value)) {
+      std::ostringstream text;
+      text << name << " is " << value << ", expected a positive finite number";
+      fail(text.str());
+    }
+  };
+  positive("width", setup.width);
+  positive("height", setup.height);
+  positive("radius", setup.radius);
+  positive("mass", setup.mass);
+  if (setup.balls.empty()) fail("no balls: expected at least one");
+  const double r = setup.radius;
+  for (std::size_t i = 0; i < setup.balls.size(); ++i) {
+    const Ball& ball = setup.balls[i];
+    std::ostringstream text;
+    if (!ball.position.allFinite() || !ball.velocity.allFinite()) {
+      text << "ball " << i << " has a position or velocity that is not finite";
+      fail(text.str());
+    }
+    const Vector& p = ball.position;
+    if (p.x() < r || p.x() > setup.width - r || p.y() < r || p.y() > setup.height - r) {
+      text << "ball " << i << " at (" << p.x() << ", " << p.y() << ") is outside the table: expected its "
+           << "centre within [" << r << ", " << setup.width - r << "] x [" << r << ", " << setup.height - r
+           << "] (a radius from every cushion)";
+      fail(text.str());
+    }
+    for (std::size_t j = 0; j < i; ++j) {
+      const double distance = (setup.balls[j].position - p).norm();
+      if (distance < 2 * r) {
+        text << "balls " << j << " and " << i << " overlap: their centres are " << distance
+             << " apart, expected at least two radii (" << 2 * r << ")";
+        fail(text.str());
+      }
+    }
+  }
+}
+
+/// `count` balls at random, non-overlapping positions with speeds in [0.5, 1.5] × `speed` in random
+/// directions. Random placement jams at about 55 % of the area covered (random sequential adsorption),
+/// so more than half is rejected at once. Throws std::invalid_argument when they do not fit.
+inline Setup random_setup(Setup table, std::size_t count, std::uint64_t seed, double speed = 1.0) {
+  constexpr double pi = 3.14159265358979323846;
+  const double r = table.radius;
+  const auto cannot_place = [&](const std::string& why) {
+    std::ostringstream text;
+    text << "balls is " << count << ": cannot place that many balls of radius " << r << " at random on a "
+         << table.width << " x " << table.height << " table (" << why << "), expected fewer";
+    throw std::invalid_argument(text.str());
+  };
+  const double coverage =
+      static_cast<double>(count) * pi * r * r / ((table.width - 2 * r) * (table.height - 2 * r));
+  if (!(table.width > 2 * r && table.height > 2 * r) || coverage > 0.5) {
+    std::ostringstream why;
+    why << "they would cover " << 100 * coverage << " % of it, at most 50 % can be placed at random";
+    cannot_place(why.str());
+  }
+  std::mt19937_64 random(seed);
+  std::uniform_real_distribution<double> x(r, table.width - r), y(r, table.height - r), angle(0, 2 * pi),
+      magnitude(0.5 * speed, 1.5 * speed);
+  table.balls.clear();
+  for (std::size_t failures = 0; table.balls.size() < count;) {
+    const Vector p(x(random), y(random));
+    const bool free = std::all_of(table.balls.begin(), table.balls.end(),
+                                  [&](const Ball& other) { return (other.position - p).norm() >= 2 * r; });
+    if (!free) {
+      if (++failures > 100000) cannot_place("no free place found in 100000 tries");
+      continue;
+    }
+    failures = 0;
+    const double a = angle(random), s = magnitude(random);
+    table.balls.push_back({p, Vector(s * std::cos(a), s * std::sin(a))});
+  }
+  return table;
+}
+
+/// The break: fifteen balls racked in a triangle (a gap of 1e-4 radii between neighbours) at the foot
+/// spot, and the cue ball struck from the head string straight at the apex ball at `speed`.
+inline Setup break_setup(Setup table, double speed = 8.0) {
+  const double r = table.radius, spacing = 2 * r * (1 + 1e-4);
+  const Vector apex(0.75 * table.width, 0.5 * table.height);
+  table.balls.clear();
+  table.balls.push_back({Vector(0.25 * table.width, 0.5 * table.height), Vector(speed, 0)});  // the cue ball
+  for (int row = 0; row < 5; ++row) {
+    for (int k = 0; k <= row; ++k) {
+      const Vector p = apex + Vector(row * spacing * std::sqrt(3.0) / 2, (k - row / 2.0) * spacing);
+      table.balls.push_back({p, Vector(0, 0)});
+    }
+  }
+  return table;
+}
+
+/// What an event was.
+struct Event {
+  enum class Kind { ball, cushion } kind = Kind::ball;
+  double time = 0;
+  std::size_t first = 0;   ///< a ball
+  std::size_t second = 0;  ///< the other ball, or the cushion: 0 left, 1 right, 2 bottom, 3 top
+  bool resolved = false;   ///< velocities changed (an approaching contact)
+};
+
+class Simulation {
+ public:
+  /// Validates `setup` (std::invalid_argument on a bad one) and predicts every ball's first event.
+  /// `check_every_pair`: after each event, check every pair of balls for overlap (O(N²) per event);
+  /// otherwise only the balls of the event against all others (O(N)).
+  explicit Simulation(Setup setup, bool check_every_pair = true)
+      : setup_(std::move(setup)),
+        check_every_pair_(check_every_pair),
+        collisions_(setup_.balls.size(), 0),
+        predictions_(setup_.balls.size(), 0) {
+    validate(setup_);
+    for (std::size_t i = 0; i < setup_.balls.size(); ++i) predict(i);
+  }
+
+  /// The largest overlap allowed at an event, as a fraction of the radius.
+  static constexpr double overlap_tolerance = 1e-9;
+
+  /// Moves every ball to the next event and resolves it. Throws std::logic_error if, after it, two
+  /// balls overlap by more than overlap_tolerance of a radius or a ball has left the table.
+  Event step() {
+    for (;;) {
+      if (queue_.empty()) throw std::logic_error("no event will ever happen: every ball is at rest");
+      std::pop_heap(queue_.begin(), queue_.end(), std::greater<>());
+      const Prediction next = queue_.back();
+      queue_.pop_back();
+      if (next.serial != predictions_[next.ball]) continue;  // superseded by a later prediction
+      if (next.partner_is_ball && next.partner_collisions != collisions_[next.partner]) {
+        predict(next.ball);  // the partner moved differently since: predict this ball again
+        continue;
+      }
+      advance_by(next.time);
+      Event event;
+      event.time = static_cast<double>(elapsed_);
+      event.first = next.ball;
+      event.second = next.partner;
+      if (next.partner_is_ball) {
+        Ball& a = setup_.balls[next.ball];
+        Ball& b = setup_.balls[next.partner];
+        const auto [x1, x2] = billiards::collide_if_approaching(setup_.mass, a.position, a.velocity,
+                                                                setup_.mass, b.position, b.velocity);
+        event.resolved = x1 != a.velocity || x2 != b.velocity;
+        a.velocity = x1;
+        b.velocity = x2;
+        if (event.resolved) ++ball_collisions_;
+      } else {
+        event.kind = Event::Kind::cushion;
+        Ball& a = setup_.balls[next.ball];
+        const Vector n = cushion_normal(next.partner);
+        const double wall = std::numeric_limits<double>::infinity();
+        if (a.velocity.dot(n) < 0) {  // approaching the cushion
+          a.velocity = billiards::collide(setup_.mass, a.velocity, wall, Vector::Zero().eval(), n).first;
+          event.resolved = true;
+          ++cushion_collisions_;
+        }
+      }
+      ++events_;
+      ++collisions_[next.ball];
+      predict(next.ball);
+      if (next.partner_is_ball) {
+        ++collisions_[next.partner];
+        predict(next.partner);
+      }
+      check(event);
+      return event;
+    }
+  }
+
+  /// Table time since the start.
+  double time() const { return static_cast<double>(elapsed_); }
+  const Setup& setup() const { return setup_; }
+  const std::vector<Ball>& balls() const { return setup_.balls; }
+  /// Events processed, including contacts that were already separating (nothing to resolve).
+  std::uint64_t events() const { return events_; }
+  /// Ball–ball contacts resolved (the balls approached and their velocities changed).
+  std::uint64_t ball_collisions() const { return ball_collisions_; }
+  /// Ball–cushion contacts resolved.
+  std::uint64_t cushion_collisions() const { return cushion_collisions_; }
+  /// The largest overlap seen at any event so far, as a fraction of the radius (0 if none).
+  double largest_overlap() const { return largest_overlap_; }
+
+  /// Σ ½ m v², summed in long double so that the sum adds no rounding of its own to the drift.
+  long double kinetic_energy() const {
+    long double sum = 0;
+    for (const Ball& ball : setup_.balls)
+      sum += 0.5L * setup_.mass * ball.velocity.cast<long double>().squaredNorm();
+    return sum;
+  }
+
+ private:
+  struct Prediction {
+    double time;
+    std::size_t ball;
+    std::size_t partner;
+    bool partner_is_ball;
+    std::uint64_t serial;              ///< the ball's prediction it belongs to
+    std::uint64_t partner_collisions;  ///< the partner's collision count when predicted
+    bool operator>(const Prediction& other) const { return time > other.time; }
+  };
+
+  static Vector cushion_normal(std::size_t cushion) {
+    switch (cushion) {
+      case 0: return Vector(1, 0);    // left cushion, pointing into the table
+      case 1: return Vector(-1, 0);   // right
+      case 2: return Vector(0, 1);    // bottom
+      default: return Vector(0, -1);  // top
+    }
+  }
+
+  // The ball's earliest event from now: against every other ball and the four cushions.
+  void predict(std::size_t i) {
+    const Ball& ball = setup_.balls[i];
+    const double r = setup_.radius;
+    Prediction best{std::numeric_limits<double>::infinity(), i, 0, false, ++predictions_[i], 0};
+    const auto consider = [&](double dt, std::size_t partner, bool is_ball) {
+      if (dt < best.time) {
+        best.time = dt;
+        best.partner = partner;
+        best.partner_is_ball = is_ball;
+        best.partner_collisions = is_ball ? collisions_[partner] : 0;
+      }
+    };
+    for (std::size_t j = 0; j < setup_.balls.size(); ++j) {
+      if (j == i) continue;
+      const Ball& other = setup_.balls[j];
+      consider(billiards::time_of_impact(ball.position, ball.velocity, other.position, other.velocity, 2 * r),
+               j, true);
+    }
+    // A cushion is met when the centre is a radius from it, moving towards it.
+    const double limits[4] = {r, setup_.width - r, r, setup_.height - r};
+    for (std::size_t cushion = 0; cushion < 4; ++cushion) {
+      const int axis = cushion < 2 ? 0 : 1;
+      const double speed = ball.velocity[axis], distance = limits[cushion] - ball.position[axis];
+      const bool towards = cushion % 2 == 0 ? speed < 0 : speed > 0;
+      if (towards) consider(std::max(0.0, distance / speed), cushion, false);
+    }
+    if (std::isfinite(best.time)) {
+      queue_.push_back(best);
+      std::push_heap(queue_.begin(), queue_.end(), std::greater<>());
+    }
+  }
+
+  // Moves every ball by dt and makes now the origin of the queue's times. Predictions are kept
+  // relative to the last event: absolute times would grow without bound and, at 10^5 s of table time,
+  // round by more than a ball moves in 1e-9 of a radius. Subtracting one number from every key keeps
+  // the heap ordered.
+  void advance_by(double dt) {
+    for (Ball& ball : setup_.balls) ball.position += dt * ball.velocity;
+    for (Prediction& prediction : queue_) prediction.time = std::max(0.0, prediction.time - dt);
+    elapsed_ += dt;
+  }
+
+  // No two balls overlap by more than overlap_tolerance of a radius, and every ball is on the table.
+  void check(const Event& event) {
+    const double r = setup_.radius, allowed = overlap_tolerance * r;
+    const std::size_t count = setup_.balls.size();
+    const auto check_pair = [&](std::size_t i, std::size_t j) {
+      const double overlap = 2 * r - (setup_.balls[i].position - setup_.balls[j].position).norm();
+      largest_overlap_ = std::max(largest_overlap_, overlap / r);
+      if (overlap > allowed) {
+        std::ostringstream text;
+        text << "balls " << i << " and " << j << " overlap by " << overlap / r
+             << " of a radius at t = " << time() << " (event " << events_ << "), more than "
+             << overlap_tolerance;
+        throw std::logic_error(text.str());
+      }
+    };
+    for (std::size_t i = 0; i < count; ++i) {
+      const bool involved = i == event.first || (event.kind == Event::Kind::ball && i == event.second);
+      if (!check_every_pair_ && !involved) continue;
+      for (std::size_t j = 0; j < count; ++j) {
+        if (j != i && (check_every_pair_ ? j > i : true)) check_pair(i, j);
+      }
+      const Vector& p = setup_.balls[i].position;
+      if (p.x() < r - allowed || p.x() > setup_.width - r + allowed || p.y() < r - allowed ||
+          p.y() > setup_.height - r + allowed) {
+        std::ostringstream text;
+        text << "ball " << i << " left the table at t = " << time() << ": (" << p.x() << ", " << p.y() << ")";
+        throw std::logic_error(text.str());
+      }
+    }
+  }
+
+  Setup setup_;
+  bool check_every_pair_;
+  long double elapsed_ = 0;
+  std::vector<std::uint64_t> collisions_;   ///< per ball: how often its velocity was resolved
+  std::vector<std::uint64_t> predictions_;  ///< per ball: the serial of its current prediction
+  std::vector<Prediction> queue_;           ///< a min-heap on time, relative to the last event
+  std::uint64_t events_ = 0;
+  std::uint64_t ball_collisions_ = 0;
+  std::uint64_t cushion_collisions_ = 0;
+  double largest_overlap_ = 0;
+};
+
+}  // namespace billiards_example

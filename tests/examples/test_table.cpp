@@ -1,0 +1,180 @@
+// The event-driven table of examples/: long-run conservation, the physics of simple cases against
+// hand-worked answers, the break, rejected setups, the setup file and the SVG.
+#include "table.hpp"
+#include "table_io.hpp"
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+using namespace billiards_example;
+
+namespace {
+
+Setup empty_table() {
+  Setup setup;
+  setup.balls.clear();
+  return setup;
+}
+
+long double relative_drift(long double before, long double after) {
+  return std::fabs(after - before) / before;
+}
+
+}  // namespace
+
+TEST_CASE("A shortened long run conserves the kinetic energy", "[examples][table]") {
+  // 16 balls until 10^4 ball-ball collisions, no velocity correction of any kind.
+  Simulation simulation(random_setup(Setup{}, 16, 1));
+  const long double before = simulation.kinetic_energy();
+  while (simulation.ball_collisions() < 10000) simulation.step();
+  CHECK(relative_drift(before, simulation.kinetic_energy()) <= 1e-12L);
+  CHECK(simulation.largest_overlap() <= Simulation::overlap_tolerance);
+  CHECK(simulation.cushion_collisions() > 0);
+  CHECK(simulation.events() >= simulation.ball_collisions() + simulation.cushion_collisions());
+}
+
+TEST_CASE("Simple tables against hand-worked answers", "[examples][table]") {
+  Setup setup = empty_table();
+  setup.width = 4;
+  setup.height = 2;
+  setup.radius = 0.5;
+  setup.mass = 2;
+  SECTION("equal balls head on: the moving one stops and the other leaves at its speed") {
+    setup.balls = {{Vector(1, 1), Vector(1, 0)}, {Vector(3, 1), Vector(0, 0)}};
+    Simulation simulation(setup);
+    const Event event = simulation.step();
+    CHECK(event.kind == Event::Kind::ball);
+    CHECK(event.resolved);
+    CHECK(event.time == 1);  // the gap of 2 − 1 closes at 1
+    CHECK(simulation.balls()[0].velocity == Vector(0, 0));
+    CHECK(simulation.balls()[1].velocity == Vector(1, 0));
+  }
+  SECTION("a ball meets the cushion a radius away and is reflected exactly") {
+    setup.balls = {{Vector(2, 1), Vector(0.25, 0.5)}};
+    Simulation simulation(setup);
+    const Event event = simulation.step();
+    CHECK(event.kind == Event::Kind::cushion);
+    CHECK(event.second == 3);  // the top cushion: y = 2 − 0.5 is reached after 1
+    CHECK(event.time == 1);
+    CHECK(simulation.balls()[0].position == Vector(2.25, 1.5));
+    CHECK(simulation.balls()[0].velocity == Vector(0.25, -0.5));
+  }
+  SECTION("a single ball bouncing between the cushions keeps its speed exactly") {
+    setup.balls = {{Vector(1.3, 0.7), Vector(0.37, -0.91)}};
+    Simulation simulation(setup);
+    for (int i = 0; i < 1000; ++i) simulation.step();
+    CHECK(simulation.balls()[0].velocity.cwiseAbs() == Vector(0.37, 0.91));
+  }
+  SECTION("balls at rest have no event") {
+    setup.balls = {{Vector(1, 1), Vector(0, 0)}};
+    Simulation simulation(setup);
+    CHECK_THROWS_WITH(simulation.step(), Catch::Contains("at rest"));
+  }
+}
+
+TEST_CASE("The break", "[examples][table]") {
+  Simulation simulation(break_setup(Setup{}));
+  REQUIRE(simulation.balls().size() == 16);
+  const Event first = simulation.step();
+  // The cue ball covers half the table less two radii at 8 m/s before it meets the apex ball.
+  const Setup& table = simulation.setup();
+  CHECK(first.kind == Event::Kind::ball);
+  CHECK(first.first + first.second == 1);  // balls 0 and 1
+  CHECK(first.time == Approx((0.5 * table.width - 2 * table.radius) / 8).epsilon(1e-12));
+  const long double before = 0.5L * table.mass * 64;
+  while (simulation.ball_collisions() < 500) simulation.step();
+  CHECK(relative_drift(before, simulation.kinetic_energy()) <= 1e-12L);
+  int moving = 0;
+  for (const Ball& ball : simulation.balls()) moving += ball.velocity.norm() > 0;
+  CHECK(moving == 16);
+}
+
+TEST_CASE("Bad setups are rejected with a clear error", "[examples][table]") {
+  Setup setup = empty_table();
+  SECTION("overlapping balls") {
+    setup.balls = {{Vector(1, 0.5), Vector(0, 0)}, {Vector(1.05, 0.5), Vector(0, 0)}};
+    CHECK_THROWS_WITH(validate(setup), Catch::Contains("balls 0 and 1 overlap") && Catch::Contains("0.05"));
+  }
+  SECTION("a ball outside the table") {
+    setup.balls = {{Vector(3, 0.5), Vector(0, 0)}};
+    CHECK_THROWS_WITH(validate(setup), Catch::Contains("ball 0 at (3, 0.5) is outside the table"));
+  }
+  SECTION("a ball closer to a cushion than its radius") {
+    setup.balls = {{Vector(0.01, 0.5), Vector(0, 0)}};
+    CHECK_THROWS_WITH(validate(setup), Catch::Contains("outside the table"));
+  }
+  SECTION("a radius that is not positive") {
+    setup.radius = 0;
+    setup.balls = {{Vector(1, 0.5), Vector(0, 0)}};
+    CHECK_THROWS_WITH(validate(setup), Catch::Contains("radius is 0, expected a positive finite number"));
+  }
+  SECTION("no balls") { CHECK_THROWS_WITH(validate(setup), Catch::Contains("no balls")); }
+  SECTION("more balls than fit") {
+    CHECK_THROWS_WITH(random_setup(Setup{}, 100000, 1), Catch::Contains("balls is 100000: cannot place"));
+  }
+  SECTION("the simulation validates too") {
+    setup.balls = {{Vector(3, 0.5), Vector(0, 0)}};
+    CHECK_THROWS_AS(Simulation(setup), std::invalid_argument);
+  }
+}
+
+TEST_CASE("Setup files", "[examples][table]") {
+  SECTION("every directive, comments and blank lines") {
+    std::istringstream in(
+        "# two balls\ntable 3 1.5\nradius 0.1\n\nmass 0.2  # kg\nball 1 0.75 1 0\nball 2 0.75 0 0\n");
+    const Setup setup = read_setup(in, "two.setup");
+    CHECK(setup.width == 3);
+    CHECK(setup.height == 1.5);
+    CHECK(setup.radius == 0.1);
+    CHECK(setup.mass == 0.2);
+    REQUIRE(setup.balls.size() == 2);
+    CHECK(setup.balls[1].position == Vector(2, 0.75));
+  }
+  SECTION("an unknown directive names the file and line") {
+    std::istringstream in("table 3 1.5\nballs 1 1 0 0\n");
+    CHECK_THROWS_WITH(
+        read_setup(in, "bad.setup"),
+        Catch::Contains("bad.setup:2: unknown directive 'balls'") && Catch::Contains("expected"));
+  }
+  SECTION("a wrong number of numbers") {
+    std::istringstream in("ball 1 1 0\n");
+    CHECK_THROWS_WITH(read_setup(in, "bad.setup"),
+                      Catch::Contains("bad.setup:1: ball: 3 numbers, expected 4"));
+  }
+  SECTION("something that is not a number") {
+    std::istringstream in("radius big\n");
+    CHECK_THROWS_WITH(read_setup(in, "bad.setup"), Catch::Contains("'big' is not a finite number"));
+  }
+  SECTION("an invalid table names the file") {
+    std::istringstream in("ball 1 0.5 0 0\nball 1.01 0.5 0 0\n");
+    CHECK_THROWS_WITH(read_setup(in, "bad.setup"), Catch::Contains("bad.setup: balls 0 and 1 overlap"));
+  }
+}
+
+TEST_CASE("Trajectories as SVG", "[examples][table]") {
+  Simulation simulation(break_setup(Setup{}));
+  Trajectories trajectories(simulation.setup());
+  for (int i = 0; i < 40; ++i) trajectories.record(simulation.step(), simulation.balls());
+  trajectories.finish(simulation.balls());
+  const std::string svg = trajectories.svg("the break");
+  CHECK(svg.rfind("<svg xmlns=\"http://www.w3.org/2000/svg\"", 0) == 0);
+  CHECK(svg.find("</svg>\n") == svg.size() - 7);
+  std::size_t polylines = 0;
+  for (std::size_t at = svg.find("<polyline"); at != std::string::npos; at = svg.find("<polyline", at + 1))
+    ++polylines;
+  CHECK(polylines == 16);
+  const std::filesystem::path path = std::filesystem::temp_directory_path() / "billiards_test_break.svg";
+  write_file_atomically(path, svg);
+  std::ifstream in(path);
+  const std::string written((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  CHECK(written == svg);
+  CHECK_FALSE(std::filesystem::exists(path.string() + ".tmp"));
+  std::filesystem::remove(path);
+  CHECK_THROWS_WITH(write_file_atomically("/nonexistent-folder/x.svg", svg),
+                    Catch::Contains("/nonexistent-folder/x.svg"));
+}
