@@ -1543,6 +1543,39 @@ Derivation derive_paper(const Definitions& definitions) {
         .claims = {"kernel.cushion_velocity_change", "cushion.limit"},
         .names = {},
     });
+    // The raw derivation, for the benchmark: the coefficients A, B, C as read off, D = B² − 4AC, and the
+    // root (−B ± √D)/(2A) with the sign of (v2 − v1)·n, the collision root whichever the sign
+    // (roots.quadratic_formula.*: for s ≥ 0 the "+" root is (P·n + m2 s)/(m1 + m2), for s < 0 the "−"
+    // one); x2·n from momentum.
+    {
+      const GiNaC::symbol a_name("quadratic_a"), b_name("quadratic_b"), c_name("quadratic_c");
+      const GiNaC::symbol d_name("discriminant"), root_name("signed_root"), x1_name("x1n"), x2_name("x2n");
+      result.reference_kernels.push_back({
+          .name = "raw_normal_velocity_change",
+          .brief = "For the benchmark only: the paper's derivation before simplification. The quadratic in "
+                   "x1·n with its coefficients as read off, D = B² − 4AC, the root (−B ± √D)/(2A) with the "
+                   "sign of (v2 − v1)·n (the collision root), x2·n from momentum; returns the changes x1·n − "
+                   "v1·n and x2·n − v2·n. Finite masses only.",
+          .parameters = {s.m1, s.m2, s.v1n, s.v2n},
+          .steps = {{a_name, A},
+                    {b_name, B},
+                    {c_name, C},
+                    // D ≥ 0 exactly (discriminant.nonnegative); rounding can make it negative when the
+                    // contact is nearly tangent, and √ of that would be NaN.
+                    {d_name, b_name * b_name - 4 * a_name * c_name, {{d_name < 0, 0}}},
+                    {root_name,
+                     GiNaC::sqrt(d_name),
+                     {{s.v2n - s.v1n < 0, -GiNaC::sqrt(d_name), Guard::Kind::piecewise}}},
+                    {x1_name, (-b_name + root_name) / (2 * a_name)},
+                    {x2_name, x2n_solved.subs(s.x1n == x1_name)}},
+          .outputs = {x1_name - s.v1n, x2_name - s.v2n},
+          .claims = {"quadratic.coefficient_a", "quadratic.coefficient_b", "quadratic.coefficient_c",
+                     "discriminant.paper_form", "discriminant.nonnegative",
+                     "roots.quadratic_formula.relative_speed_nonnegative",
+                     "roots.quadratic_formula.relative_speed_negative", "quadratic.x2_from_momentum"},
+          .names = {},
+      });
+    }
     // The time of impact in the dot products pp = p·p, pv = p·w, vv = w·w: the coefficients read off
     // in components, the last component eliminated through each dot product.
     const GiNaC::realsymbol pp("pp"), pv("pv"), vv("vv");

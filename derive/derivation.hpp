@@ -85,6 +85,9 @@ struct Derivation {
   std::vector<Claim> claims;  ///< in the paper's order, every verdict decided
   SelectedResult selected;
   std::vector<Kernel> kernels;  ///< what the emitter prints, each vouched for by claims above
+  /// The raw derivation before simplification (the quadratic formula with √D), for the benchmark
+  /// only: printed into billiards/reference_kernels.hpp, never part of the runtime.
+  std::vector<Kernel> reference_kernels;
 };
 
 /// Runs every step with the given definitions (the paper's by default) and checks every claim.

@@ -89,6 +89,13 @@ std::string short_if(const std::string& head, const std::string& statement) {
   return head + "\n    " + statement;
 }
 
+// `head code;` in a function body (indented by 2), or, when that passes the column limit, broken after
+// the "=" with the expression on the next line indented by 4 more, as clang-format does.
+std::string assignment(const std::string& head, const std::string& code) {
+  if (2 + head.size() + 1 + code.size() + 1 <= column_limit) return head + " " + code + ";";
+  return head + "\n      " + code + ";";
+}
+
 // A relational as a C++ condition: `lhs op rhs`.
 std::string print_condition(const ex& condition) {
   if (!GiNaC::is_a<GiNaC::relational>(condition)) {
@@ -129,22 +136,59 @@ bool needs_runtime_math(const Kernel& kernel) {
 }
 
 // A function signature as clang-format lays it out in the project's style: on one line when it fits,
-// else on two lines aligned under the "(", else broken after the "(" with the parameters on a line of
-// their own, indented by 4.
+// else on two or three lines aligned under the "(", else broken after the "(" with the parameters on a line
+// of their own, indented by 4.
 std::string signature(const std::string& head, const std::vector<std::string>& parameters,
                       const std::string& tail) {
   std::string list;
   for (const std::string& parameter : parameters) list += (list.empty() ? "" : ", ") + parameter;
   if (head.size() + list.size() + tail.size() <= column_limit) return head + list + tail;
-  // Aligned under the "(" when that takes two lines, as clang-format prefers it then.
+  // Aligned under the "(" when that takes two or three lines, as clang-format prefers it then.
   const std::string aligned = wrapped_list(head, parameters, tail);
   const std::size_t line_break = aligned.find('\n');
-  const bool two_lines =
-      line_break != std::string::npos && aligned.find('\n', line_break + 1) == std::string::npos;
-  if (two_lines && aligned.size() - line_break - 1 <= column_limit && line_break <= column_limit)
-    return aligned;
+  std::size_t lines = 0, longest = 0;
+  for (std::size_t start = 0; start <= aligned.size(); ++lines) {
+    const std::size_t end = std::min(aligned.find('\n', start), aligned.size());
+    longest = std::max(longest, end - start);
+    start = end + 1;
+  }
+  if (line_break != std::string::npos && lines <= 3 && longest <= column_limit) return aligned;
   if (4 + list.size() + tail.size() <= column_limit) return head + "\n    " + list + tail;
   return aligned;
+}
+
+}  // namespace
+
+EmittedKernel emit_kernel(const Kernel& kernel);
+
+namespace {
+
+// Every kernel as a documented `template <typename Scalar>` function: its brief, the audit claims it
+// implements, its operation count and its body.
+std::string functions(const std::vector<Kernel>& kernels) {
+  std::ostringstream out;
+  for (const Kernel& kernel : kernels) {
+    const EmittedKernel emitted = emit_kernel(kernel);
+    std::string claims;
+    for (const std::string& id : kernel.claims) claims += (claims.empty() ? "" : ", ") + ("`" + id + "`");
+    std::vector<std::string> parameters;
+    for (const ex& parameter : kernel.parameters) {
+      parameters.push_back("Scalar " + GiNaC::ex_to<GiNaC::symbol>(parameter).get_name());
+    }
+    const std::string result = kernel.outputs.size() == 1 ? "Scalar" : "NormalVelocityChange<Scalar>";
+    out << "\n"
+        << doc_comment(kernel.brief) << "///\n"
+        << doc_comment("Implements the audit claims " + claims + ".") << "///\n"
+        << "/// Total ops: " << emitted.operation_count << "\n"
+        << "template <typename Scalar>\n"
+        << signature(std::string("BILLIARDS_HOST_DEVICE ") +
+                         (needs_runtime_math(kernel) ? "" : "constexpr ") + result + " " + kernel.name + "(",
+                     parameters, ") noexcept {")
+        << "\n";
+    for (const std::string& line : emitted.body) out << "  " << line << "\n";
+    out << "}\n";
+  }
+  return out.str();
 }
 
 }  // namespace
@@ -181,7 +225,7 @@ EmittedKernel emit_kernel(const Kernel& kernel) {
   const auto define = [&](const std::string& name, const ex& expression) {
     const std::string code = print(expression, Notation::cpp);
     emitted.operation_count += count_operations(code);
-    emitted.body.push_back("const Scalar " + name + " = " + code + ";");
+    emitted.body.push_back(assignment("const Scalar " + name + " =", code));
   };
   const auto place_hoisted_used_by = [&](const ex& expression) {
     for (std::size_t i = 0; i < hoisted.size(); ++i) {
@@ -201,7 +245,7 @@ EmittedKernel emit_kernel(const Kernel& kernel) {
       }
       const std::string name = step.name.get_name(), usual = print(expression, Notation::cpp);
       emitted.operation_count += count_operations(usual);
-      emitted.body.push_back("Scalar " + name + " = " + usual + ";");
+      emitted.body.push_back(assignment("Scalar " + name + " =", usual));
       for (const Guard& guard : step.guards) {
         // The usual value, replaced under the condition: one comparison more, and the other form.
         const ex alternative = guard.alternative.subs(replace), condition = guard.condition.subs(replace);
@@ -313,28 +357,27 @@ std::string kernels_header(const Derivation& derivation, const std::string& deri
       << "BILLIARDS_HOST_DEVICE constexpr double infinity<double>() noexcept {\n"
       << "  return __builtin_huge_val();\n"
       << "}\n";
-  for (const Kernel& kernel : derivation.kernels) {
-    const EmittedKernel emitted = emit_kernel(kernel);
-    std::string claims;
-    for (const std::string& id : kernel.claims) claims += (claims.empty() ? "" : ", ") + ("`" + id + "`");
-    std::vector<std::string> parameters;
-    for (const ex& parameter : kernel.parameters) {
-      parameters.push_back("Scalar " + GiNaC::ex_to<GiNaC::symbol>(parameter).get_name());
-    }
-    const std::string result = kernel.outputs.size() == 1 ? "Scalar" : "NormalVelocityChange<Scalar>";
-    out << "\n"
-        << doc_comment(kernel.brief) << "///\n"
-        << doc_comment("Implements the audit claims " + claims + ".") << "///\n"
-        << "/// Total ops: " << emitted.operation_count << "\n"
-        << "template <typename Scalar>\n"
-        << signature(std::string("BILLIARDS_HOST_DEVICE ") +
-                         (needs_runtime_math(kernel) ? "" : "constexpr ") + result + " " + kernel.name + "(",
-                     parameters, ") noexcept {")
-        << "\n";
-    for (const std::string& line : emitted.body) out << "  " << line << "\n";
-    out << "}\n";
-  }
-  out << "\n}  // namespace billiards::kernels\n";
+  out << functions(derivation.kernels) << "\n}  // namespace billiards::kernels\n";
+  return out.str();
+}
+
+std::string reference_kernels_header(const Derivation& derivation,
+                                     const std::string& derivation_fingerprint) {
+  std::ostringstream out;
+  out << "// Generated by derive/ (billiards-derive): do not edit. Regenerate with ./tools/derive "
+         "generated.\n"
+      << "//\n"
+      << "// Reference kernels for the benchmark only, not part of the runtime and not installed: the\n"
+      << "// derivation of " << paper_citation << " before simplification,\n"
+      << "// printed from the same derived expressions as billiards/kernels.hpp.\n"
+      << "//\n"
+      << "// Derivation fingerprint: " << derivation_fingerprint << " (of audit.json)\n"
+      << "#pragma once\n\n"
+      << "#include <billiards/kernels.hpp>\n\n"
+      << "#include <cmath>\n\n"
+      << "namespace billiards::reference_kernels {\n\n"
+      << "using kernels::NormalVelocityChange;\n"
+      << functions(derivation.reference_kernels) << "\n}  // namespace billiards::reference_kernels\n";
   return out.str();
 }
 

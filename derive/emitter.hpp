@@ -28,4 +28,9 @@ std::string fingerprint(const std::string& text);
 /// derivation with a comment naming the audit claims it implements and its operation count.
 std::string kernels_header(const Derivation& derivation, const std::string& derivation_fingerprint);
 
+/// The header billiards/reference_kernels.hpp: the derivation's reference kernels (the raw derivation
+/// before simplification, for the benchmark only) in namespace billiards::reference_kernels, on top of
+/// billiards/kernels.hpp.
+std::string reference_kernels_header(const Derivation& derivation, const std::string& derivation_fingerprint);
+
 }  // namespace billiards::derive

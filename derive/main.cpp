@@ -27,8 +27,10 @@ int main(int argc, char** argv) {
                    " with GiNaC, checks every claim exactly and writes the derivation audit.",
                "billiards-derive"};
   std::string out;
-  app.add_option("--out", out,
-                 "Folder to write AUDIT.md, audit.json and billiards/kernels.hpp into (created if missing)")
+  app.add_option(
+         "--out", out,
+         "Folder to write AUDIT.md, audit.json, billiards/kernels.hpp and billiards/reference_kernels.hpp "
+         "into (created if missing)")
       ->required()
       ->type_name("DIR");
   app.footer(
@@ -47,18 +49,21 @@ int main(int argc, char** argv) {
   const fs::path folder(out);
   const fs::path markdown = folder / "AUDIT.md", json = folder / "audit.json";
   const fs::path kernels = folder / "billiards" / "kernels.hpp";
+  const fs::path reference_kernels = folder / "billiards" / "reference_kernels.hpp";
   try {
     ensure_directory(folder);
     const std::string json_text = audit_json(derivation);
     write_file_atomically(markdown, audit_markdown(derivation));
     write_file_atomically(json, json_text);
     write_file_atomically(kernels, kernels_header(derivation, fingerprint(json_text)));
+    write_file_atomically(reference_kernels, reference_kernels_header(derivation, fingerprint(json_text)));
   } catch (const std::exception& error) {
     std::cerr << "billiards-derive: " << error.what() << "\n";
     return exit_io;
   }
 
   const int failed =
-      report(derivation, {markdown.string(), json.string(), kernels.string()}, std::cout, std::cerr);
+      report(derivation, {markdown.string(), json.string(), kernels.string(), reference_kernels.string()},
+             std::cout, std::cerr);
   return failed == 0 ? 0 : exit_claims_failed;
 }

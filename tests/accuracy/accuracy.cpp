@@ -19,6 +19,7 @@
 #include "exact.hpp"
 
 #include <billiards/kernels.hpp>
+#include <billiards/reference_kernels.hpp>
 
 #include <CLI/CLI.hpp>
 
@@ -68,6 +69,11 @@ std::vector<Scalar> call_kernel(const std::string& name, const Inputs<Scalar>& i
     return {r.first, r.second};
   }
   if (name == "cushion_normal_velocity_change") return {cushion_normal_velocity_change(at("vn"))};
+  if (name == "raw_normal_velocity_change") {
+    const auto r =
+        billiards::reference_kernels::raw_normal_velocity_change(at("m1"), at("m2"), at("v1n"), at("v2n"));
+    return {r.first, r.second};
+  }
   if (name == "time_of_impact") return {time_of_impact(at("pp"), at("pv"), at("vv"), at("contact_distance"))};
   throw std::invalid_argument("kernel " + name + " has no caller in billiards-accuracy: add one");
 }
@@ -195,7 +201,8 @@ double scaled_ulp_error(Scalar computed, const numeric& exact, const numeric& ve
 template <typename Scalar>
 class InputGenerator {
  public:
-  explicit InputGenerator(std::uint64_t seed) : random_(seed) {}
+  /// `finite_masses`: no infinite mass (for a kernel that does not take one).
+  InputGenerator(std::uint64_t seed, bool finite_masses) : random_(seed), finite_masses_(finite_masses) {}
 
   Inputs<Scalar> operator()(const billiards::derive::Kernel& kernel, int sample) {
     Inputs<Scalar> in;
@@ -205,7 +212,7 @@ class InputGenerator {
     const Scalar direction_length = log_uniform(std::sqrt(std::numeric_limits<Scalar>::min()), limit);
     for (const ex& parameter : kernel.parameters) {
       const std::string name = GiNaC::ex_to<GiNaC::symbol>(parameter).get_name();
-      if (name == "m1" || name == "m2") in[name] = mass(mode);
+      if (name == "m1" || name == "m2") in[name] = finite_masses_ && mode == 0 ? mass(1) : mass(mode);
       if (name == "restitution") in[name] = mode == 3 ? Scalar(0) : mode == 4 ? Scalar(1) : unit_(random_);
       if (name == "dd") in[name] = direction_length * direction_length;
       if (name == "v1n" || name == "v2n" || name == "vn") in[name] = speed(mode, limit);
@@ -306,6 +313,7 @@ class InputGenerator {
   }
 
   std::mt19937_64 random_;
+  bool finite_masses_;
   std::uniform_real_distribution<double> unit_{0.0, 1.0};
 };
 
@@ -318,11 +326,12 @@ struct Row {
 };
 
 template <typename Scalar>
-Row measure(const billiards::derive::Kernel& kernel, const char* type, long samples) {
+Row measure(const billiards::derive::Kernel& kernel, const char* type, long samples,
+            bool finite_masses = false) {
   Row row;
   row.kernel = kernel.name;
   row.type = type;
-  InputGenerator<Scalar> generate(0xB111A5D5ULL + kernel.name.size());
+  InputGenerator<Scalar> generate(0xB111A5D5ULL + kernel.name.size(), finite_masses);
   for (long sample = 0; sample < samples; ++sample) {
     const Inputs<Scalar> in = generate(kernel, static_cast<int>(sample));
     const std::vector<Scalar> computed = call_kernel<Scalar>(kernel.name, in);
@@ -373,10 +382,15 @@ int main(int argc, char** argv) {
 
   GiNaC::Digits = 60;  // square roots, far beyond double precision
   const billiards::derive::Derivation derivation = billiards::derive::derive_paper();
-  std::vector<Row> rows;
+  std::vector<Row> rows, reference_rows;
   for (const billiards::derive::Kernel& kernel : derivation.kernels) {
     rows.push_back(measure<float>(kernel, "float", samples));
     rows.push_back(measure<double>(kernel, "double", samples));
+  }
+  // The benchmark's reference kernel (finite masses only) for comparison, not held to the limit.
+  for (const billiards::derive::Kernel& kernel : derivation.reference_kernels) {
+    reference_rows.push_back(measure<float>(kernel, "float", samples, true));
+    reference_rows.push_back(measure<double>(kernel, "double", samples, true));
   }
   bool ok = true;
   std::cout
@@ -386,6 +400,13 @@ int main(int argc, char** argv) {
               << " | " << row.non_finite << " |\n";
     ok = ok && row.worst <= limit && row.non_finite == 0;
     if (verbose) std::cerr << row.kernel << " (" << row.type << "): " << row.worst_input << "\n";
+  }
+  std::cout
+      << "\nReference kernels (the raw derivation, for the benchmark only; not held to the limit):\n\n"
+      << "| kernel | type | inputs | largest error (scaled ULP) | NaN or ∞ |\n|---|---|---:|---:|---:|\n";
+  for (const Row& row : reference_rows) {
+    std::cout << "| `" << row.kernel << "` | " << row.type << " | " << row.samples << " | " << row.worst
+              << " | " << row.non_finite << " |\n";
   }
   if (!ok)
     std::cerr << "billiards-accuracy: an error exceeds " << limit << " ULP, or a valid input gave NaN or ∞\n";
