@@ -6,11 +6,13 @@
 // smoke run.
 #include <billiards/batch.hpp>
 #include <billiards/collision.hpp>
+#include <billiards/reference_kernels.hpp>
 
 #include <benchmark/benchmark.h>
 
 #include <cstdlib>
 #include <cstring>
+#include <limits>
 #include <random>
 #include <string>
 #include <vector>
@@ -53,10 +55,24 @@ billiards::Collision<Eigen::Matrix<Scalar, 3, 1>> paper_formula(const Case<Scala
           c.v2 - (Scalar(2) * c.m1 / (c.m1 + c.m2)) * relative * c.n};
 }
 
-// The overflow-safe form the generator emits, 2/(1 + m1/m2), typed by hand (without the small-mass
-// branch, which the random cases never take).
+// The overflow-safe form the generator emits, typed by hand: 2/(1 + m1/m2), and where a mass ratio
+// exceeds 1/(smallest normal) the small-mass form m2 (2 s/(m1 + m2)).
 template <typename Scalar>
 billiards::Collision<Eigen::Matrix<Scalar, 3, 1>> ratio_formula(const Case<Scalar>& c) {
+  const Scalar relative = c.v2.dot(c.n) - c.v1.dot(c.n);
+  const Scalar rho1 = c.m1 / c.m2, rho2 = c.m2 / c.m1;
+  const Scalar limit = Scalar(1) / std::numeric_limits<Scalar>::min();
+  const Scalar per_mass = Scalar(2) * relative / (c.m1 + c.m2);
+  Scalar first = Scalar(2) / (Scalar(1) + rho1) * relative;
+  if (rho1 > limit) first = per_mass * c.m2;
+  Scalar second = Scalar(2) / (Scalar(1) + rho2) * relative;
+  if (rho2 > limit) second = per_mass * c.m1;
+  return {c.v1 + first * c.n, c.v2 - second * c.n};
+}
+
+// The same ratio form without the small-mass select: what that select costs.
+template <typename Scalar>
+billiards::Collision<Eigen::Matrix<Scalar, 3, 1>> ratio_formula_without_select(const Case<Scalar>& c) {
   const Scalar relative = c.v2.dot(c.n) - c.v1.dot(c.n);
   return {c.v1 + (Scalar(2) / (Scalar(1) + c.m1 / c.m2)) * relative * c.n,
           c.v2 - (Scalar(2) / (Scalar(1) + c.m2 / c.m1)) * relative * c.n};
@@ -86,6 +102,21 @@ void hand_written_paper_formula(benchmark::State& state) {
 template <typename Scalar>
 void hand_written_ratio_formula(benchmark::State& state) {
   one_collision_per_call<Scalar>(state, ratio_formula<Scalar>);
+}
+template <typename Scalar>
+void hand_written_ratio_formula_without_select(benchmark::State& state) {
+  one_collision_per_call<Scalar>(state, ratio_formula_without_select<Scalar>);
+}
+// The raw derivation before simplification (quadratic formula with √D), emitted by derive as a
+// reference kernel, in the same wrapper as collide().
+template <typename Scalar>
+void raw_derivation(benchmark::State& state) {
+  one_collision_per_call<Scalar>(state, [](const Case<Scalar>& c) {
+    const auto change =
+        billiards::reference_kernels::raw_normal_velocity_change(c.m1, c.m2, c.v1.dot(c.n), c.v2.dot(c.n));
+    return billiards::Collision<Eigen::Matrix<Scalar, 3, 1>>{c.v1 + change.first * c.n,
+                                                             c.v2 + change.second * c.n};
+  });
 }
 template <typename Scalar>
 void plain_eigen_expression(benchmark::State& state) {
@@ -120,6 +151,26 @@ void batch(benchmark::State& state) {
   state.SetBytesProcessed(static_cast<std::int64_t>(state.iterations() * count) * bytes_per_pair<Scalar>);
 }
 
+// The arithmetic limit of the batch path: its five divisions per pair (m1/m2, m2/m1, 2/(1 + ρ1),
+// 2/(1 + ρ2) and 2 s/(m1 + m2)) are the slowest operations of the kernel by far, so the throughput of
+// five independent vectorised divisions per pair over the same arrays bounds it from below.
+template <typename Scalar>
+void division_limit(benchmark::State& state) {
+  const auto count = static_cast<std::size_t>(state.range(0));
+  std::vector<Scalar> a(count, Scalar(1.5)), b(count, Scalar(2.5)), out(count, Scalar(0));
+  Scalar* __restrict result = out.data();
+  const Scalar* __restrict x = a.data();
+  const Scalar* __restrict y = b.data();
+  for (auto _ : state) {
+    for (std::size_t i = 0; i < count; ++i) {
+      result[i] = x[i] / y[i] + y[i] / x[i] + Scalar(2) / (Scalar(1) + x[i]) +
+                  Scalar(2) / (Scalar(1) + y[i]) + result[i] / (x[i] + y[i]);
+    }
+    benchmark::ClobberMemory();
+  }
+  state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * count));
+}
+
 // The memory bandwidth reference: memcpy of the same number of bytes.
 template <typename Scalar>
 void memcpy_reference(benchmark::State& state) {
@@ -143,16 +194,24 @@ void register_all() {
   benchmark::RegisterBenchmark("collide/generated/double", generated_collide<double>);
   benchmark::RegisterBenchmark("collide/paper_formula/double", hand_written_paper_formula<double>);
   benchmark::RegisterBenchmark("collide/ratio_formula/double", hand_written_ratio_formula<double>);
+  benchmark::RegisterBenchmark("collide/ratio_formula_without_select/double",
+                               hand_written_ratio_formula_without_select<double>);
+  benchmark::RegisterBenchmark("collide/raw_derivation/double", raw_derivation<double>);
   benchmark::RegisterBenchmark("collide/eigen_expression/double", plain_eigen_expression<double>);
   benchmark::RegisterBenchmark("collide/generated/float", generated_collide<float>);
   benchmark::RegisterBenchmark("collide/paper_formula/float", hand_written_paper_formula<float>);
   benchmark::RegisterBenchmark("collide/ratio_formula/float", hand_written_ratio_formula<float>);
+  benchmark::RegisterBenchmark("collide/ratio_formula_without_select/float",
+                               hand_written_ratio_formula_without_select<float>);
+  benchmark::RegisterBenchmark("collide/raw_derivation/float", raw_derivation<float>);
   benchmark::RegisterBenchmark("collide/eigen_expression/float", plain_eigen_expression<float>);
   for (std::int64_t pairs = 100; pairs <= max_pairs(); pairs *= 10) {
     benchmark::RegisterBenchmark("batch/double", batch<double>)->Arg(pairs);
     benchmark::RegisterBenchmark("memcpy/double", memcpy_reference<double>)->Arg(pairs);
     benchmark::RegisterBenchmark("batch/float", batch<float>)->Arg(pairs);
     benchmark::RegisterBenchmark("memcpy/float", memcpy_reference<float>)->Arg(pairs);
+    benchmark::RegisterBenchmark("divisions/double", division_limit<double>)->Arg(pairs);
+    benchmark::RegisterBenchmark("divisions/float", division_limit<float>)->Arg(pairs);
   }
 }
 
