@@ -32,10 +32,12 @@ def per_item_ns(b):
 
 def single_call_table(runs):
     lines = ["| variant | double (ns) | ratio | float (ns) | ratio |", "|---|---:|---:|---:|---:|"]
-    names = [("generated", "generated `collide` (mass-ratio form, small-mass select)"),
-             ("ratio_formula", "hand-written ratio form 2/(1 + m1/m2)"),
-             ("paper_formula", "hand-written paper formula 2 m2/(m1 + m2)"),
-             ("eigen_expression", "plain Eigen expression")]
+    names = [("generated", "generated `collide` (mass-ratio form with the small-mass select)"),
+             ("ratio_formula", "the same form typed by hand (reference)"),
+             ("ratio_formula_without_select", "the ratio form by hand, without the small-mass select"),
+             ("paper_formula", "the paper's formula by hand, 2 m2/(m1 + m2)"),
+             ("raw_derivation", "the raw derivation (quadratic formula with √D), emitted by derive"),
+             ("eigen_expression", "a plain Eigen expression of the paper's formula")]
     for key, label in names:
         row = [label]
         for scalar in ("double", "float"):
@@ -49,6 +51,12 @@ def single_call_table(runs):
     return "\n".join(lines)
 
 
+def ratio(runs, a, b):
+    if a not in runs or b not in runs:
+        return "–"
+    return f"{per_item_ns(runs[a]) / per_item_ns(runs[b]):.2f}×"
+
+
 def batch_rows(runs, scalar):
     rows = []
     for name, b in runs.items():
@@ -56,17 +64,24 @@ def batch_rows(runs, scalar):
             continue
         pairs = int(name.split("/")[-1])
         m = runs.get(f"memcpy/{scalar}/{pairs}")
-        rows.append((pairs, b["items_per_second"], b["bytes_per_second"], m["bytes_per_second"] if m else None))
+        d = runs.get(f"divisions/{scalar}/{pairs}")
+        rows.append((pairs, b["items_per_second"], b["bytes_per_second"], m["bytes_per_second"] if m else None,
+                     d["items_per_second"] if d else None))
     return sorted(rows)
 
 
 def batch_table(runs):
-    lines = ["| type | pairs | collisions/s | GB/s | memcpy GB/s | fraction of memcpy |", "|---|---:|---:|---:|---:|---:|"]
+    lines = ["| type | pairs | collisions/s | GB/s | memcpy GB/s | fraction of memcpy | division limit, pairs/s | "
+             "time over the division limit |",
+             "|---|---:|---:|---:|---:|---:|---:|---:|"]
     for scalar in ("double", "float"):
-        for pairs, items, bytes_, copy in batch_rows(runs, scalar):
+        for pairs, items, bytes_, copy, divisions in batch_rows(runs, scalar):
             fraction = f"{bytes_ / copy:.2f}" if copy else "–"
             copy_text = f"{copy / 1e9:.1f}" if copy else "–"
-            lines.append(f"| {scalar} | {pairs:,} | {items / 1e6:.1f} M | {bytes_ / 1e9:.1f} | {copy_text} | {fraction} |")
+            limit = f"{divisions / 1e6:.0f} M" if divisions else "–"
+            over = f"{divisions / items:.2f}×" if divisions else "–"
+            lines.append(f"| {scalar} | {pairs:,} | {items / 1e6:.1f} M | {bytes_ / 1e9:.1f} | {copy_text} | {fraction} | "
+                         f"{limit} | {over} |")
     return "\n".join(lines)
 
 
@@ -88,8 +103,8 @@ def svg(runs, path):
     series = []
     for scalar, colour in (("double", "#1f77b4"), ("float", "#2ca02c")):
         rows = batch_rows(runs, scalar)
-        series.append((f"batch {scalar}", colour, [(p, b) for p, _, b, _ in rows], ""))
-        series.append((f"memcpy ({scalar} bytes)", colour, [(p, c) for p, _, _, c in rows if c], "6,4"))
+        series.append((f"batch {scalar}", colour, [(r[0], r[2]) for r in rows], ""))
+        series.append((f"memcpy ({scalar} bytes)", colour, [(r[0], r[3]) for r in rows if r[3]], "6,4"))
     points = [pt for _, _, pts, _ in series for pt in pts]
     if not points:
         return False
@@ -137,8 +152,20 @@ def main():
     parser.add_argument("json")
     parser.add_argument("--command", default="BILLIARDS_BENCH_MAX_PAIRS=10000000 build/bench/billiards_bench "
                         "--benchmark_format=json --benchmark_out=bench.json")
+    parser.add_argument("--derive", help="billiards-derive to time (five runs, the median is reported)")
+    parser.add_argument("--clean-build", help="what a clean build cost, measured by the caller (text)")
     args = parser.parse_args()
     context, runs = load(args.json)
+    derive_text = "(not measured in this run)"
+    if args.derive:
+        import subprocess, tempfile, time
+        times = []
+        for _ in range(5):
+            with tempfile.TemporaryDirectory() as out:
+                start = time.perf_counter()
+                subprocess.run([args.derive, "--out", out], check=True, stdout=subprocess.DEVNULL)
+                times.append(time.perf_counter() - start)
+        derive_text = f"{sorted(times)[2]:.3f} s (median of 5 runs of `billiards-derive --out DIR`; goal: well under 2 s)"
     svg_written = svg(runs, os.path.join(HERE, "throughput.svg"))
     caches = ", ".join(f"L{c['level']} {c['type']} {c['size'] // 1024} KiB" for c in context.get("caches", []))
     text = f"""# Benchmark results
@@ -149,17 +176,36 @@ of that same run.
 - Machine: {context.get('num_cpus')} CPUs at {context.get('mhz_per_cpu')} MHz; caches: {caches}
 - Load average at the start: {', '.join(f'{x:.2f}' for x in context.get('load_avg', []))}
 - Command: `{args.command}`
-- Library build: {context.get('library_build_type')} (Debian's libbenchmark); billiards_bench itself at -O3
+- Library build: {context.get('library_build_type')} (Debian's libbenchmark); billiards_bench itself at -O3 -march=native
 
-## One collision per call (3-D, 4096 random cases, ratio to the hand-written ratio form)
+## One collision per call (3-D, 4096 random cases, ratio to the same form typed by hand)
 
 {single_call_table(runs)}
 
-## The batch path against memcpy of the same bytes
+- Generated against the same form by hand: {ratio(runs, "collide/generated/double", "collide/ratio_formula/double")} (double),
+  {ratio(runs, "collide/generated/float", "collide/ratio_formula/float")} (float). Goal: ≤ 1.00×.
+- What the overflow safety costs, generated against the paper's plain formula:
+  {ratio(runs, "collide/generated/double", "collide/paper_formula/double")} (double), {ratio(runs, "collide/generated/float", "collide/paper_formula/float")} (float);
+  of that, the small-mass select alone: {ratio(runs, "collide/ratio_formula/double", "collide/ratio_formula_without_select/double")} (double),
+  {ratio(runs, "collide/ratio_formula/float", "collide/ratio_formula_without_select/float")} (float).
+- The raw derivation against the generated kernel: {ratio(runs, "collide/raw_derivation/double", "collide/generated/double")} (double),
+  {ratio(runs, "collide/raw_derivation/float", "collide/generated/float")} (float).
+
+## The batch path against memcpy of the same bytes and the division limit
+
+Bytes per pair: 17 scalars (11 read, 6 written). The division limit is the kernel's five divisions per
+pair alone, vectorised over arrays of the same length (`divisions/*`): the kernel's other ~40
+additions and multiplications per pair cost little beside them, so its throughput bounds the batch
+path from above where the data sit in cache.
 
 {batch_table(runs)}
 
 {"![throughput against N](throughput.svg)" if svg_written else ""}
+
+## The derivation
+
+- `billiards-derive`: {derive_text}
+- A clean build: {args.clean_build or "(not measured in this run)"}
 
 ## The event-driven table (examples/), events per second as the balls grow
 

@@ -1003,9 +1003,9 @@ Derivation derive_paper(const Definitions& definitions) {
   // ---- Beyond the paper ----------------------------------------------------------------------
   record.section("beyond", "Beyond the paper",
                  "What engines need and the paper does not cover: a coefficient of restitution, "
-                 "immovable bodies, directions that are not unit vectors, and contacts that are "
-                 "already separating. Derived and checked like the paper's claims; the paper "
-                 "states none of them.");
+                 "immovable bodies, directions that are not unit vectors, contacts that are "
+                 "already separating, and the time at which two moving balls first touch. Derived "
+                 "and checked like the paper's claims; the paper states none of them.");
   const ex e = s.restitution;
   const ex speed = s.relative_normal_speed;
   const auto through_speed = [&](const ex& x) { return GiNaC::normal(x.subs(s.v2n == s.v1n + speed)); };
