@@ -42,7 +42,7 @@ int main(int argc, char** argv) {
   app.add_option("--seed", seed, "Seed of the random placement (default 1)");
   app.add_option("--collisions", collisions, "Ball-ball collisions to run (default 1000000)");
   auto* setup_option =
-      app.add_option("--setup", setup_file, "Read the table and balls from FILE (see examples/README.md)")
+      app.add_option("--setup", setup_file, "Read the table and balls from FILE (format: examples/README.md)")
           ->check(CLI::ExistingFile);
   app.add_flag("--break", break_shot, "Rack 15 balls and strike the cue ball at the apex")
       ->excludes(setup_option);

@@ -12,7 +12,9 @@
 
 #include "table.hpp"
 
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
@@ -152,13 +154,19 @@ class Trajectories {
 inline void write_file_atomically(const std::filesystem::path& path, const std::string& contents) {
   const std::filesystem::path temporary = path.string() + ".tmp";
   {
+    errno = 0;
     std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
+    if (!out.is_open()) {
+      throw std::runtime_error("cannot write " + path.string() + ": cannot create " + temporary.string() +
+                               " (" + std::strerror(errno) + ")");
+    }
     out << contents;
     out.flush();
     if (!out) {
       std::error_code ignored;
       std::filesystem::remove(temporary, ignored);
-      throw std::runtime_error("cannot write " + path.string());
+      throw std::runtime_error("cannot write " + path.string() + ": writing " + temporary.string() +
+                               " failed");
     }
   }
   std::error_code error;
