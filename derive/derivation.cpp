@@ -1584,6 +1584,13 @@ Derivation derive_paper(const Definitions& definitions) {
     const ex a_in_dots = reduce_modulo(coefficient_a, GiNaC::pow(w[2], 2) == vv - w[0] * w[0] - w[1] * w[1]);
     const ex b_in_dots = GiNaC::normal(coefficient_b.subs(p[2] == (pv - p[0] * w[0] - p[1] * w[1]) / w[2]));
     const ex c_in_dots = reduce_modulo(coefficient_c, GiNaC::pow(p[2], 2) == pp - p[0] * p[0] - p[1] * p[1]);
+    // D in Lagrange's form, (w·w) r² − |p × w|² (beyond.time_of_impact.discriminant): D + |p × w|²
+    // expanded in components is (w·w) r², written in vv. Unlike b² − a c it does not cancel when the
+    // spheres are far apart (r ≪ |p|), where b² and a c agree in all but their last digits.
+    const GiNaC::realsymbol cross_squared("cross_squared");
+    const ex lagrange_in_dots = reduce_modulo((quarter_discriminant + dot(cross, cross)).expand(),
+                                              GiNaC::pow(w[2], 2) == vv - w[0] * w[0] - w[1] * w[1]) -
+                                cross_squared;
     const GiNaC::symbol gap("gap"), discriminant("discriminant"), contact_time("contact_time");
     const GiNaC::symbol infinity("infinity<Scalar>()");
     const lst in_kernel{qa == a_in_dots, qb == b_in_dots, qc == gap};
@@ -1592,13 +1599,14 @@ Derivation derive_paper(const Definitions& definitions) {
         .name = "time_of_impact",
         .brief =
             "The time until two spheres moving in straight lines first touch: from pp = p·p, pv = p·w, "
-            "vv = w·w with p = p2 − p1 and w = v2 − v1 (relative position and velocity) and the "
+            "vv = w·w and cross_squared = |p × w|² (in any dimension the sum over i < j of (p_i w_j − "
+            "p_j w_i)²), with p = p2 − p1 and w = v2 − v1 (relative position and velocity), and the "
             "contact distance r1 + r2. Returns the earliest t ≥ 0 at which they touch while approaching; "
             "0 when they already touch (or overlap by rounding) and approach; +∞ when they never touch "
             "(separating, no relative motion, a miss or a graze).",
-        .parameters = {pp, pv, vv, contact_distance},
+        .parameters = {pp, pv, vv, cross_squared, contact_distance},
         .steps = {{gap, c_in_dots},
-                  {discriminant, d_of_coefficients.subs(in_kernel)},
+                  {discriminant, lagrange_in_dots},
                   {contact_time,
                    stable_root.subs(in_kernel).subs(root_of_d == GiNaC::sqrt(discriminant)),
                    {{gap < 0, 0, Kind::piecewise},

@@ -186,10 +186,11 @@ BILLIARDS_HOST_DEVICE constexpr Scalar cushion_normal_velocity_change(Scalar vn)
 }
 
 /// The time until two spheres moving in straight lines first touch: from pp = p·p, pv = p·w, vv =
-/// w·w with p = p2 − p1 and w = v2 − v1 (relative position and velocity) and the contact distance
-/// r1 + r2. Returns the earliest t ≥ 0 at which they touch while approaching; 0 when they already
-/// touch (or overlap by rounding) and approach; +∞ when they never touch (separating, no relative
-/// motion, a miss or a graze).
+/// w·w and cross_squared = |p × w|² (in any dimension the sum over i < j of (p_i w_j − p_j
+/// w_i)²), with p = p2 − p1 and w = v2 − v1 (relative position and velocity), and the contact
+/// distance r1 + r2. Returns the earliest t ≥ 0 at which they touch while approaching; 0 when they
+/// already touch (or overlap by rounding) and approach; +∞ when they never touch (separating, no
+/// relative motion, a miss or a graze).
 ///
 /// Implements the audit claims `beyond.time_of_impact.quadratic`, `beyond.time_of_impact.discriminant`,
 /// `beyond.time_of_impact.stable_form`, `beyond.time_of_impact.no_contact`,
@@ -197,10 +198,10 @@ BILLIARDS_HOST_DEVICE constexpr Scalar cushion_normal_velocity_change(Scalar vn)
 ///
 /// Total ops: 11
 template <typename Scalar>
-BILLIARDS_HOST_DEVICE Scalar time_of_impact(Scalar pp, Scalar pv, Scalar vv,
+BILLIARDS_HOST_DEVICE Scalar time_of_impact(Scalar pp, Scalar pv, Scalar vv, Scalar cross_squared,
                                             Scalar contact_distance) noexcept {
   const Scalar gap = pp - contact_distance * contact_distance;
-  const Scalar discriminant = pv * pv - gap * vv;
+  const Scalar discriminant = contact_distance * contact_distance * vv - cross_squared;
   Scalar contact_time = gap / (std::sqrt(discriminant) - pv);
   if (gap < Scalar(0)) contact_time = Scalar(0);
   if (discriminant <= Scalar(0)) contact_time = infinity<Scalar>();

@@ -74,7 +74,8 @@ std::vector<Scalar> call_kernel(const std::string& name, const Inputs<Scalar>& i
         billiards::reference_kernels::raw_normal_velocity_change(at("m1"), at("m2"), at("v1n"), at("v2n"));
     return {r.first, r.second};
   }
-  if (name == "time_of_impact") return {time_of_impact(at("pp"), at("pv"), at("vv"), at("contact_distance"))};
+  if (name == "time_of_impact")
+    return {time_of_impact(at("pp"), at("pv"), at("vv"), at("cross_squared"), at("contact_distance"))};
   throw std::invalid_argument("kernel " + name + " has no caller in billiards-accuracy: add one");
 }
 
@@ -282,9 +283,12 @@ class InputGenerator {
     const auto dot = [](const std::array<Scalar, 3>& a, const std::array<Scalar, 3>& b) {
       return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
     };
+    const std::array<Scalar, 3> cross = {p[1] * v[2] - p[2] * v[1], p[2] * v[0] - p[0] * v[2],
+                                         p[0] * v[1] - p[1] * v[0]};
     return {{"pp", dot(p, p)},
             {"pv", dot(p, v)},
             {"vv", dot(v, v)},
+            {"cross_squared", dot(cross, cross)},
             {"contact_distance", static_cast<Scalar>(r)}};
   }
 

@@ -17,8 +17,9 @@ __global__ void collide_all(const Scalar* m1, const Scalar* m2, const Scalar* v1
       kernels::approaching_direction_velocity_change(m1[i], m2[i], v1n[i], v2n[i], Scalar(2), Scalar(1));
   dv1[i] = elastic.first + restitution.first + direction.first + approaching.first +
            kernels::cushion_normal_velocity_change(v1n[i]);
-  dv2[i] = elastic.second + restitution.second + direction.second + approaching.second +
-           kernels::time_of_impact(m1[i], v1n[i], m2[i], Scalar(1));  // std::sqrt and +∞ on the device
+  dv2[i] =
+      elastic.second + restitution.second + direction.second + approaching.second +
+      kernels::time_of_impact(m1[i], v1n[i], m2[i], v2n[i], Scalar(1));  // std::sqrt and +∞ on the device
 }
 
 template __global__ void collide_all<float>(const float*, const float*, const float*, const float*, float*,

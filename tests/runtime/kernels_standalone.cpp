@@ -30,8 +30,8 @@ static_assert(smallest_normal<float>() == std::numeric_limits<float>::min());
 static_assert(smallest_normal<double>() == std::numeric_limits<double>::min());
 template float cushion_normal_velocity_change<float>(float) noexcept;
 template double cushion_normal_velocity_change<double>(double) noexcept;
-template float time_of_impact<float>(float, float, float, float) noexcept;
-template double time_of_impact<double>(double, double, double, double) noexcept;
+template float time_of_impact<float>(float, float, float, float, float) noexcept;
+template double time_of_impact<double>(double, double, double, double, double) noexcept;
 static_assert(infinity<float>() == std::numeric_limits<float>::infinity());
 static_assert(infinity<double>() == std::numeric_limits<double>::infinity());
 

@@ -96,7 +96,9 @@ TEST_CASE("checked calls accept their domain and return the unchecked result", "
     rejects([&] { (void)billiards::checked::collide_if_approaching(1.0, p1, v1, 1.0, p1, v2); }, "p2",
             "(0, 0, 0)");
     rejects(
-        [&] { (void)billiards::checked::collide_if_approaching(1.0, Vector(not_a_number, 0, 0), v1, 1.0, p2, v2); },
+        [&] {
+          (void)billiards::checked::collide_if_approaching(1.0, Vector(not_a_number, 0, 0), v1, 1.0, p2, v2);
+        },
         "p1", "nan");
   }
   SECTION("reflect") {
@@ -110,5 +112,44 @@ TEST_CASE("checked calls accept their domain and return the unchecked result", "
     const auto result = billiards::checked::collide(1e-300, fast, 1e300, other, diagonal, 1.0);
     CHECK(result.first.allFinite());
     CHECK(result.second.allFinite());
+  }
+}
+
+TEST_CASE("checked::time_of_impact", "[runtime][checked][time_of_impact]") {
+  const Vector origin = Vector::Zero(), p2(10, 0, 0), approaching(-3, 0, 0);
+  SECTION("accepted: exactly the unchecked result, +infinity included") {
+    CHECK(billiards::checked::time_of_impact(origin, v1, p2, approaching, 2.0) ==
+          billiards::time_of_impact(origin, v1, p2, approaching, 2.0));
+    CHECK(billiards::checked::time_of_impact(origin, v1, p2, approaching, 2.0) == 2.0);
+    CHECK(billiards::checked::time_of_impact(origin, origin, p2, Vector(1, 0, 0), 2.0) == infinity);
+  }
+  SECTION("the contact distance: positive and finite") {
+    rejects([&] { (void)billiards::checked::time_of_impact(origin, v1, p2, approaching, -1.0); },
+            "contact_distance", "-1");
+    rejects([&] { (void)billiards::checked::time_of_impact(origin, v1, p2, approaching, 0.0); },
+            "contact_distance", "0");
+    rejects([&] { (void)billiards::checked::time_of_impact(origin, v1, p2, approaching, not_a_number); },
+            "contact_distance", "nan");
+  }
+  SECTION("positions and velocities: finite and within the component limit") {
+    rejects(
+        [&] { (void)billiards::checked::time_of_impact(Vector(infinity, 0, 0), v1, p2, approaching, 2.0); },
+        "p1", "inf");
+    rejects(
+        [&] { (void)billiards::checked::time_of_impact(origin, v1, p2, Vector(0, not_a_number, 0), 2.0); },
+        "v2", "nan");
+  }
+  SECTION("distances and speeds whose product would overflow the kernel's squares") {
+    const double limit = billiards::component_limit<double>();
+    rejects(
+        [&] {
+          (void)billiards::checked::time_of_impact(origin, origin, Vector(limit, 0, 0), Vector(-limit, 0, 0),
+                                                   1.0);
+        },
+        "v2 − v1", "(");
+    // Just inside: large but representable, and never NaN.
+    const double t =
+        billiards::checked::time_of_impact(origin, origin, Vector(1e70, 0, 0), Vector(-1e70, 0, 0), 1.0);
+    CHECK(t == Approx(1.0));
   }
 }

@@ -6,6 +6,7 @@
 
 #include <billiards/collision.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <sstream>
@@ -190,6 +191,46 @@ template <typename DP1, typename D1, typename DP2, typename D2>
                            "a centre distinct from p1 = " + detail::to_text(p1));
   }
   return billiards::collide_if_approaching(m1, p1, v1, m2, p2, v2, restitution);
+}
+
+/// billiards::time_of_impact, validated: positions and velocities finite with components of magnitude
+/// at most component_limit(), the contact distance positive and at most component_limit(), and
+/// max(|p2 − p1|, contact distance) · |v2 − v1| at most √(largest finite)/8, so that no square the
+/// kernel forms overflows. The result is never NaN: a time ≥ 0, or +∞ when the spheres never touch
+/// (or would touch only after more than the largest finite time).
+/// \throws billiards::invalid_argument naming the first argument out of its domain ("v2 − v1" for a
+///         relative speed too large for the distances involved)
+template <typename DP1, typename D1, typename DP2, typename D2>
+[[nodiscard]] typename D1::Scalar time_of_impact(const Eigen::MatrixBase<DP1>& p1,
+                                                 const Eigen::MatrixBase<D1>& v1,
+                                                 const Eigen::MatrixBase<DP2>& p2,
+                                                 const Eigen::MatrixBase<D2>& v2,
+                                                 typename D1::Scalar contact_distance) {
+  using Scalar = typename D1::Scalar;
+  detail::require_same_vector_type<D1, D2>();
+  detail::require_same_vector_type<D1, DP1>();
+  detail::require_same_vector_type<D1, DP2>();
+  constexpr const char* function = "billiards::checked::time_of_impact";
+  detail::check_components(function, "p1", p1, "a position");
+  detail::check_components(function, "v1", v1, "a velocity");
+  detail::check_components(function, "p2", p2, "a position");
+  detail::check_components(function, "v2", v2, "a velocity");
+  if (!(contact_distance > 0 && contact_distance <= component_limit<Scalar>())) {  // also rejects NaN
+    throw invalid_argument(function, "contact_distance", detail::to_text(contact_distance),
+                           "a positive contact distance (the sum of the radii) of at most " +
+                               detail::to_text(component_limit<Scalar>()));
+  }
+  const Scalar reach = std::max((p2 - p1).norm(), contact_distance), speed = (v2 - v1).norm();
+  const Scalar largest_product = std::sqrt(std::numeric_limits<Scalar>::max()) / Scalar(8);
+  if (!(reach * speed <= largest_product)) {
+    const detail::PlainVector<D1> relative = v2 - v1;
+    const Eigen::MatrixBase<detail::PlainVector<D1>>& relative_velocity = relative;  // printed as a vector
+    throw invalid_argument(function, "v2 − v1", detail::to_text(relative_velocity),
+                           "a relative velocity with max(|p2 − p1|, contact_distance) · |v2 − v1| at most " +
+                               detail::to_text(largest_product) + " (it is " +
+                               detail::to_text(reach * speed) + ")");
+  }
+  return billiards::time_of_impact(p1, v1, p2, v2, contact_distance);
 }
 
 /// billiards::reflect, validated: v's components finite and at most component_limit(), n a unit vector.

@@ -66,6 +66,21 @@ PlainVector<Derived> power_of_two_scaled(const Eigen::MatrixBase<Derived>& d) no
   return scaled;
 }
 
+/// |p × w|² in any dimension: the sum over i < j of (p_i w_j − p_j w_i)² (Lagrange's identity makes
+/// it |p|²|w|² − (p·w)², which would cancel). 2-D: (p_x w_y − p_y w_x)²; 3-D: the cross product's
+/// squared norm.
+template <typename Vector>
+typename Vector::Scalar cross_squared(const Vector& p, const Vector& w) noexcept {
+  typename Vector::Scalar sum = 0;
+  for (Eigen::Index i = 0; i < p.size(); ++i) {
+    for (Eigen::Index j = i + 1; j < p.size(); ++j) {
+      const typename Vector::Scalar component = p[i] * w[j] - p[j] * w[i];
+      sum += component * component;
+    }
+  }
+  return sum;
+}
+
 // Debug-build checks of the unchecked calls' preconditions (assert: compiled out with NDEBUG). The
 // checked API (billiards/checked.hpp) validates the same and throws instead.
 template <typename Scalar>
@@ -206,8 +221,9 @@ template <typename DP1, typename D1, typename DP2, typename D2>
 /// Centres \f$p_1 + t v_1\f$ and \f$p_2 + t v_2\f$ touch when \f$|p + t w| = r\f$, \f$p = p_2 - p_1\f$,
 /// \f$w = v_2 - v_1\f$, \f$r\f$ the contact distance (the sum of the radii): a quadratic
 /// \f$a t^2 + 2 b t + c = 0\f$ with \f$a = w\cdot w\f$, \f$b = p\cdot w\f$, \f$c = p\cdot p - r^2\f$, whose
-/// earlier root is taken in the form \f$t = c/(\sqrt{D} - b)\f$, \f$D = b^2 - a c\f$ (no cancellation, no
-/// division by \f$a\f$). Audit claims `beyond.time_of_impact.*`; kernel kernels::time_of_impact.
+/// earlier root is taken in the form \f$t = c/(\sqrt{D} - b)\f$ (no cancellation, no division by
+/// \f$a\f$), with \f$D = b^2 - a c\f$ computed as \f$(w\cdot w) r^2 - |p \times w|^2\f$ (no cancellation when
+/// the spheres are far apart). Audit claims `beyond.time_of_impact.*`; kernel kernels::time_of_impact.
 ///
 /// \return the earliest \f$t \ge 0\f$ at which the spheres touch while approaching; 0 when they already
 ///         touch (or overlap by rounding) and approach; \f$+\infty\f$ when they never touch: separating
@@ -228,7 +244,8 @@ template <typename DP1, typename D1, typename DP2, typename D2>
   assert(contact_distance > 0 && std::isfinite(contact_distance) &&
          "billiards: the contact distance must be positive and finite");
   const detail::PlainVector<D1> p = p2 - p1, w = v2 - v1;
-  return kernels::time_of_impact(p.squaredNorm(), p.dot(w), w.squaredNorm(), contact_distance);
+  return kernels::time_of_impact(p.squaredNorm(), p.dot(w), w.squaredNorm(), detail::cross_squared(p, w),
+                                 contact_distance);
 }
 
 /// \brief A ball bouncing off an immovable cushion: the reflection \f$v - 2 (v\cdot n)\,n = -n v n\f$.
