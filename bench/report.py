@@ -4,7 +4,8 @@
 Usage: bench/report.py RESULTS_JSON [--command "how the JSON was made"]
 
 Every figure is a ratio of two benchmarks measured in the same run (the machines are shared and
-noisy); absolute times are shown only beside them.
+noisy); absolute times are shown only beside them. With --benchmark_repetitions each figure is the
+median of the repetitions.
 """
 import argparse
 import json
@@ -18,11 +19,15 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 def load(path):
     with open(path, encoding="utf-8") as f:
         data = json.load(f)
-    runs = {}
+    # One figure per benchmark: the median of its repetitions where the run repeated them
+    # (--benchmark_repetitions), else its one measurement.
+    runs, medians = {}, {}
     for b in data["benchmarks"]:
-        if b.get("run_type", "iteration") != "iteration":
-            continue
-        runs[b["name"]] = b
+        if b.get("run_type", "iteration") == "iteration":
+            runs.setdefault(b.get("run_name", b["name"]), b)
+        elif b.get("aggregate_name") == "median":
+            medians[b["run_name"]] = b
+    runs.update(medians)
     return data["context"], runs
 
 
