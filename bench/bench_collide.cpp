@@ -55,18 +55,17 @@ billiards::Collision<Eigen::Matrix<Scalar, 3, 1>> paper_formula(const Case<Scala
           c.v2 - (Scalar(2) * c.m1 / (c.m1 + c.m2)) * relative * c.n};
 }
 
-// The overflow-safe form the generator emits, typed by hand: 2/(1 + m1/m2), and where a mass ratio
-// exceeds 1/(smallest normal) the small-mass form m2 (2 s/(m1 + m2)).
+// The overflow-safe form the generator emits, typed by hand: 2/(1 + m1/m2), and where that coefficient
+// falls below the smallest normal number the small-mass form m2 (2 s/(m1 + m2)), chosen factor by
+// factor as the generator does.
 template <typename Scalar>
 billiards::Collision<Eigen::Matrix<Scalar, 3, 1>> ratio_formula(const Case<Scalar>& c) {
   const Scalar relative = c.v2.dot(c.n) - c.v1.dot(c.n);
-  const Scalar rho1 = c.m1 / c.m2, rho2 = c.m2 / c.m1;
-  const Scalar limit = Scalar(1) / std::numeric_limits<Scalar>::min();
+  const Scalar c1 = Scalar(2) / (Scalar(1) + c.m1 / c.m2), c2 = Scalar(2) / (Scalar(1) + c.m2 / c.m1);
   const Scalar per_mass = Scalar(2) * relative / (c.m1 + c.m2);
-  Scalar first = Scalar(2) / (Scalar(1) + rho1) * relative;
-  if (rho1 > limit) first = per_mass * c.m2;
-  Scalar second = Scalar(2) / (Scalar(1) + rho2) * relative;
-  if (rho2 > limit) second = per_mass * c.m1;
+  const Scalar tiny = std::numeric_limits<Scalar>::min();
+  const Scalar first = (c1 < tiny ? per_mass : c1) * (c1 < tiny ? c.m2 : relative);
+  const Scalar second = (c2 < tiny ? per_mass : c2) * (c2 < tiny ? c.m1 : relative);
   return {c.v1 + first * c.n, c.v2 - second * c.n};
 }
 

@@ -1143,10 +1143,11 @@ Derivation derive_paper(const Definitions& definitions) {
       .derived_expression = lst{first_coefficient_e * speed, second_coefficient_e * speed},
       .paper_display = lst{first_small_mass_form, second_small_mass_form},
       .derived_display = factored_form(lst{first_coefficient_e * speed, second_coefficient_e * speed}),
-      .note = "The kernels use it where the ratio form would lose the answer: when ρ1 = m1/m2 exceeds "
-              "1/(smallest normal number), (1 + e)/(1 + ρ1) overflows to 0 or rounds into the subnormal "
-              "range although the change itself may be a normal number (m1 = 1e308, m2 = 0.07). There "
-              "m2 < 4, so (v2 − v1)·n m2 cannot overflow, and m1 + m2 rounds to m1 without overflowing.",
+      .note = "The kernels use it where the ratio form would lose the answer: where the coefficient "
+              "(1 + e)/(1 + ρ1) falls below the smallest normal number (ρ1 = m1/m2 beyond about 2^1022 "
+              "in double, or infinite) it has rounded into the subnormal range or to 0, although the "
+              "change itself may be a normal number (m1 = 1e308, m2 = 0.07). There m2 ≤ 4, so "
+              "(v2 − v1)·n m2 cannot overflow, and m1 + m2 rounds to m1 without overflowing.",
       .depends_on = {"beyond.restitution.impulse_coefficients"},
   });
   {
@@ -1448,31 +1449,42 @@ Derivation derive_paper(const Definitions& definitions) {
     const auto with_sign = [](const ex& coefficient, const ex& product) {
       return prints_negative(coefficient) ? ex(-product) : product;
     };
-    // The two changes for restitution `restitution` (e, or 1) and speed `by`: the ratio form, or the
-    // small-mass form where the ratio exceeds 1/(smallest normal) (beyond.immovable.small_mass_form).
-    const GiNaC::symbol ratio_limit("ratio_limit"), smallest_normal("smallest_normal<Scalar>()");
+    // The two changes for restitution `restitution` (e, or 1) and speed `by`: the ratio form c1 · by, or
+    // the small-mass form where c1 = (1 + e)/(1 + m1/m2) has dropped below the smallest normal number
+    // and so lost digits (beyond.immovable.small_mass_form), likewise for ball 2. Each change is a
+    // product whose two factors are chosen, never computed, under the condition: so no operation
+    // depends on it, and compilers vectorise a loop of kernels with plain selects (GCC would not
+    // if-convert a division or product made conditional, short of AVX-512 masks).
+    const GiNaC::symbol smallest_normal("smallest_normal<Scalar>()");
     const GiNaC::symbol first_change("first_change"), second_change("second_change");
+    const GiNaC::symbol first_factor("first_factor"), second_factor("second_factor");
+    const GiNaC::symbol first_multiplier("first_multiplier"), second_multiplier("second_multiplier");
     const GiNaC::symbol speed_per_mass("impulse_per_total_mass");
     const auto change_steps = [&](const ex& restitution, const ex& by) {
       const ex first = first_ratio_form.subs(lst{e == restitution, rho1 == first_ratio});
       const ex second = second_ratio_form.subs(lst{e == restitution, rho2 == second_ratio});
       // In the small-mass form (1 + e) s/(m1 + m2) is computed first and the light mass multiplies it
       // last: the product then rounds once, even into the subnormal range, where m2 (1 + e) s would
-      // round at every step; and (1 + e) s/(m1 + m2) cannot overflow there (m1 ≥ m2/(smallest
-      // normal) ≥ 2 ε).
+      // round at every step; and (1 + e) s/(m1 + m2) cannot overflow there (c1 below the smallest
+      // normal means m1/m2 > 2^1022 (double), so m1 + m2 ≥ 2 ε).
       const ex per_mass = (1 + restitution) * by / (s.m1 + s.m2);
       const ex in_per_mass = speed == speed_per_mass * (s.m1 + s.m2) / (1 + restitution);
-      const ex first_small = first_small_mass_form.subs(e == restitution).subs(in_per_mass);
-      const ex second_small = second_small_mass_form.subs(e == restitution).subs(in_per_mass);
+      const ex first_small = magnitude(first_small_mass_form.subs(e == restitution).subs(in_per_mass));
+      const ex second_small = magnitude(second_small_mass_form.subs(e == restitution).subs(in_per_mass));
+      const auto is_tiny = [&](const GiNaC::symbol& coefficient) { return coefficient < smallest_normal; };
       return std::vector<KernelStep>{
           {first_ratio, s.m1 / s.m2},
           {second_ratio, s.m2 / s.m1},
-          {ratio_limit, 1 / smallest_normal},
           {first_name, magnitude(first)},
           {second_name, magnitude(second)},
           {speed_per_mass, per_mass},
-          {first_change, first_name * by, {{first_ratio > ratio_limit, magnitude(first_small)}}},
-          {second_change, second_name * by, {{second_ratio > ratio_limit, magnitude(second_small)}}}};
+          // The small-mass form's factors, read off the derived form: per_mass times the light mass.
+          {first_factor, first_name, {{is_tiny(first_name), speed_per_mass}}},
+          {first_multiplier, by, {{is_tiny(first_name), GiNaC::normal(first_small / speed_per_mass)}}},
+          {first_change, first_factor * first_multiplier},
+          {second_factor, second_name, {{is_tiny(second_name), speed_per_mass}}},
+          {second_multiplier, by, {{is_tiny(second_name), GiNaC::normal(second_small / speed_per_mass)}}},
+          {second_change, second_factor * second_multiplier}};
     };
     const auto outputs = [&] {
       return std::vector<ex>{with_sign(first_ratio_form, first_change),

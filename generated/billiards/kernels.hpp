@@ -5,7 +5,7 @@
 // (AUDIT.md) it implements. They take masses and dot products with the contact normal, so they
 // serve vectors of any dimension and need no Eigen.
 //
-// Derivation fingerprint: fnv1a64:042b5ac1db885564 (of audit.json)
+// Derivation fingerprint: fnv1a64:43a32ec026713055 (of audit.json)
 #pragma once
 
 #include <cmath>
@@ -78,21 +78,26 @@ BILLIARDS_HOST_DEVICE constexpr double infinity<double>() noexcept {
 /// `kernel.impulse_coefficient_first`, `kernel.impulse_coefficient_second`,
 /// `beyond.immovable.mass_ratio_form`, `beyond.immovable.small_mass_form`.
 ///
-/// Total ops: 18
+/// Total ops: 17
 template <typename Scalar>
 BILLIARDS_HOST_DEVICE constexpr NormalVelocityChange<Scalar> elastic_normal_velocity_change(
     Scalar m1, Scalar m2, Scalar v1n, Scalar v2n) noexcept {
   const Scalar relative_normal_speed = v2n - v1n;
   const Scalar first_mass_ratio = m1 / m2;
   const Scalar second_mass_ratio = m2 / m1;
-  const Scalar ratio_limit = Scalar(1) / smallest_normal<Scalar>();
   const Scalar first_impulse_coefficient = Scalar(2) / (Scalar(1) + first_mass_ratio);
   const Scalar second_impulse_coefficient = Scalar(2) / (Scalar(1) + second_mass_ratio);
   const Scalar impulse_per_total_mass = Scalar(2) * relative_normal_speed / (m1 + m2);
-  Scalar first_change = first_impulse_coefficient * relative_normal_speed;
-  if (first_mass_ratio > ratio_limit) first_change = impulse_per_total_mass * m2;
-  Scalar second_change = relative_normal_speed * second_impulse_coefficient;
-  if (second_mass_ratio > ratio_limit) second_change = impulse_per_total_mass * m1;
+  Scalar first_factor = first_impulse_coefficient;
+  if (first_impulse_coefficient < smallest_normal<Scalar>()) first_factor = impulse_per_total_mass;
+  Scalar first_multiplier = relative_normal_speed;
+  if (first_impulse_coefficient < smallest_normal<Scalar>()) first_multiplier = m2;
+  const Scalar first_change = first_factor * first_multiplier;
+  Scalar second_factor = second_impulse_coefficient;
+  if (second_impulse_coefficient < smallest_normal<Scalar>()) second_factor = impulse_per_total_mass;
+  Scalar second_multiplier = relative_normal_speed;
+  if (second_impulse_coefficient < smallest_normal<Scalar>()) second_multiplier = m1;
+  const Scalar second_change = second_factor * second_multiplier;
   return {first_change, -second_change};
 }
 
@@ -102,22 +107,27 @@ BILLIARDS_HOST_DEVICE constexpr NormalVelocityChange<Scalar> elastic_normal_velo
 /// Implements the audit claims `beyond.restitution.impulse_coefficients`,
 /// `beyond.immovable.mass_ratio_form`, `beyond.restitution.energy_loss`.
 ///
-/// Total ops: 19
+/// Total ops: 18
 template <typename Scalar>
 BILLIARDS_HOST_DEVICE constexpr NormalVelocityChange<Scalar> normal_velocity_change(
     Scalar m1, Scalar m2, Scalar v1n, Scalar v2n, Scalar restitution) noexcept {
   const Scalar relative_normal_speed = v2n - v1n;
   const Scalar first_mass_ratio = m1 / m2;
   const Scalar second_mass_ratio = m2 / m1;
-  const Scalar ratio_limit = Scalar(1) / smallest_normal<Scalar>();
   const Scalar restitution_factor = Scalar(1) + restitution;
   const Scalar first_impulse_coefficient = restitution_factor / (Scalar(1) + first_mass_ratio);
   const Scalar second_impulse_coefficient = restitution_factor / (Scalar(1) + second_mass_ratio);
   const Scalar impulse_per_total_mass = relative_normal_speed * restitution_factor / (m1 + m2);
-  Scalar first_change = first_impulse_coefficient * relative_normal_speed;
-  if (first_mass_ratio > ratio_limit) first_change = impulse_per_total_mass * m2;
-  Scalar second_change = relative_normal_speed * second_impulse_coefficient;
-  if (second_mass_ratio > ratio_limit) second_change = impulse_per_total_mass * m1;
+  Scalar first_factor = first_impulse_coefficient;
+  if (first_impulse_coefficient < smallest_normal<Scalar>()) first_factor = impulse_per_total_mass;
+  Scalar first_multiplier = relative_normal_speed;
+  if (first_impulse_coefficient < smallest_normal<Scalar>()) first_multiplier = m2;
+  const Scalar first_change = first_factor * first_multiplier;
+  Scalar second_factor = second_impulse_coefficient;
+  if (second_impulse_coefficient < smallest_normal<Scalar>()) second_factor = impulse_per_total_mass;
+  Scalar second_multiplier = relative_normal_speed;
+  if (second_impulse_coefficient < smallest_normal<Scalar>()) second_multiplier = m1;
+  const Scalar second_change = second_factor * second_multiplier;
   return {first_change, -second_change};
 }
 
@@ -127,22 +137,27 @@ BILLIARDS_HOST_DEVICE constexpr NormalVelocityChange<Scalar> normal_velocity_cha
 /// Implements the audit claims `beyond.any_normal.direction_form`, `beyond.any_normal.scale_invariant`,
 /// `beyond.immovable.mass_ratio_form`, `beyond.immovable.small_mass_form`.
 ///
-/// Total ops: 20
+/// Total ops: 19
 template <typename Scalar>
 BILLIARDS_HOST_DEVICE constexpr NormalVelocityChange<Scalar> direction_velocity_change(
     Scalar m1, Scalar m2, Scalar v1d, Scalar v2d, Scalar dd, Scalar restitution) noexcept {
   const Scalar direction_speed = (v2d - v1d) / dd;
   const Scalar first_mass_ratio = m1 / m2;
   const Scalar second_mass_ratio = m2 / m1;
-  const Scalar ratio_limit = Scalar(1) / smallest_normal<Scalar>();
   const Scalar restitution_factor = Scalar(1) + restitution;
   const Scalar first_impulse_coefficient = restitution_factor / (Scalar(1) + first_mass_ratio);
   const Scalar second_impulse_coefficient = restitution_factor / (Scalar(1) + second_mass_ratio);
   const Scalar impulse_per_total_mass = direction_speed * restitution_factor / (m1 + m2);
-  Scalar first_change = direction_speed * first_impulse_coefficient;
-  if (first_mass_ratio > ratio_limit) first_change = impulse_per_total_mass * m2;
-  Scalar second_change = direction_speed * second_impulse_coefficient;
-  if (second_mass_ratio > ratio_limit) second_change = impulse_per_total_mass * m1;
+  Scalar first_factor = first_impulse_coefficient;
+  if (first_impulse_coefficient < smallest_normal<Scalar>()) first_factor = impulse_per_total_mass;
+  Scalar first_multiplier = direction_speed;
+  if (first_impulse_coefficient < smallest_normal<Scalar>()) first_multiplier = m2;
+  const Scalar first_change = first_factor * first_multiplier;
+  Scalar second_factor = second_impulse_coefficient;
+  if (second_impulse_coefficient < smallest_normal<Scalar>()) second_factor = impulse_per_total_mass;
+  Scalar second_multiplier = direction_speed;
+  if (second_impulse_coefficient < smallest_normal<Scalar>()) second_multiplier = m1;
+  const Scalar second_change = second_factor * second_multiplier;
   return {first_change, -second_change};
 }
 
@@ -154,7 +169,7 @@ BILLIARDS_HOST_DEVICE constexpr NormalVelocityChange<Scalar> direction_velocity_
 /// `beyond.approaching.resolve_only_approaching`, `beyond.any_normal.direction_form`,
 /// `beyond.immovable.mass_ratio_form`, `beyond.immovable.small_mass_form`.
 ///
-/// Total ops: 22
+/// Total ops: 21
 template <typename Scalar>
 BILLIARDS_HOST_DEVICE constexpr NormalVelocityChange<Scalar> approaching_direction_velocity_change(
     Scalar m1, Scalar m2, Scalar v1d, Scalar v2d, Scalar dd, Scalar restitution) noexcept {
@@ -162,15 +177,20 @@ BILLIARDS_HOST_DEVICE constexpr NormalVelocityChange<Scalar> approaching_directi
   const Scalar approach_speed = (direction_speed - absolute_value(direction_speed)) / Scalar(2);
   const Scalar first_mass_ratio = m1 / m2;
   const Scalar second_mass_ratio = m2 / m1;
-  const Scalar ratio_limit = Scalar(1) / smallest_normal<Scalar>();
   const Scalar restitution_factor = Scalar(1) + restitution;
   const Scalar first_impulse_coefficient = restitution_factor / (Scalar(1) + first_mass_ratio);
   const Scalar second_impulse_coefficient = restitution_factor / (Scalar(1) + second_mass_ratio);
   const Scalar impulse_per_total_mass = approach_speed * restitution_factor / (m1 + m2);
-  Scalar first_change = approach_speed * first_impulse_coefficient;
-  if (first_mass_ratio > ratio_limit) first_change = impulse_per_total_mass * m2;
-  Scalar second_change = approach_speed * second_impulse_coefficient;
-  if (second_mass_ratio > ratio_limit) second_change = impulse_per_total_mass * m1;
+  Scalar first_factor = first_impulse_coefficient;
+  if (first_impulse_coefficient < smallest_normal<Scalar>()) first_factor = impulse_per_total_mass;
+  Scalar first_multiplier = approach_speed;
+  if (first_impulse_coefficient < smallest_normal<Scalar>()) first_multiplier = m2;
+  const Scalar first_change = first_factor * first_multiplier;
+  Scalar second_factor = second_impulse_coefficient;
+  if (second_impulse_coefficient < smallest_normal<Scalar>()) second_factor = impulse_per_total_mass;
+  Scalar second_multiplier = approach_speed;
+  if (second_impulse_coefficient < smallest_normal<Scalar>()) second_multiplier = m1;
+  const Scalar second_change = second_factor * second_multiplier;
   return {first_change, -second_change};
 }
 

@@ -4,7 +4,7 @@
 // derivation of S. T. Parkin, "Billiard Ball Physics", 2023 before simplification,
 // printed from the same derived expressions as billiards/kernels.hpp.
 //
-// Derivation fingerprint: fnv1a64:042b5ac1db885564 (of audit.json)
+// Derivation fingerprint: fnv1a64:43a32ec026713055 (of audit.json)
 #pragma once
 
 #include <billiards/kernels.hpp>
