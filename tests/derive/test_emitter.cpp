@@ -1,4 +1,5 @@
 // The emitter: C++ without pow or floating literals, common subexpressions hoisted, honest op counts.
+#include "derivation.hpp"
 #include "emitter.hpp"
 #include "printer.hpp"
 
@@ -121,6 +122,24 @@ TEST_CASE("Kernels", "[derive][emitter]") {
     CHECK(contains(header, "#include <limits>\n"));
     CHECK(header.find("#include") == header.rfind("#include"));
   }
+}
+
+TEST_CASE("The reference kernels header", "[derive][emitter]") {
+  const Derivation derivation = derive_paper();
+  REQUIRE(derivation.reference_kernels.size() == 1);
+  const std::string header = reference_kernels_header(derivation, "fnv1a64:0123456789abcdef");
+  CHECK(contains(header, "do not edit"));
+  CHECK(contains(header, "for the benchmark only"));
+  CHECK(contains(header, "#include <billiards/kernels.hpp>\n"));
+  CHECK(contains(header, "namespace billiards::reference_kernels {"));
+  // The raw derivation: the quadratic formula's square root, its sign chosen by (v2 − v1)·n.
+  CHECK(contains(header, "raw_normal_velocity_change("));
+  CHECK(contains(header, "std::sqrt(discriminant)"));
+  CHECK(contains(header, "if (v2n - v1n < Scalar(0))"));
+  // Not constexpr: it takes a square root.
+  CHECK_FALSE(contains(header, "constexpr NormalVelocityChange"));
+  // None of the runtime's kernels are repeated in it.
+  CHECK_FALSE(contains(header, "elastic_normal_velocity_change("));
 }
 
 TEST_CASE("Fingerprints", "[derive][emitter]") {
