@@ -1280,11 +1280,11 @@ Derivation derive_paper(const Definitions& definitions) {
   // ---- Time of impact ------------------------------------------------------------------------
   // Two spheres with centres p1 + t v1 and p2 + t v2 and radii r1, r2 touch when |p + t w| = r, with
   // p = p2 − p1, w = v2 − v1 and r = r1 + r2 (3-D components): another quadratic, in t.
-  const Vec relative_position = component_symbols("p", "p", "", 3);
-  const Vec relative_velocity = component_symbols("w", "w", "", 3);
+  const Vec p = component_symbols("p", "p", "", 3);  // the relative position p2 − p1
+  const Vec w = component_symbols("w", "w", "", 3);  // the relative velocity v2 − v1
   const GiNaC::possymbol contact_distance("contact_distance", "r");
   const GiNaC::realsymbol time("t", "t");
-  const Vec separation_at_time = add(relative_position, scale(time, relative_velocity));
+  const Vec separation_at_time = add(p, scale(time, w));
   const ex touching =
       (dot(separation_at_time, separation_at_time) - contact_distance * contact_distance).expand();
   // Read off as a t² + 2 b t + c.
@@ -1299,9 +1299,7 @@ Derivation derive_paper(const Definitions& definitions) {
                    "touch at the roots t of a quadratic.",
       .method = "|p + t w|² − r² expanded in 3-D components; coeff() in t; identity",
       .comparison = Comparison::identity,
-      .paper_expression =
-          lst{dot(relative_velocity, relative_velocity), dot(relative_position, relative_velocity),
-              dot(relative_position, relative_position) - contact_distance * contact_distance},
+      .paper_expression = lst{dot(w, w), dot(p, w), dot(p, p) - contact_distance * contact_distance},
       .derived_expression = lst{coefficient_a, coefficient_b, coefficient_c},
       .paper_display = qa * GiNaC::pow(time, 2) + 2 * qb * time + qc,
       .derived_display = touching,
@@ -1309,12 +1307,8 @@ Derivation derive_paper(const Definitions& definitions) {
   });
   // D/4 = b² − a c from the coefficients read off; in 3-D it is a r² − |p × w|² (Lagrange's identity).
   const ex quarter_discriminant = (coefficient_b * coefficient_b - coefficient_a * coefficient_c).expand();
-  const Vec& pp_ = relative_position;
-  const Vec& ww_ = relative_velocity;
-  const Vec cross = {pp_[1] * ww_[2] - pp_[2] * ww_[1], pp_[2] * ww_[0] - pp_[0] * ww_[2],
-                     pp_[0] * ww_[1] - pp_[1] * ww_[0]};
-  const ex lagrange =
-      dot(relative_velocity, relative_velocity) * contact_distance * contact_distance - dot(cross, cross);
+  const Vec cross = {p[1] * w[2] - p[2] * w[1], p[2] * w[0] - p[0] * w[2], p[0] * w[1] - p[1] * w[0]};
+  const ex lagrange = dot(w, w) * contact_distance * contact_distance - dot(cross, cross);
   record.add({
       .id = "beyond.time_of_impact.discriminant",
       .statement = "D = b² − a c = (w·w) r² − |p × w|²: real roots exist iff the line of relative motion "
@@ -1352,7 +1346,7 @@ Derivation derive_paper(const Definitions& definitions) {
       .depends_on = {"beyond.time_of_impact.discriminant"},
   });
   // (p + t w)·w is the rate of change of |p + t w|²/2: negative while the gap closes.
-  const ex closing_rate = dot(separation_at_time, relative_velocity);
+  const ex closing_rate = dot(separation_at_time, w);
   record.add({
       .id = "beyond.time_of_impact.first_contact_approaches",
       .statement = "At t− the spheres approach, (p + t w)·w = −√D ≤ 0, and at t+ they separate (+√D): t− "
@@ -1591,9 +1585,6 @@ Derivation derive_paper(const Definitions& definitions) {
     // The time of impact in the dot products pp = p·p, pv = p·w, vv = w·w: the coefficients read off
     // in components, the last component eliminated through each dot product.
     const GiNaC::realsymbol pp("pp"), pv("pv"), vv("vv");
-    const Vec& p = relative_position;
-    const Vec& w = relative_velocity;
-    const ex a_in_dots = reduce_modulo(coefficient_a, GiNaC::pow(w[2], 2) == vv - w[0] * w[0] - w[1] * w[1]);
     const ex b_in_dots = GiNaC::normal(coefficient_b.subs(p[2] == (pv - p[0] * w[0] - p[1] * w[1]) / w[2]));
     const ex c_in_dots = reduce_modulo(coefficient_c, GiNaC::pow(p[2], 2) == pp - p[0] * p[0] - p[1] * p[1]);
     // D in Lagrange's form, (w·w) r² − |p × w|² (beyond.time_of_impact.discriminant): D + |p × w|²
@@ -1605,7 +1596,7 @@ Derivation derive_paper(const Definitions& definitions) {
                                 cross_squared;
     const GiNaC::symbol gap("gap"), discriminant("discriminant"), contact_time("contact_time");
     const GiNaC::symbol infinity("infinity<Scalar>()");
-    const lst in_kernel{qa == a_in_dots, qb == b_in_dots, qc == gap};
+    const lst in_kernel{qb == b_in_dots, qc == gap};  // the stable form c/(√D − b) has no a
     using Kind = Guard::Kind;
     result.kernels.push_back({
         .name = "time_of_impact",

@@ -157,12 +157,6 @@ std::string signature(const std::string& head, const std::vector<std::string>& p
   return aligned;
 }
 
-}  // namespace
-
-EmittedKernel emit_kernel(const Kernel& kernel);
-
-namespace {
-
 // Every kernel as a documented `template <typename Scalar>` function: its brief, the audit claims it
 // implements, its operation count and its body.
 std::string functions(const std::vector<Kernel>& kernels) {

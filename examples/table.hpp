@@ -43,6 +43,18 @@ struct Setup {
   std::vector<Ball> balls;
 };
 
+/// How far balls i and j overlap: two radii minus the distance of their centres (negative when apart).
+inline double overlap(const Setup& setup, std::size_t i, std::size_t j) {
+  return 2 * setup.radius - (setup.balls[i].position - setup.balls[j].position).norm();
+}
+
+/// True when a ball centred at `p` is on the table: its centre at least a radius (less `slack`) from
+/// every cushion.
+inline bool on_table(const Setup& setup, const Vector& p, double slack = 0) {
+  const double low = setup.radius - slack;
+  return p.x() >= low && p.x() <= setup.width - low && p.y() >= low && p.y() <= setup.height - low;
+}
+
 /// Rejects a setup that is not a valid table: a clear message naming the ball, the value and what was
 /// expected. Throws std::invalid_argument.
 inline void validate(const Setup& setup) {
@@ -68,17 +80,16 @@ inline void validate(const Setup& setup) {
       fail(text.str());
     }
     const Vector& p = ball.position;
-    if (p.x() < r || p.x() > setup.width - r || p.y() < r || p.y() > setup.height - r) {
+    if (!on_table(setup, p)) {
       text << "ball " << i << " at (" << p.x() << ", " << p.y() << ") is outside the table: expected its "
            << "centre within [" << r << ", " << setup.width - r << "] x [" << r << ", " << setup.height - r
            << "] (a radius from every cushion)";
       fail(text.str());
     }
     for (std::size_t j = 0; j < i; ++j) {
-      const double distance = (setup.balls[j].position - p).norm();
-      if (distance < 2 * r) {
-        text << "balls " << j << " and " << i << " overlap: their centres are " << distance
-             << " apart, expected at least two radii (" << 2 * r << ")";
+      if (overlap(setup, j, i) > 0) {
+        text << "balls " << j << " and " << i << " overlap: their centres are "
+             << 2 * r - overlap(setup, j, i) << " apart, expected at least two radii (" << 2 * r << ")";
         fail(text.str());
       }
     }
@@ -304,11 +315,11 @@ class Simulation {
     const double r = setup_.radius, allowed = overlap_tolerance * r;
     const std::size_t count = setup_.balls.size();
     const auto check_pair = [&](std::size_t i, std::size_t j) {
-      const double overlap = 2 * r - (setup_.balls[i].position - setup_.balls[j].position).norm();
-      largest_overlap_ = std::max(largest_overlap_, overlap / r);
-      if (overlap > allowed) {
+      const double depth = overlap(setup_, i, j);
+      largest_overlap_ = std::max(largest_overlap_, depth / r);
+      if (depth > allowed) {
         std::ostringstream text;
-        text << "balls " << i << " and " << j << " overlap by " << overlap / r
+        text << "balls " << i << " and " << j << " overlap by " << depth / r
              << " of a radius at t = " << time() << " (event " << events_ << "), more than "
              << overlap_tolerance;
         throw std::logic_error(text.str());
@@ -321,8 +332,7 @@ class Simulation {
         if (j != i && (check_every_pair_ ? j > i : true)) check_pair(i, j);
       }
       const Vector& p = setup_.balls[i].position;
-      if (p.x() < r - allowed || p.x() > setup_.width - r + allowed || p.y() < r - allowed ||
-          p.y() > setup_.height - r + allowed) {
+      if (!on_table(setup_, p, allowed)) {
         std::ostringstream text;
         text << "ball " << i << " left the table at t = " << time() << ": (" << p.x() << ", " << p.y() << ")";
         throw std::logic_error(text.str());
