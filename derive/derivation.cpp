@@ -1,7 +1,8 @@
 #include "derivation.hpp"
 
-#include "algebra.hpp"
-#include "printer.hpp"
+#include "core/algebra.hpp"
+#include "core/named_constants.hpp"
+#include "print/printer.hpp"
 
 #include <algorithm>
 #include <set>
@@ -69,6 +70,7 @@ struct Symbols {
   GiNaC::symbol direction{"d", "\\mathbf{d}"};
   GiNaC::symbol unit_direction{"dhat", "\\hat{\\mathbf{d}}"};
   GiNaC::symbol relative_direction_speed{"sd", "\\frac{(v_2 - v_1) \\cdot d}{d \\cdot d}"};
+  GiNaC::symbol approach_direction_speed{"sigma", "\\sigma"};
   GiNaC::symbol relative_unit_speed{"sdhat", "((v_2 - v_1) \\cdot \\hat{d})"};
   GiNaC::symbol x1_scaled_direction{"x1_scaled",
                                     "\\mathbf{x}_1\\big|_{\\mathbf{d} \\to \\lambda \\mathbf{d}}"};
@@ -99,7 +101,7 @@ ex scalar_kinetic(const Definitions& d, const ex& a, const ex& b) { return kinet
 struct Space {
   std::size_t dimension;
   Vec v1, v2, n, x1, x2;
-  ex unit_normal;  // n_d² == 1 − Σ n_i²
+  Constraint unit_normal;  // n_d² == 1 − Σ n_i², "n·n = 1"
   std::string suffix;
 
   explicit Space(std::size_t d)
@@ -109,7 +111,7 @@ struct Space {
         n(component_symbols("n", "n", "", d)),
         x1(component_symbols("x1", "x", "1", d)),
         x2(component_symbols("x2", "x", "2", d)),
-        unit_normal(unit_normal_relation(n)),
+        unit_normal{unit_normal_relation(n), "n·n = 1"},
         suffix(std::string(".").append(std::to_string(d)).append("d")) {}
 
   // A scalar of the derivation (in v1·n, v2·n) written in this space's components.
@@ -129,38 +131,34 @@ lst concatenate(const Vec& a, const Vec& b) {
   return all;
 }
 
-class Recorder {
- public:
-  explicit Recorder(Derivation& derivation) : derivation_(derivation) {}
-
-  void section(std::string id, std::string title, std::string text) {
-    current_section_ = id;
-    derivation_.sections.push_back({std::move(id), std::move(title), std::move(text)});
-  }
-
-  const Claim& add(Claim claim) {
-    claim.section = current_section_;
-    for (const std::string& upstream : claim.depends_on) {
-      if (!known(upstream)) {
-        throw std::logic_error("claim " + claim.id + " depends on unknown " + upstream);
-      }
-    }
-    check(claim);
-    derivation_.claims.push_back(std::move(claim));
-    return derivation_.claims.back();
-  }
-
- private:
-  bool known(const std::string& id) const {
-    const auto& claims = derivation_.claims;
-    const auto& premises = derivation_.premises;
-    return std::any_of(claims.begin(), claims.end(), [&](const Claim& c) { return c.id == id; }) ||
-           std::any_of(premises.begin(), premises.end(), [&](const Premise& p) { return p.id == id; });
-  }
-
-  Derivation& derivation_;
-  std::string current_section_;
-};
+ModelInfo paper_model() {
+  ModelInfo model;
+  model.name = "parkin2023";
+  model.title = "Billiard Ball Physics";
+  model.citation = "S. T. Parkin, \"Billiard Ball Physics\", 2023";
+  model.scope = "frictionless, spinless balls in instantaneous contact (perfectly elastic)";
+  model.notation =
+      "Vectors in components are written $v_{1,x}$ as `v1_x`; $(v_1 \\cdot n)$ is the scalar $v_1 \\cdot n$; "
+      "$\\mathbf{v}_1$ names the vector itself. Where $n \\cdot n = 1$ is needed it is imposed by substituting "
+      "$n_\\text{last}^2 \\to 1 - \\sum n_i^2$, never by choosing a numeric normal, and the claim says so "
+      "(\"Under: n·n = 1\").";
+  model.remarks = {
+      "Footnote 1 calls P and K \"bilinear\". P is linear and K is a quadratic form; K splits into parts "
+      "along and across n because the cross terms a∥·b⊥ vanish for a unit n (`split.kinetic_cross_term.2d`, "
+      "`split.kinetic_cross_term.3d`).",
+      "\"A physics-based argument that we must have v1⊥ = x1⊥\" is an assumption (frictionless, spinless "
+      "contact), not a consequence of conservation: `assumption.tangential_velocity_unchanged` is the only "
+      "unchecked claim.",
+      "P·n and (x1∥)² are shorthand for P(v1, v2)·n and x1∥·x1∥.",
+      "The paper rejects the \"−\" root because it does not depend on v2. The stronger reason is that it is "
+      "x1 = v1, x2 = v2: the state before the collision (`selection.minus_root_is_no_collision`); the \"+\" "
+      "root reverses the relative normal velocity (`selection.plus_root_reverses_relative_normal_velocity`).",
+      "The cushion limit needs v2 = 0 (or bounded): the limit of x1 for a wall moving with v2 is "
+      "v1 + 2((v2 − v1)·n) n (`cushion.limit`). −n v1 n is a reflection only when n² = 1.",
+  };
+  model.reference_path = "billiards/reference_kernels.hpp";
+  return model;
+}
 
 const char* const unit_normal_method = "; n·n = 1 imposed by substituting n_last² → 1 − Σ n_i²";
 
@@ -172,6 +170,7 @@ Derivation derive_paper(const Definitions& definitions) {
   const Space plane(2);
   const Space space(3);
   Derivation result;
+  result.model = paper_model();
   Recorder record(result);
 
   // ---- Premises ------------------------------------------------------------------------------
@@ -231,7 +230,7 @@ Derivation derive_paper(const Definitions& definitions) {
         .comparison = Comparison::identity,
         .paper_expression = 0,
         .derived_expression = dot(x1_par, x2_perp),
-        .constraints = lst{sp->unit_normal},
+        .constraints = {sp->unit_normal},
         .paper_display = 0,
         .derived_display = s.a_par_dot_b_perp,
         .note = "The footnote calls P and K \"bilinear\". P is linear and K is a quadratic form; "
@@ -249,7 +248,7 @@ Derivation derive_paper(const Definitions& definitions) {
         .comparison = Comparison::identity,
         .paper_expression = kinetic(d, sp->x1, sp->x2),
         .derived_expression = kinetic(d, x1_par, x2_par) + kinetic(d, x1_perp, x2_perp),
-        .constraints = lst{sp->unit_normal},
+        .constraints = {sp->unit_normal},
         .paper_display = s.K_of_x,
         .derived_display = s.K_split,
         .note = "Holds only because n is a unit vector: without n·n = 1 the parallel part carries a "
@@ -299,7 +298,7 @@ Derivation derive_paper(const Definitions& definitions) {
         .comparison = Comparison::identity,
         .paper_expression = to_lst(subtract(momentum(d, v1_par, v2_par), momentum(d, x1_par, x2_par))),
         .derived_expression = to_lst(subtract(momentum(d, space.v1, space.v2), momentum(d, x1, x2))),
-        .constraints = lst{space.unit_normal},
+        .constraints = {space.unit_normal},
         .paper_display = s.P_v_par_minus_x_par,
         .derived_display = s.P_v_minus_x,
         .depends_on = {"definition.conservation", "split.momentum.3d",
@@ -314,7 +313,7 @@ Derivation derive_paper(const Definitions& definitions) {
         .comparison = Comparison::identity,
         .paper_expression = kinetic(d, v1_par, v2_par) - kinetic(d, x1_par, x2_par),
         .derived_expression = kinetic(d, space.v1, space.v2) - kinetic(d, x1, x2),
-        .constraints = lst{space.unit_normal},
+        .constraints = {space.unit_normal},
         .paper_display = s.K_v_par_minus_x_par,
         .derived_display = s.K_v_minus_x,
         .depends_on = {"definition.conservation", "split.kinetic.3d",
@@ -344,7 +343,7 @@ Derivation derive_paper(const Definitions& definitions) {
         .comparison = Comparison::identity,
         .paper_expression = space.components_of(scalar_kinetic(d, s.v1n, s.v2n)),
         .derived_expression = kinetic(d, v1_par, v2_par),
-        .constraints = lst{space.unit_normal},
+        .constraints = {space.unit_normal},
         .paper_display = scalar_kinetic(d, s.v1n, s.v2n),
         .derived_display = s.K_of_v_parallel,
         .depends_on = {"definition.kinetic_energy", "definition.split"},
@@ -395,7 +394,7 @@ Derivation derive_paper(const Definitions& definitions) {
         .comparison = Comparison::identity,
         .paper_expression = paper_vector_form,
         .derived_expression = derived_vector_form,
-        .constraints = lst{space.unit_normal},
+        .constraints = {space.unit_normal},
         .paper_display = numeric(1, 2) * s.m1 * (1 + s.m1 / s.m2) * s.x1_parallel_squared -
                          s.m1 / s.m2 * s.P_parallel_dot_x1_parallel + s.P_parallel_squared / (2 * s.m2) -
                          s.K_parallel,
@@ -421,7 +420,7 @@ Derivation derive_paper(const Definitions& definitions) {
         .comparison = Comparison::identity,
         .paper_expression = space.components_of(paper_scalar_form.subs(paper_shorthand)),
         .derived_expression = space.components_of(quadratic),
-        .constraints = lst{space.unit_normal},
+        .constraints = {space.unit_normal},
         .paper_display = paper_scalar_form,
         .derived_display = factored_form(quadratic),
         .depends_on = {"quadratic.vector_form"},
@@ -459,7 +458,7 @@ Derivation derive_paper(const Definitions& definitions) {
 
   // ---- The discriminant ----------------------------------------------------------------------
   record.section("discriminant", "The discriminant", "D = B² − 4AC from the coefficients read off.");
-  const ex D = GiNaC::normal(B * B - 4 * A * C);
+  const ex D = GiNaC::normal(B * B + d.discriminant_ac_coefficient * A * C);
   const ex relative = s.v2n - s.v1n;  // (v2 − v1)·n
   {
     const ex paper_first = 2 * s.m1 * (1 + s.m1 / s.m2) * s.K_parallel - s.m1 / s.m2 * GiNaC::pow(s.Pn, 2);
@@ -615,7 +614,7 @@ Derivation derive_paper(const Definitions& definitions) {
             concatenate(paper_x1(printed_coefficient_plus), paper_x1(printed_coefficient_minus)),
         .derived_expression = concatenate(space.after_collision(space.v1, plus_root),
                                           space.after_collision(space.v1, minus_root)),
-        .constraints = lst{space.unit_normal},
+        .constraints = {space.unit_normal},
         .paper_display = lst{s.v1 + printed_coefficient_plus * s.n, s.v1 + printed_coefficient_minus * s.n},
         .derived_display = lst{s.v1 + factored_form(plus_root - s.v1n) * s.n,
                                s.v1 + factored_form(minus_root - s.v1n) * s.n},
@@ -670,7 +669,6 @@ Derivation derive_paper(const Definitions& definitions) {
               "fast as they approached.",
       .depends_on = {"general.x1_both_roots", "quadratic.x2_from_momentum"},
   });
-  result.selected = {plus_root, x2n_selected};
 
   // ---- The collision formula -----------------------------------------------------------------
   record.section("result", "The collision formula",
@@ -695,7 +693,7 @@ Derivation derive_paper(const Definitions& definitions) {
         .comparison = Comparison::identity,
         .paper_expression = to_lst(add(space.v1, scale(space.components_of(expanded_coefficient), space.n))),
         .derived_expression = to_lst(x1_selected),
-        .constraints = lst{space.unit_normal},
+        .constraints = {space.unit_normal},
         .paper_display = s.v1 + expanded_coefficient * s.n,
         .derived_display = s.v1 + factored_form(plus_root - s.v1n) * s.n,
         .depends_on = {"selection.plus_root_reverses_relative_normal_velocity",
@@ -710,7 +708,7 @@ Derivation derive_paper(const Definitions& definitions) {
         .comparison = Comparison::identity,
         .paper_expression = to_lst(paper_simplified(space)),
         .derived_expression = to_lst(x1_selected),
-        .constraints = lst{space.unit_normal},
+        .constraints = {space.unit_normal},
         .paper_display = s.v1 + simplified_coefficient * s.n,
         .derived_display = s.v1 + factored_form(plus_root - s.v1n) * s.n,
         .depends_on = {"result.x1_expanded_form"},
@@ -735,7 +733,7 @@ Derivation derive_paper(const Definitions& definitions) {
       .comparison = Comparison::identity,
       .paper_expression = to_lst(paper_simplified(space)).subs(swap_balls(space)),
       .derived_expression = to_lst(x2_selected),
-      .constraints = lst{space.unit_normal},
+      .constraints = {space.unit_normal},
       .paper_display = s.v2 + 2 * s.m1 / (s.m1 + s.m2) * (s.v1n - s.v2n) * s.n,
       .derived_display = s.v2 + factored_form(x2n_selected - s.v2n) * s.n,
       .depends_on = {"result.x1_simplified_form", "quadratic.x2_from_momentum"},
@@ -779,7 +777,7 @@ Derivation derive_paper(const Definitions& definitions) {
         .comparison = Comparison::identity,
         .paper_expression = to_lst(v2_par),
         .derived_expression = to_lst(x1_selected).subs(at_rest),
-        .constraints = lst{space.unit_normal},
+        .constraints = {space.unit_normal},
         .paper_display = s.v2n * s.n,
         .derived_display = factored_form(x1_shown.subs(at_rest_shown)),
         .depends_on = {"result.x1_simplified_form"},
@@ -793,7 +791,7 @@ Derivation derive_paper(const Definitions& definitions) {
         .comparison = Comparison::identity,
         .paper_expression = to_lst(subtract(space.v2, v2_par)),
         .derived_expression = to_lst(x2_selected).subs(at_rest),
-        .constraints = lst{space.unit_normal},
+        .constraints = {space.unit_normal},
         .paper_display = s.v2 - s.v2n * s.n,
         .derived_display = x2_shown.subs(at_rest_shown),
         .depends_on = {"result.x2_by_symmetry"},
@@ -810,7 +808,7 @@ Derivation derive_paper(const Definitions& definitions) {
         .comparison = Comparison::identity,
         .paper_expression = to_lst(v2_head_on),
         .derived_expression = to_lst(x1_selected).subs(head_on),
-        .constraints = lst{space.unit_normal},
+        .constraints = {space.unit_normal},
         .paper_display = s.v2,
         .derived_display = factored_form(x1_shown.subs(head_on_shown)),
         .depends_on = {"sanity.equal_masses_at_rest.x1"},
@@ -824,7 +822,7 @@ Derivation derive_paper(const Definitions& definitions) {
         .comparison = Comparison::identity,
         .paper_expression = to_lst(scale(0, space.n)),
         .derived_expression = to_lst(x2_selected).subs(head_on),
-        .constraints = lst{space.unit_normal},
+        .constraints = {space.unit_normal},
         .paper_display = 0,
         .derived_display = factored_form(x2_shown.subs(head_on_shown)),
         .depends_on = {"sanity.equal_masses_at_rest.x2"},
@@ -854,7 +852,7 @@ Derivation derive_paper(const Definitions& definitions) {
         .comparison = Comparison::identity,
         .paper_expression = to_lst(reflection),
         .derived_expression = limit,
-        .constraints = lst{space.unit_normal},
+        .constraints = {space.unit_normal},
         .paper_display = s.v1 - 2 * s.v1n * s.n,
         .derived_display =
             s.v1 + factored_form(GiNaC::series_to_poly(
@@ -884,7 +882,7 @@ Derivation derive_paper(const Definitions& definitions) {
           .comparison = Comparison::identity,
           .paper_expression = to_lst(subtract(sp->v1, scale(2 * dot(sp->v1, sp->n), sp->n))),
           .derived_expression = sandwich,
-          .constraints = lst{sp->unit_normal},
+          .constraints = {sp->unit_normal},
           .paper_display = s.v1 - 2 * s.v1n * s.n,
           .derived_display = -s.sandwich,
           .note = "In geometric algebra n v n = 2 (n·v) n − (n·n) v, so −n v n is the reflection in "
@@ -908,7 +906,7 @@ Derivation derive_paper(const Definitions& definitions) {
         .comparison = Comparison::identity,
         .paper_expression = to_lst(momentum(d, sp->v1, sp->v2)),
         .derived_expression = to_lst(momentum(d, x1, x2)),
-        .constraints = lst{sp->unit_normal},
+        .constraints = {sp->unit_normal},
         .paper_display = s.P_of_v,
         .derived_display = s.P_of_x,
         .depends_on = {"result.x1_simplified_form", "result.x2_by_symmetry", "definition.conservation"},
@@ -923,7 +921,7 @@ Derivation derive_paper(const Definitions& definitions) {
         .comparison = Comparison::identity,
         .paper_expression = kinetic(d, sp->v1, sp->v2),
         .derived_expression = kinetic(d, x1, x2),
-        .constraints = lst{sp->unit_normal},
+        .constraints = {sp->unit_normal},
         .paper_display = s.K_of_v,
         .derived_display = s.K_of_x,
         .depends_on = {"result.x1_simplified_form", "result.x2_by_symmetry", "definition.conservation"},
@@ -1216,7 +1214,7 @@ Derivation derive_paper(const Definitions& definitions) {
       .comparison = Comparison::identity,
       .paper_expression = to_lst(unit_form(direction)),
       .derived_expression = to_lst(direction_form(direction)),
-      .constraints = lst{unit_normal_relation(direction)},
+      .constraints = {{unit_normal_relation(direction), "d·d = 1"}},
       .paper_display = s.v1 + s.c1 * s.relative_unit_speed * s.unit_direction,
       .derived_display = s.v1 + s.c1 * s.relative_direction_speed * s.direction,
       .depends_on = {"beyond.any_normal.direction_form"},
@@ -1235,6 +1233,8 @@ Derivation derive_paper(const Definitions& definitions) {
       .derived_display = factored_form(x2n_e - x1n_e),
       .depends_on = {"beyond.restitution.elastic_is_the_paper"},
   });
+  // The kernel form for any e: c1 (s − |s|)/2, which is c1 s when s < 0 and 0 when s ≥ 0.
+  const ex approach_speed = (speed - GiNaC::abs(speed)) / 2;
   {
     // x1·n = (P·n − m2 |(v2 − v1)·n|)/(m1 + m2): the collision root when approaching, else v1·n.
     const ex minus_abs_root =
@@ -1257,8 +1257,6 @@ Derivation derive_paper(const Definitions& definitions) {
         .derived_display = minus_abs_root,
         .depends_on = {"beyond.approaching.collision_root_separates", "result.x1_simplified_form"},
     });
-    // The kernel form for any e: c1 (s − |s|)/2, which is c1 s when s < 0 and 0 when s ≥ 0.
-    const ex approach_speed = (speed - GiNaC::abs(speed)) / 2;
     const lst kernel_cases{GiNaC::normal(resolve_absolute_values(c1 * approach_speed, speed, -1)),
                            GiNaC::normal(resolve_absolute_values(c1 * approach_speed, speed, +1))};
     const lst kernel_expected{through_speed(x1n_e - s.v1n), 0};
@@ -1291,7 +1289,7 @@ Derivation derive_paper(const Definitions& definitions) {
   const ex coefficient_a = touching.coeff(time, 2), coefficient_b = touching.coeff(time, 1) / 2,
            coefficient_c = touching.coeff(time, 0);
   const GiNaC::possymbol qa("a", "a"), root_of_d("s", "\\sqrt{D}");
-  const GiNaC::realsymbol qb("b", "b"), qc("c", "c");
+  const GiNaC::realsymbol qb("b", "b"), qc("c", "c"), qd("D", "D");
   const std::vector<std::string> time_premises = {"definition.time_of_impact"};
   record.add({
       .id = "beyond.time_of_impact.quadratic",
@@ -1340,7 +1338,7 @@ Derivation derive_paper(const Definitions& definitions) {
       .paper_expression = lst{printed_roots.op(0), printed_roots.op(1), 0, 0},
       .derived_expression = lst{earlier_root, later_root, quadratic_in_t.subs(time == earlier_root),
                                 quadratic_in_t.subs(time == later_root)},
-      .constraints = lst{root_relation},
+      .constraints = {{root_relation, "s² = b² − a c (s = √D)"}},
       .paper_display = printed_roots,
       .derived_display = lst{earlier_root, later_root},
       .depends_on = {"beyond.time_of_impact.discriminant"},
@@ -1373,7 +1371,7 @@ Derivation derive_paper(const Definitions& definitions) {
       .comparison = Comparison::identity,
       .paper_expression = qc / (root_of_d - qb),
       .derived_expression = stable_root,
-      .constraints = lst{root_relation},
+      .constraints = {{root_relation, "s² = b² − a c (s = √D)"}},
       .paper_display = qc / (root_of_d - qb),
       .derived_display = printed_roots.op(0),
       .note = "(−b − √D)/a loses every digit when a c is small beside b² (spheres nearly touching); "
@@ -1389,10 +1387,11 @@ Derivation derive_paper(const Definitions& definitions) {
       .comparison = Comparison::identity,
       .paper_expression = lst{qc / qa, -2 * qb / qa},
       .derived_expression = lst{earlier_root * later_root, earlier_root + later_root},
-      .constraints = lst{root_relation},
+      .constraints = {{root_relation, "s² = b² − a c (s = √D)"}},
       .paper_display = lst{qc / qa, -2 * qb / qa},
       .derived_display = lst{earlier_root * later_root, earlier_root + later_root},
       .depends_on = {"beyond.time_of_impact.roots"},
+        .cases = {{lst{qb >= 0}, infinity()}},
   });
   record.add({
       .id = "beyond.time_of_impact.grazing",
@@ -1408,6 +1407,7 @@ Derivation derive_paper(const Definitions& definitions) {
       .paper_display = lst{0, 0},
       .derived_display = lst{earlier_root - later_root, qb + qa * earlier_root},
       .depends_on = {"beyond.time_of_impact.first_contact_approaches", "beyond.approaching.kernel_form"},
+        .cases = {{lst{qd <= 0, qb < 0}, infinity()}},
   });
   {
     const GiNaC::possymbol overlap("gamma", "\\gamma"), approach("beta", "\\beta");
@@ -1424,19 +1424,102 @@ Derivation derive_paper(const Definitions& definitions) {
         .paper_display = 0,
         .derived_display = negated_time,
         .depends_on = {"beyond.time_of_impact.stable_form"},
+        .cases = {{lst{qc < 0, qd > 0, qb < 0}, 0}},
+    });
+  }
+
+  // ---- What each emitted kernel computes -----------------------------------------------------
+  record.section("kernel_outputs", "What each emitted kernel computes",
+                 "One claim per emitted quantity: what the kernel returns, derived from the steps above and "
+                 "compared with the formula the source prints. Every kernel is proven equal to the derived "
+                 "side of its claim before it is printed (see \"The emitted kernels\" below).");
+  const ex direction_speed_in_components =
+      (dot(space.v2, direction) - dot(space.v1, direction)) / dd;  // ((v2 − v1)·d)/(d·d)
+  {
+    const lst changes{GiNaC::normal(plus_root - s.v1n), GiNaC::normal(x2n_selected - s.v2n)};
+    const lst printed{2 * s.m2 / (s.m1 + s.m2) * relative, -2 * s.m1 / (s.m1 + s.m2) * relative};
+    record.add({
+        .id = "kernel.elastic_normal_velocity_change",
+        .paper = "\"This form makes it easier to see the impulse magnitude\"",
+        .statement = "x1·n − v1·n = (2 m2/(m1 + m2)) (v2 − v1)·n and x2·n − v2·n = −(2 m1/(m1 + m2)) (v2 − v1)·n: "
+                     "the selected root, and x2·n from momentum, along n.",
+        .method = "the \"+\" root minus v1·n, x2·n from momentum minus v2·n; identity after normal()",
+        .comparison = Comparison::identity,
+        .paper_expression = printed,
+        .derived_expression = changes,
+        .paper_display = printed,
+        .derived_display = factored_form(changes),
+        .depends_on = {"selection.plus_root_reverses_relative_normal_velocity", "result.x1_simplified_form",
+                       "result.x2_by_symmetry"},
+    });
+    const lst changes_e{GiNaC::normal(x1n_e - s.v1n), GiNaC::normal(x2n_e - s.v2n)};
+    const lst printed_e{(1 + e) * s.m2 / (s.m1 + s.m2) * relative, -(1 + e) * s.m1 / (s.m1 + s.m2) * relative};
+    record.add({
+        .id = "kernel.normal_velocity_change",
+        .statement = "With restitution e: x1·n − v1·n = (1 + e) m2/(m1 + m2) (v2 − v1)·n and x2·n − v2·n = "
+                     "−(1 + e) m1/(m1 + m2) (v2 − v1)·n.",
+        .method = "the normal components solved with lsolve() minus v1·n, v2·n; identity after normal()",
+        .comparison = Comparison::identity,
+        .paper_expression = printed_e,
+        .derived_expression = changes_e,
+        .paper_display = printed_e,
+        .derived_display = factored_form(changes_e),
+        .depends_on = {"beyond.restitution.impulse_coefficients"},
+    });
+    // The multiples of d: (x1 − v1) = λ1 d in the direction form derived from the unit form, λ1 read off
+    // the first component (beyond.any_normal.direction_form checks every component).
+    const Vec x2_unit = add(space.v2, scale(second_coefficient_e * dot(subtract(space.v2, space.v1), n_of_d), n_of_d));
+    const lst multiples{GiNaC::normal((from_unit_form.op(0) - space.v1[0]) / direction[0]),
+                        GiNaC::normal((x2_unit[0] - space.v2[0]) / direction[0])};
+    const lst printed_multiples{(1 + e) * s.m2 / (s.m1 + s.m2) * direction_speed_in_components,
+                                -(1 + e) * s.m1 / (s.m1 + s.m2) * direction_speed_in_components};
+    record.add({
+        .id = "kernel.direction_velocity_change",
+        .statement = "Along a direction d (not necessarily unit) the velocities change by λ1 d and λ2 d with "
+                     "λ1 = (1 + e) m2/(m1 + m2) ((v2 − v1)·d)/(d·d) and λ2 = −(1 + e) m1/(m1 + m2) ((v2 − v1)·d)/(d·d).",
+        .method = "n = d/√(d·d) substituted into the unit form (3-D components); (x_i − v_i)/d read off the first "
+                  "component; identity after normal()",
+        .comparison = Comparison::identity,
+        .paper_expression = printed_multiples,
+        .derived_expression = multiples,
+        .paper_display = lst{(1 + e) * s.m2 / (s.m1 + s.m2) * s.relative_direction_speed,
+                             -(1 + e) * s.m1 / (s.m1 + s.m2) * s.relative_direction_speed},
+        .depends_on = {"beyond.any_normal.direction_form", "beyond.restitution.impulse_coefficients"},
+    });
+    // Only approaching balls: the relative speed along d clamped as beyond.approaching.kernel_form proves.
+    const ex clamped = approach_speed.subs(speed == direction_speed_in_components);
+    const lst approaching{GiNaC::normal(multiples.op(0) / direction_speed_in_components) * clamped,
+                          GiNaC::normal(multiples.op(1) / direction_speed_in_components) * clamped};
+    const ex printed_clamp = (direction_speed_in_components - GiNaC::abs(direction_speed_in_components)) / 2;
+    const lst printed_approaching{(1 + e) * s.m2 / (s.m1 + s.m2) * printed_clamp,
+                                  -(1 + e) * s.m1 / (s.m1 + s.m2) * printed_clamp};
+    record.add({
+        .id = "kernel.approaching_direction_velocity_change",
+        .statement = "Resolving only approaching balls along d: λ1 and λ2 with ((v2 − v1)·d)/(d·d) replaced by "
+                     "σ = (s − |s|)/2 of it, which is the collision when (v2 − v1)·d < 0 and no change otherwise.",
+        .method = "the multiples of kernel.direction_velocity_change divided by their speed, times the clamped "
+                  "speed of beyond.approaching.kernel_form; identity after normal()",
+        .comparison = Comparison::identity,
+        .paper_expression = printed_approaching,
+        .derived_expression = approaching,
+        .paper_display = lst{(1 + e) * s.m2 / (s.m1 + s.m2) * s.approach_direction_speed,
+                             -(1 + e) * s.m1 / (s.m1 + s.m2) * s.approach_direction_speed},
+        .depends_on = {"kernel.direction_velocity_change", "beyond.approaching.kernel_form"},
     });
   }
 
   // ---- The emitted kernels -------------------------------------------------------------------
   // Every kernel uses the mass-ratio form (beyond.immovable.mass_ratio_form); the paper's elastic one
   // is the same with e = 1. Coefficients are emitted as magnitudes with the sign on the product, so
-  // swapping the balls swaps the results bit for bit, and equal masses give exactly (1 + e)/2.
+  // swapping the balls swaps the results bit for bit, and equal masses give exactly (1 + e)/2. Each
+  // kernel is validated against the claim it `equals` before it is printed.
   {
     const GiNaC::symbol first_ratio("first_mass_ratio"), second_ratio("second_mass_ratio");
     const GiNaC::symbol first_name("first_impulse_coefficient"), second_name("second_impulse_coefficient");
     const GiNaC::symbol speed_name("relative_normal_speed"), direction_speed("direction_speed");
     const GiNaC::symbol approach_name("approach_speed");
-    const GiNaC::symbol v1d("v1d"), v2d("v2d"), ddot("dd");
+    const GiNaC::realsymbol v1d("v1d"), v2d("v2d");
+    const GiNaC::possymbol ddot("dd");
     const auto magnitude = [](const ex& coefficient) {
       return prints_negative(coefficient) ? ex(-coefficient) : coefficient;
     };
@@ -1449,11 +1532,11 @@ Derivation derive_paper(const Definitions& definitions) {
     // product whose two factors are chosen, never computed, under the condition: so no operation
     // depends on it, and compilers vectorise a loop of kernels with plain selects (GCC would not
     // if-convert a division or product made conditional, short of AVX-512 masks).
-    const GiNaC::symbol smallest_normal("smallest_normal<Scalar>()");
     const GiNaC::symbol first_change("first_change"), second_change("second_change");
     const GiNaC::symbol first_factor("first_factor"), second_factor("second_factor");
     const GiNaC::symbol first_multiplier("first_multiplier"), second_multiplier("second_multiplier");
     const GiNaC::symbol speed_per_mass("impulse_per_total_mass");
+    const std::string small_mass = "beyond.immovable.small_mass_form";
     const auto change_steps = [&](const ex& restitution, const ex& by) {
       const ex first = first_ratio_form.subs(lst{e == restitution, rho1 == first_ratio});
       const ex second = second_ratio_form.subs(lst{e == restitution, rho2 == second_ratio});
@@ -1465,7 +1548,9 @@ Derivation derive_paper(const Definitions& definitions) {
       const ex in_per_mass = speed == speed_per_mass * (s.m1 + s.m2) / (1 + restitution);
       const ex first_small = magnitude(first_small_mass_form.subs(e == restitution).subs(in_per_mass));
       const ex second_small = magnitude(second_small_mass_form.subs(e == restitution).subs(in_per_mass));
-      const auto is_tiny = [&](const GiNaC::symbol& coefficient) { return coefficient < smallest_normal; };
+      const auto tiny = [&](const GiNaC::symbol& coefficient, const ex& alternative) {
+        return Guard{coefficient < smallest_normal(), alternative, Guard::Kind::same_value, small_mass};
+      };
       return std::vector<KernelStep>{
           {first_ratio, s.m1 / s.m2},
           {second_ratio, s.m2 / s.m1},
@@ -1473,11 +1558,11 @@ Derivation derive_paper(const Definitions& definitions) {
           {second_name, magnitude(second)},
           {speed_per_mass, per_mass},
           // The small-mass form's factors, read off the derived form: per_mass times the light mass.
-          {first_factor, first_name, {{is_tiny(first_name), speed_per_mass}}},
-          {first_multiplier, by, {{is_tiny(first_name), GiNaC::normal(first_small / speed_per_mass)}}},
+          {first_factor, first_name, {tiny(first_name, speed_per_mass)}},
+          {first_multiplier, by, {tiny(first_name, GiNaC::normal(first_small / speed_per_mass))}},
           {first_change, first_factor * first_multiplier},
-          {second_factor, second_name, {{is_tiny(second_name), speed_per_mass}}},
-          {second_multiplier, by, {{is_tiny(second_name), GiNaC::normal(second_small / speed_per_mass)}}},
+          {second_factor, second_name, {tiny(second_name, speed_per_mass)}},
+          {second_multiplier, by, {tiny(second_name, GiNaC::normal(second_small / speed_per_mass))}},
           {second_change, second_factor * second_multiplier}};
     };
     const auto outputs = [&] {
@@ -1488,6 +1573,8 @@ Derivation derive_paper(const Definitions& definitions) {
       first.insert(first.end(), then.begin(), then.end());
       return first;
     };
+    // The direction kernels' parameters in the claims' terms: dot products in 3-D components.
+    const GiNaC::exmap direction_terms{{v1d, dot(space.v1, direction)}, {v2d, dot(space.v2, direction)}, {ddot, dd}};
     result.kernels.push_back({
         .name = "elastic_normal_velocity_change",
         .brief = "The paper's perfectly elastic collision in normal components: the changes x1·n − v1·n and "
@@ -1496,10 +1583,9 @@ Derivation derive_paper(const Definitions& definitions) {
         .parameters = {s.m1, s.m2, s.v1n, s.v2n},
         .steps = steps_then({{speed_name, s.v2n - s.v1n}}, change_steps(1, speed_name)),
         .outputs = outputs(),
+        .equals = "kernel.elastic_normal_velocity_change",
         .claims = {"result.x1_simplified_form", "result.x2_by_symmetry", "kernel.impulse_coefficient_first",
-                   "kernel.impulse_coefficient_second", "beyond.immovable.mass_ratio_form",
-                   "beyond.immovable.small_mass_form"},
-        .names = {},
+                   "kernel.impulse_coefficient_second", "beyond.immovable.mass_ratio_form"},
     });
     result.kernels.push_back({
         .name = "normal_velocity_change",
@@ -1508,6 +1594,7 @@ Derivation derive_paper(const Definitions& definitions) {
         .parameters = {s.m1, s.m2, s.v1n, s.v2n, e},
         .steps = steps_then({{speed_name, s.v2n - s.v1n}}, change_steps(e, speed_name)),
         .outputs = outputs(),
+        .equals = "kernel.normal_velocity_change",
         .claims = {"beyond.restitution.impulse_coefficients", "beyond.immovable.mass_ratio_form",
                    "beyond.restitution.energy_loss"},
         .names = {{"restitution_factor", 1 + e}},
@@ -1519,8 +1606,10 @@ Derivation derive_paper(const Definitions& definitions) {
         .parameters = {s.m1, s.m2, v1d, v2d, ddot, e},
         .steps = steps_then({{direction_speed, (v2d - v1d) / ddot}}, change_steps(e, direction_speed)),
         .outputs = outputs(),
+        .equals = "kernel.direction_velocity_change",
+        .in_claim_terms = direction_terms,
         .claims = {"beyond.any_normal.direction_form", "beyond.any_normal.scale_invariant",
-                   "beyond.immovable.mass_ratio_form", "beyond.immovable.small_mass_form"},
+                   "beyond.immovable.mass_ratio_form"},
         .names = {{"restitution_factor", 1 + e}},
     });
     result.kernels.push_back({
@@ -1533,12 +1622,13 @@ Derivation derive_paper(const Definitions& definitions) {
                              {approach_name, (direction_speed - GiNaC::abs(direction_speed)) / 2}},
                             change_steps(e, approach_name)),
         .outputs = outputs(),
+        .equals = "kernel.approaching_direction_velocity_change",
+        .in_claim_terms = direction_terms,
         .claims = {"beyond.approaching.kernel_form", "beyond.approaching.resolve_only_approaching",
-                   "beyond.any_normal.direction_form", "beyond.immovable.mass_ratio_form",
-                   "beyond.immovable.small_mass_form"},
+                   "beyond.any_normal.direction_form", "beyond.immovable.mass_ratio_form"},
         .names = {{"restitution_factor", 1 + e}},
     });
-    const GiNaC::symbol vn("vn");
+    const GiNaC::realsymbol vn("vn");
     result.kernels.push_back({
         .name = "cushion_normal_velocity_change",
         .brief = "A ball meeting an immovable cushion (the paper's limit m2 → ∞ with v2 = 0): the change "
@@ -1546,8 +1636,9 @@ Derivation derive_paper(const Definitions& definitions) {
         .parameters = {vn},
         .steps = {},
         .outputs = {cushion_change.subs(s.v1n == vn)},
-        .claims = {"kernel.cushion_velocity_change", "cushion.limit"},
-        .names = {},
+        .equals = "kernel.cushion_velocity_change",
+        .in_claim_terms = {{vn, s.v1n}},
+        .claims = {"cushion.limit"},
     });
     // The raw derivation, for the benchmark: the coefficients A, B, C as read off, D = B² − 4AC, and the
     // root (−B ± √D)/(2A) with the sign of (v2 − v1)·n, the collision root whichever the sign
@@ -1568,18 +1659,20 @@ Derivation derive_paper(const Definitions& definitions) {
                     {c_name, C},
                     // D ≥ 0 exactly (discriminant.nonnegative); rounding can make it negative when the
                     // contact is nearly tangent, and √ of that would be NaN.
-                    {d_name, b_name * b_name - 4 * a_name * c_name, {{d_name < 0, 0}}},
+                    {d_name,
+                     b_name * b_name - 4 * a_name * c_name,
+                     {{d_name < 0, 0, Guard::Kind::unreachable, "discriminant.nonnegative"}}},
                     {root_name,
                      GiNaC::sqrt(d_name),
-                     {{s.v2n - s.v1n < 0, -GiNaC::sqrt(d_name), Guard::Kind::piecewise}}},
+                     {{s.v2n - s.v1n < 0, -GiNaC::sqrt(d_name), Guard::Kind::piecewise,
+                       "roots.quadratic_formula.relative_speed_negative"}}},
                     {x1_name, (-b_name + root_name) / (2 * a_name)},
                     {x2_name, x2n_solved.subs(s.x1n == x1_name)}},
           .outputs = {x1_name - s.v1n, x2_name - s.v2n},
+          .equals = "kernel.elastic_normal_velocity_change",
           .claims = {"quadratic.coefficient_a", "quadratic.coefficient_b", "quadratic.coefficient_c",
-                     "discriminant.paper_form", "discriminant.nonnegative",
-                     "roots.quadratic_formula.relative_speed_nonnegative",
-                     "roots.quadratic_formula.relative_speed_negative", "quadratic.x2_from_momentum"},
-          .names = {},
+                     "discriminant.paper_form", "roots.quadratic_formula.relative_speed_nonnegative",
+                     "quadratic.x2_from_momentum"},
       });
     }
     // The time of impact in the dot products pp = p·p, pv = p·w, vv = w·w: the coefficients read off
@@ -1587,6 +1680,7 @@ Derivation derive_paper(const Definitions& definitions) {
     const GiNaC::realsymbol pp("pp"), pv("pv"), vv("vv");
     const ex b_in_dots = GiNaC::normal(coefficient_b.subs(p[2] == (pv - p[0] * w[0] - p[1] * w[1]) / w[2]));
     const ex c_in_dots = reduce_modulo(coefficient_c, GiNaC::pow(p[2], 2) == pp - p[0] * p[0] - p[1] * p[1]);
+    const ex a_in_dots = reduce_modulo(coefficient_a, GiNaC::pow(w[2], 2) == vv - w[0] * w[0] - w[1] * w[1]);
     // D in Lagrange's form, (w·w) r² − |p × w|² (beyond.time_of_impact.discriminant): D + |p × w|²
     // expanded in components is (w·w) r², written in vv. Unlike b² − a c it does not cancel when the
     // spheres are far apart (r ≪ |p|), where b² and a c agree in all but their last digits.
@@ -1595,8 +1689,14 @@ Derivation derive_paper(const Definitions& definitions) {
                                               GiNaC::pow(w[2], 2) == vv - w[0] * w[0] - w[1] * w[1]) -
                                 cross_squared;
     const GiNaC::symbol gap("gap"), discriminant("discriminant"), contact_time("contact_time");
-    const GiNaC::symbol infinity("infinity<Scalar>()");
     const lst in_kernel{qb == b_in_dots, qc == gap};  // the stable form c/(√D − b) has no a
+    // The dot products in the claims' terms, inverting what was read off: b = pv, c = pp − r², a = vv,
+    // D = a r² − |p × w|², and √D for the claims' s.
+    const GiNaC::exmap time_terms{{pv, qb},
+                                  {pp, GiNaC::lsolve(c_in_dots == qc, pp)},
+                                  {vv, GiNaC::lsolve(a_in_dots == qa, vv)},
+                                  {cross_squared, GiNaC::lsolve(lagrange_in_dots.subs(vv == qa) == qd, cross_squared)},
+                                  {root_of_d, GiNaC::sqrt(qd)}};
     using Kind = Guard::Kind;
     result.kernels.push_back({
         .name = "time_of_impact",
@@ -1612,45 +1712,17 @@ Derivation derive_paper(const Definitions& definitions) {
                   {discriminant, lagrange_in_dots},
                   {contact_time,
                    stable_root.subs(in_kernel).subs(root_of_d == GiNaC::sqrt(discriminant)),
-                   {{gap < 0, 0, Kind::piecewise},
-                    {discriminant <= 0, infinity, Kind::piecewise},
-                    {pv >= 0, infinity, Kind::piecewise}}}},
+                   {{gap < 0, 0, Kind::piecewise, "beyond.time_of_impact.touching_now"},
+                    {discriminant <= 0, infinity(), Kind::piecewise, "beyond.time_of_impact.grazing"},
+                    {pv >= 0, infinity(), Kind::piecewise, "beyond.time_of_impact.no_contact"}}}},
         .outputs = {contact_time},
-        .claims = {"beyond.time_of_impact.quadratic", "beyond.time_of_impact.discriminant",
-                   "beyond.time_of_impact.stable_form", "beyond.time_of_impact.no_contact",
-                   "beyond.time_of_impact.grazing", "beyond.time_of_impact.touching_now"},
-        .names = {},
+        .equals = "beyond.time_of_impact.stable_form",
+        .in_claim_terms = time_terms,
+        .claims = {"beyond.time_of_impact.quadratic", "beyond.time_of_impact.discriminant"},
     });
   }
 
   return result;
-}
-
-Summary summarize(const std::vector<Claim>& claims) {
-  Summary summary;
-  for (const Claim& claim : claims) {
-    switch (claim.verdict) {
-      case Verdict::verified: ++summary.verified; break;
-      case Verdict::failed: ++summary.failed; break;
-      case Verdict::assumption: ++summary.assumption; break;
-    }
-  }
-  return summary;
-}
-
-std::vector<std::string> downstream_of(const std::vector<Claim>& claims, const std::string& id) {
-  std::set<std::string> reached{id};
-  std::vector<std::string> downstream;
-  // Claims are recorded after everything they depend on, so one pass in order suffices.
-  for (const Claim& claim : claims) {
-    const bool rests_on_reached = std::any_of(claim.depends_on.begin(), claim.depends_on.end(),
-                                              [&](const std::string& d) { return reached.count(d) > 0; });
-    if (rests_on_reached) {
-      reached.insert(claim.id);
-      downstream.push_back(claim.id);
-    }
-  }
-  return downstream;
 }
 
 }  // namespace billiards::derive

@@ -2,9 +2,9 @@
 //
 // Reference kernels for the benchmark only, not part of the runtime and not installed: the
 // derivation of S. T. Parkin, "Billiard Ball Physics", 2023 before simplification,
-// printed from the same derived expressions as billiards/kernels.hpp.
+// printed from the same derived expressions as billiards/kernels.hpp and proven the same way.
 //
-// Derivation fingerprint: fnv1a64:43a32ec026713055 (of audit.json)
+// Fingerprint: fnv1a64:488b31ba55b269fa (of this header and the audit)
 #pragma once
 
 #include <billiards/kernels.hpp>
@@ -20,10 +20,11 @@ using kernels::NormalVelocityChange;
 /// v1)·n (the collision root), x2·n from momentum; returns the changes x1·n − v1·n and x2·n −
 /// v2·n. Finite masses only.
 ///
-/// Implements the audit claims `quadratic.coefficient_a`, `quadratic.coefficient_b`,
-/// `quadratic.coefficient_c`, `discriminant.paper_form`, `discriminant.nonnegative`,
-/// `roots.quadratic_formula.relative_speed_nonnegative`,
-/// `roots.quadratic_formula.relative_speed_negative`, `quadratic.x2_from_momentum`.
+/// Proven equal to the derived expression of the audit claim `kernel.elastic_normal_velocity_change`
+/// before it was printed; also implements `quadratic.coefficient_a`, `quadratic.coefficient_b`,
+/// `quadratic.coefficient_c`, `discriminant.paper_form`,
+/// `roots.quadratic_formula.relative_speed_nonnegative`, `quadratic.x2_from_momentum`,
+/// `discriminant.nonnegative`, `roots.quadratic_formula.relative_speed_negative`.
 ///
 /// Total ops: 42
 template <typename Scalar>

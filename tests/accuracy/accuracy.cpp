@@ -15,6 +15,7 @@
 // Usage: billiards-accuracy [--samples N] [--limit ULP]
 //   prints a Markdown table (kernel, type, samples, largest error in ULP, non-finite results) and
 //   exits 1 when an error exceeds --limit (default 4) or a valid input gives NaN or infinity.
+#include "core/named_constants.hpp"
 #include "derivation.hpp"
 #include "exact.hpp"
 
@@ -87,9 +88,7 @@ struct Exact {
 
 bool names_infinity(const ex& e) {
   for (GiNaC::const_preorder_iterator it = e.preorder_begin(); it != e.preorder_end(); ++it) {
-    if (GiNaC::is_a<GiNaC::symbol>(*it) &&
-        GiNaC::ex_to<GiNaC::symbol>(*it).get_name() == "infinity<Scalar>()")
-      return true;
+    if (it->is_equal(billiards::derive::infinity())) return true;
   }
   return false;
 }

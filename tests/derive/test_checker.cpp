@@ -1,6 +1,6 @@
 // The checker is one small function; these tests prove it can fail.
-#include "algebra.hpp"
-#include "claim.hpp"
+#include "core/algebra.hpp"
+#include "core/claim.hpp"
 
 #include <catch2/catch.hpp>
 
@@ -65,7 +65,7 @@ TEST_CASE("Constraints are imposed by substitution, not assumed", "[derive][chec
 
   SECTION("n·n − 1 is zero only with the constraint") {
     Claim with = identity_claim(1, dot(n, n));
-    with.constraints = lst{unit};
+    with.constraints = {{unit, "n·n = 1"}};
     check(with);
     CHECK(with.verdict == Verdict::verified);
     Claim without = identity_claim(1, dot(n, n));
@@ -74,7 +74,7 @@ TEST_CASE("Constraints are imposed by substitution, not assumed", "[derive][chec
   }
   SECTION("higher powers of the last component are reduced too") {
     Claim claim = identity_claim(1, GiNaC::pow(dot(n, n), 3));
-    claim.constraints = lst{unit};
+    claim.constraints = {{unit, "n·n = 1"}};
     check(claim);
     CHECK(claim.verdict == Verdict::verified);
   }
@@ -103,11 +103,53 @@ TEST_CASE("Sets, signs and assumptions", "[derive][checker]") {
     check(difference);
     CHECK(difference.verdict == Verdict::failed);
   }
+  SECTION("a sign claim needs real symbols: z² ≥ 0 is false for a complex z") {
+    const GiNaC::symbol z("z");  // complex, GiNaC's default
+    Claim complex = identity_claim(0, GiNaC::pow(z, 2));
+    complex.comparison = Comparison::nonnegative;
+    check(complex);
+    CHECK(complex.verdict == Verdict::failed);
+    CHECK_THAT(complex.failure, Catch::Contains("real"));
+    Claim real = identity_claim(0, GiNaC::pow(a, 2));
+    real.comparison = Comparison::nonnegative;
+    check(real);
+    CHECK(real.verdict == Verdict::verified);
+  }
+  SECTION("a sign claim includes the paper side: what the paper prints must be the derived expression") {
+    Claim same = identity_claim(GiNaC::pow(m1, 2) * GiNaC::pow(b - a, 2), GiNaC::pow(m1 * (a - b), 2));
+    same.comparison = Comparison::nonnegative;
+    check(same);
+    CHECK(same.verdict == Verdict::verified);
+    // Nonnegative, but not what the paper prints.
+    Claim other = identity_claim(GiNaC::pow(m1, 2) * GiNaC::pow(b - a, 2), GiNaC::pow(m1 * (a + b), 2));
+    other.comparison = Comparison::nonnegative;
+    check(other);
+    CHECK(other.verdict == Verdict::failed);
+  }
   SECTION("an assumption is never verified") {
     Claim claim = identity_claim(a, a);
     claim.comparison = Comparison::assumption;
     check(claim);
     CHECK(claim.verdict == Verdict::assumption);
+  }
+}
+
+TEST_CASE("The checker never throws", "[derive][checker]") {
+  const Vec n = component_symbols("n", "n", "", 3);
+  SECTION("a comparison GiNaC cannot carry out is a failed claim with the reason") {
+    // Reducing modulo n·n = 1 asks for the degree in n_z of an expression holding √(n_z): GiNaC throws
+    // (mul::degree(): undefined degree), as it did for the slip B² + 4AC in the paper's derivation.
+    Claim claim = identity_claim(0, GiNaC::sqrt(n[2]) * n[2] * n[2] + a);
+    claim.constraints = {{unit_normal_relation(n), "n·n = 1"}};
+    REQUIRE_NOTHROW(check(claim));
+    CHECK(claim.verdict == Verdict::failed);
+    CHECK_THAT(claim.failure, Catch::Contains("could not be carried out"));
+  }
+  SECTION("lists that cannot be compared fail too, without throwing") {
+    Claim claim = identity_claim(lst{0}, lst{GiNaC::sqrt(n[2]) * n[2] * n[2]});
+    claim.constraints = {{unit_normal_relation(n), "n·n = 1"}};
+    REQUIRE_NOTHROW(check(claim));
+    CHECK(claim.verdict == Verdict::failed);
   }
 }
 

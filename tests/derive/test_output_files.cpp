@@ -1,5 +1,5 @@
 // Files are written atomically, and failures name the path and the reason.
-#include "output_files.hpp"
+#include "core/output_files.hpp"
 
 #include <catch2/catch.hpp>
 

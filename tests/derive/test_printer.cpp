@@ -1,5 +1,5 @@
 // The printer must give the same text for the same mathematics on every run.
-#include "printer.hpp"
+#include "print/printer.hpp"
 
 #include <catch2/catch.hpp>
 

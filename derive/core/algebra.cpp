@@ -1,4 +1,4 @@
-#include "algebra.hpp"
+#include "core/algebra.hpp"
 
 #include <map>
 #include <stdexcept>

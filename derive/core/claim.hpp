@@ -11,6 +11,19 @@ namespace billiards::derive {
 
 enum class Verdict { verified, failed, assumption };
 
+/// A relation x² == r imposed by substitution before comparing, with the words the audit prints.
+struct Constraint {
+  GiNaC::ex relation;
+  std::string words;  ///< e.g. "n·n = 1"
+};
+
+/// A case a claim establishes: where every condition (relationals) holds, the quantity is `value`. A
+/// kernel's piecewise guard is validated against such a case.
+struct Case {
+  GiNaC::lst conditions;
+  GiNaC::ex value;
+};
+
 /// How check() compares the derived expression with the paper's.
 enum class Comparison {
   /// derived − paper is exactly zero (componentwise for lists) after normal(), and after reducing
@@ -18,7 +31,9 @@ enum class Comparison {
   identity,
   /// derived and paper are lists holding the same elements in some order, each pair an identity.
   same_set,
-  /// derived factors into positive constants, positive symbols and even powers: it is ≥ 0.
+  /// derived factors into positive constants, positive symbols and even powers of real expressions:
+  /// it is ≥ 0. Every symbol in it must be real. When the paper side is not 0 it must also equal the
+  /// derived side (an identity), so the audit's "as typed" is what was shown to be ≥ 0.
   nonnegative,
   /// Not checked: a modelling assumption, stated with its reason.
   assumption,
@@ -34,18 +49,21 @@ struct Claim {
   Comparison comparison = Comparison::identity;
   GiNaC::ex paper_expression;                 ///< typed exactly as the paper prints it
   GiNaC::ex derived_expression;               ///< computed by the derivation, never typed
-  GiNaC::lst constraints;                     ///< relations x² == r imposed by substitution before comparing
+  std::vector<Constraint> constraints;        ///< imposed by substitution before comparing
   GiNaC::ex paper_display = GiNaC::fail();    ///< shown in the audit instead of paper_expression when set
   GiNaC::ex derived_display = GiNaC::fail();  ///< shown in the audit instead of derived_expression when set
   std::string note;                           ///< where the paper is imprecise, or what the claim adds
   std::vector<std::string> depends_on;        ///< definitions and claims it rests on
+  std::vector<Case> cases = {};               ///< the piecewise cases it establishes, if any
 
   Verdict verdict = Verdict::failed;  ///< set by check()
   GiNaC::ex residual = 0;             ///< set by check(): what is left of derived − paper
+  std::string failure;                ///< set by check() when the comparison itself failed: the reason
 };
 
-/// Decides `claim.verdict` and `claim.residual`. Never throws for an expression it cannot reduce:
-/// anything that is not shown to be zero is a failure, with the residual to show for it.
+/// Decides `claim.verdict` and `claim.residual`. Never throws: anything that is not shown to be zero
+/// is a failure, with the residual to show for it, and an exception inside the comparison (GiNaC
+/// cannot reduce an expression) is a failure with its message in `claim.failure`.
 void check(Claim& claim);
 
 std::string to_string(Verdict verdict);

@@ -1,6 +1,6 @@
-#include "claim.hpp"
+#include "core/claim.hpp"
 
-#include "algebra.hpp"
+#include "core/algebra.hpp"
 
 #include <algorithm>
 #include <numeric>
@@ -13,15 +13,15 @@ namespace {
 
 // Zero of a single difference: normal() brings it to numerator/denominator; the numerator is then
 // reduced modulo each constraint (n·n = 1). Returns what is left, 0 when the identity holds.
-ex identity_residual(const ex& difference, const GiNaC::lst& constraints) {
+ex identity_residual(const ex& difference, const std::vector<Constraint>& constraints) {
   const ex numerator_denominator = GiNaC::normal(difference).numer_denom();
   ex numerator = numerator_denominator.op(0).expand();
-  for (const ex& relation : constraints) numerator = reduce_modulo(numerator, relation);
+  for (const Constraint& constraint : constraints) numerator = reduce_modulo(numerator, constraint.relation);
   return GiNaC::normal(numerator / numerator_denominator.op(1));
 }
 
 // Componentwise residuals of two expressions that are both lists, or both single expressions.
-ex residual_of(const ex& derived, const ex& paper, const GiNaC::lst& constraints) {
+ex residual_of(const ex& derived, const ex& paper, const std::vector<Constraint>& constraints) {
   if (GiNaC::is_a<GiNaC::lst>(derived) != GiNaC::is_a<GiNaC::lst>(paper)) return derived - paper;
   if (!GiNaC::is_a<GiNaC::lst>(derived)) return identity_residual(derived - paper, constraints);
   if (derived.nops() != paper.nops()) return derived - paper;
@@ -38,7 +38,7 @@ bool all_zero(const ex& residual) {
 }
 
 // The paper's elements permuted so that they pair with the derived ones, when some order does.
-ex residual_as_sets(const ex& derived, const ex& paper, const GiNaC::lst& constraints) {
+ex residual_as_sets(const ex& derived, const ex& paper, const std::vector<Constraint>& constraints) {
   if (!GiNaC::is_a<GiNaC::lst>(derived) || !GiNaC::is_a<GiNaC::lst>(paper) ||
       derived.nops() != paper.nops()) {
     return residual_of(derived, paper, constraints);
@@ -58,19 +58,41 @@ ex residual_as_sets(const ex& derived, const ex& paper, const GiNaC::lst& constr
   return first_residual;
 }
 
-}  // namespace
+// True when every symbol in `e` is real (realsymbol, possymbol): a sign claim about a complex symbol
+// proves nothing (z² ≥ 0 is false for z = i).
+bool all_symbols_real(const ex& e) {
+  for (GiNaC::const_preorder_iterator it = e.preorder_begin(); it != e.preorder_end(); ++it) {
+    if (GiNaC::is_a<GiNaC::symbol>(*it) && !it->info(GiNaC::info_flags::real)) return false;
+  }
+  return true;
+}
 
-void check(Claim& claim) {
+void decide(Claim& claim) {
   switch (claim.comparison) {
     case Comparison::assumption:
       claim.verdict = Verdict::assumption;
       claim.residual = 0;
       return;
-    case Comparison::nonnegative:
+    case Comparison::nonnegative: {
+      if (!all_symbols_real(claim.derived_expression)) {
+        claim.verdict = Verdict::failed;
+        claim.residual = claim.derived_expression;
+        claim.failure = "a sign claim needs real symbols; the derived side has a complex one";
+        return;
+      }
+      // The paper side, when it states an expression, must be the derived one.
+      if (!claim.paper_expression.is_zero()) {
+        claim.residual = residual_of(claim.derived_expression, claim.paper_expression, claim.constraints);
+        if (!all_zero(claim.residual)) {
+          claim.verdict = Verdict::failed;
+          return;
+        }
+      }
       claim.verdict =
           is_manifestly_nonnegative(claim.derived_expression) ? Verdict::verified : Verdict::failed;
       claim.residual = claim.verdict == Verdict::verified ? ex(0) : GiNaC::factor(claim.derived_expression);
       return;
+    }
     case Comparison::identity:
       claim.residual = residual_of(claim.derived_expression, claim.paper_expression, claim.constraints);
       break;
@@ -79,6 +101,22 @@ void check(Claim& claim) {
       break;
   }
   claim.verdict = all_zero(claim.residual) ? Verdict::verified : Verdict::failed;
+}
+
+}  // namespace
+
+void check(Claim& claim) {
+  claim.failure.clear();
+  try {
+    decide(claim);
+  } catch (const std::exception& error) {
+    claim.verdict = Verdict::failed;
+    // Arithmetic on lists would throw again: the residual is then the derived side as it stands.
+    const bool lists = GiNaC::is_a<GiNaC::lst>(claim.derived_expression) ||
+                       GiNaC::is_a<GiNaC::lst>(claim.paper_expression);
+    claim.residual = lists ? claim.derived_expression : claim.derived_expression - claim.paper_expression;
+    claim.failure = std::string("the comparison could not be carried out: ") + error.what();
+  }
 }
 
 std::string to_string(Verdict verdict) {

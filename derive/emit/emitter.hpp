@@ -4,7 +4,8 @@
 // products and every number as Scalar(integer). Common subexpressions are hoisted into named consts.
 #pragma once
 
-#include "derivation.hpp"
+#include "emit/kernel.hpp"
+#include "model.hpp"
 
 #include <string>
 #include <vector>
@@ -24,13 +25,15 @@ EmittedKernel emit_kernel(const Kernel& kernel);
 /// A stable fingerprint of `text`: "fnv1a64:" and 16 hex digits.
 std::string fingerprint(const std::string& text);
 
-/// The header billiards/kernels.hpp: preamble with `derivation_fingerprint`, every kernel of the
-/// derivation with a comment naming the audit claims it implements and its operation count.
-std::string kernels_header(const Derivation& derivation, const std::string& derivation_fingerprint);
+/// The model's kernels header (billiards/kernels.hpp for the paper): a preamble whose fingerprint covers
+/// the header's own text and `audit_text` (the audit's JSON), then every kernel with a comment naming
+/// the claim it was proven equal to, the claims it implements and its operation count. The kernels must
+/// have been validated (validate.hpp) first.
+std::string kernels_header(const Derivation& derivation, const std::string& audit_text);
 
-/// The header billiards/reference_kernels.hpp: the derivation's reference kernels (the raw derivation
-/// before simplification, for the benchmark only) in namespace billiards::reference_kernels, on top of
-/// billiards/kernels.hpp.
-std::string reference_kernels_header(const Derivation& derivation, const std::string& derivation_fingerprint);
+/// The reference header (billiards/reference_kernels.hpp for the paper): the model's reference kernels
+/// (the raw derivation before simplification, for the benchmark only) on top of its kernels header,
+/// fingerprinted the same way.
+std::string reference_kernels_header(const Derivation& derivation, const std::string& audit_text);
 
 }  // namespace billiards::derive

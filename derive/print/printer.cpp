@@ -1,4 +1,6 @@
-#include "printer.hpp"
+#include "print/printer.hpp"
+
+#include "core/named_constants.hpp"
 
 #include <algorithm>
 #include <sstream>
@@ -314,6 +316,9 @@ std::string print_cpp_leaf(const ex& e) {
                        : scalar_literal(GiNaC::abs(n.numer())) + " / " + scalar_literal(n.denom());
     return n.is_negative() ? "-(" + magnitude + ")" : magnitude;
   }
+  // The named constants, by identity: their C++ spelling is the emitted header's device-safe helper.
+  if (e.is_equal(smallest_normal())) return "smallest_normal<Scalar>()";
+  if (e.is_equal(infinity())) return "infinity<Scalar>()";
   if (GiNaC::is_a<GiNaC::symbol>(e)) return GiNaC::ex_to<GiNaC::symbol>(e).get_name();
   if (GiNaC::is_a<GiNaC::function>(e) && GiNaC::ex_to<GiNaC::function>(e).get_name() == "abs") {
     // The emitted header defines absolute_value(): constexpr, unlike std::abs before C++23.
@@ -330,8 +335,14 @@ std::string print_any(const ex& e, Notation notation) {
   if (GiNaC::is_a<numeric>(e)) return ginac_print(e, notation);
   if (GiNaC::is_a<GiNaC::lst>(e)) return print_list(e, notation);
   if (GiNaC::is_a<GiNaC::relational>(e)) {
-    return print_any(e.lhs(), notation) + (notation == Notation::latex ? " = " : " == ") +
-           print_any(e.rhs(), notation);
+    const bool latex = notation == Notation::latex;
+    const char* op = latex ? " = " : " == ";
+    if (e.info(GiNaC::info_flags::relation_not_equal)) op = latex ? " \\neq " : " != ";
+    if (e.info(GiNaC::info_flags::relation_less)) op = " < ";
+    if (e.info(GiNaC::info_flags::relation_less_or_equal)) op = latex ? " \\leq " : " <= ";
+    if (e.info(GiNaC::info_flags::relation_greater)) op = " > ";
+    if (e.info(GiNaC::info_flags::relation_greater_or_equal)) op = latex ? " \\geq " : " >= ";
+    return print_any(e.lhs(), notation) + op + print_any(e.rhs(), notation);
   }
   if (GiNaC::is_a<GiNaC::function>(e)) {
     const std::string name = GiNaC::ex_to<GiNaC::function>(e).get_name();

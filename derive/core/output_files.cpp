@@ -1,4 +1,4 @@
-#include "output_files.hpp"
+#include "core/output_files.hpp"
 
 #include <cerrno>
 #include <cstdio>

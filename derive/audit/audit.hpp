@@ -2,7 +2,8 @@
 // the derivation: no timestamps, no paths, stable order.
 #pragma once
 
-#include "derivation.hpp"
+#include "emit/validate.hpp"
+#include "model.hpp"
 
 #include <ostream>
 #include <string>
@@ -10,22 +11,17 @@
 
 namespace billiards::derive {
 
-/// The paper the audit checks, cited in every output.
-inline constexpr const char* paper_citation = "S. T. Parkin, \"Billiard Ball Physics\", 2023";
-/// What the paper's model covers.
-inline constexpr const char* model_scope =
-    "frictionless, spinless balls in instantaneous contact (perfectly elastic)";
-
 /// The GiNaC library version the derivation ran with, e.g. "1.8.6".
 std::string ginac_version();
 
 std::string audit_markdown(const Derivation& derivation);
 std::string audit_json(const Derivation& derivation);
 
-/// What billiards-derive prints: the summary and the files written to `out`, and to `err` one line
-/// per failed claim naming it and its residual. Returns the number of failed claims.
-int report(const Derivation& derivation, const std::vector<std::string>& written, std::ostream& out,
-           std::ostream& err);
+/// What billiards-derive prints for one model: the summary and the files written to `out`, and to `err`
+/// one line per failed claim naming it and its residual (or why its comparison failed) and one line per
+/// kernel problem naming the kernel and the claim. Returns the number of failed claims plus problems.
+int report(const Derivation& derivation, const std::vector<KernelProblem>& problems,
+           const std::vector<std::string>& written, std::ostream& out, std::ostream& err);
 
 /// The latex of what the audit shows for each side of a claim: the display form when one is set,
 /// otherwise the expression itself.

@@ -1,0 +1,19 @@
+#include "core/named_constants.hpp"
+
+namespace billiards::derive {
+
+const GiNaC::symbol& smallest_normal() {
+  static const GiNaC::symbol constant("smallest_normal", "x_{\\min}");
+  return constant;
+}
+
+const GiNaC::symbol& infinity() {
+  static const GiNaC::symbol constant("infinity", "\\infty");
+  return constant;
+}
+
+bool is_named_constant(const GiNaC::ex& e) {
+  return e.is_equal(smallest_normal()) || e.is_equal(infinity());
+}
+
+}  // namespace billiards::derive

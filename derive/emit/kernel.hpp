@@ -1,0 +1,66 @@
+// The kernel form: what a model hands the emitter. A kernel is a sequence of named steps in its
+// parameters and the steps before; its outputs are proven equal to the derived expression of one
+// verified claim (validate.hpp) before anything is printed.
+#pragma once
+
+#include <ginac/ginac.h>
+
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace billiards::derive {
+
+/// An override of a kernel step: under `condition` (a relational such as `x > y`, `x <= y`), the step
+/// takes `alternative` instead of its usual expression. Later guards of a step win.
+struct Guard {
+  enum class Kind {
+    /// The same quantity in another form, for inputs where the usual form would lose it to rounding.
+    /// Validated: with every guard of the same condition taken, the outputs still equal the kernel's
+    /// claim. An exact evaluation may ignore it.
+    same_value,
+    /// A different expression where the condition holds. Validated: either the outputs still equal
+    /// the kernel's claim given the condition (e.g. the sign of a square root chosen by a sign), or
+    /// the condition and the value are a case stated by `claim` (no contact: +∞). An exact
+    /// evaluation must honour it.
+    piecewise,
+    /// A condition that never holds in exact arithmetic, only after rounding: `x < 0` where `claim` is
+    /// a verified sign claim that x ≥ 0. Validated against that claim.
+    unreachable,
+  };
+  GiNaC::ex condition;
+  GiNaC::ex alternative;
+  Kind kind = Kind::same_value;
+  std::string claim = {};  ///< the audit claim that vouches for this guard
+};
+
+/// A named quantity of an emitted kernel, `const Scalar name = expression;`, or with guards
+/// `Scalar name = expression; if (condition) name = alternative; ...`.
+struct KernelStep {
+  GiNaC::symbol name;    ///< its C++ name, as a symbol later steps and outputs use
+  GiNaC::ex expression;  ///< in the kernel's parameters, earlier steps and named constants
+  std::vector<Guard> guards = {};
+};
+
+/// A scalar kernel for the emitter.
+struct Kernel {
+  std::string name;                   ///< the C++ function name
+  std::string brief;                  ///< one sentence for its comment
+  std::vector<GiNaC::ex> parameters;  ///< symbols, in signature order; their names are the C++ names
+  std::vector<KernelStep> steps;
+  std::vector<GiNaC::ex> outputs;  ///< one: returns Scalar; two: NormalVelocityChange {first, second}
+  /// The verified claim whose derived expression (a list, one element per output) the outputs equal.
+  std::string equals = {};
+  /// The kernel's parameters in the claims' terms (e.g. v1d → v1·d in components), applied to both
+  /// sides before comparing; empty when the kernel's parameters are the claim's own symbols.
+  GiNaC::exmap in_claim_terms = {};
+  /// Further audit claims it implements, named in its comment beside `equals` and the guards' claims.
+  std::vector<std::string> claims = {};
+  /// Names for common subexpressions the emitter hoists, e.g. "restitution_factor" for 1 + e.
+  std::vector<std::pair<std::string, GiNaC::ex>> names = {};
+};
+
+/// Every claim a kernel cites, in order and without repeats: `equals`, `claims`, the guards' claims.
+std::vector<std::string> cited_claims(const Kernel& kernel);
+
+}  // namespace billiards::derive

@@ -1,0 +1,37 @@
+// Every emitted line proven: before a kernel is printed it is checked against the claims of the
+// derivation. Generic: it reads a kernel and a list of claims, never a model.
+#pragma once
+
+#include "core/claim.hpp"
+#include "emit/kernel.hpp"
+
+#include <string>
+#include <vector>
+
+namespace billiards::derive {
+
+/// Why a kernel is not proven: the kernel, the claim concerned (empty when none is) and the reason.
+struct KernelProblem {
+  std::string kernel;
+  std::string claim;
+  std::string reason;
+};
+
+/// Checks `kernel` against `claims` (exact arithmetic, GiNaC):
+/// - its free symbols are its parameters, earlier steps (a guard may also read its own step) or named
+///   constants, and no step reuses a name;
+/// - every claim it cites exists and is verified;
+/// - its outputs, every step substituted, equal the derived expression of the claim `equals` (with
+///   `in_claim_terms` applied to both sides; square roots of perfect squares taken and |…| resolved
+///   by the signs the branch's conditions fix), decided by check() under that claim's constraints;
+/// - the same with every same_value guard of one condition taken;
+/// - each piecewise guard either keeps the outputs equal to that claim given its condition, or its
+///   condition (with the later guards of its step not taken) and its value are a case of its claim;
+/// - each unreachable guard reads `x < 0` where its claim is a verified sign claim that x ≥ 0.
+/// Returns every problem found; none means the kernel is proven. Never throws.
+std::vector<KernelProblem> validate_kernel(const Kernel& kernel, const std::vector<Claim>& claims);
+
+/// The problems of every kernel in `kernels`, in order.
+std::vector<KernelProblem> validate_kernels(const std::vector<Kernel>& kernels, const std::vector<Claim>& claims);
+
+}  // namespace billiards::derive

@@ -1,0 +1,99 @@
+#include "mutations.hpp"
+
+#include "core/named_constants.hpp"
+
+#include <stdexcept>
+
+namespace billiards::derive::testing {
+
+using GiNaC::ex;
+
+namespace {
+
+KernelStep& step(Kernel& kernel, const std::string& name) {
+  for (KernelStep& s : kernel.steps) {
+    if (s.name.get_name() == name) return s;
+  }
+  throw std::invalid_argument("kernel " + kernel.name + " has no step " + name);
+}
+
+// A symbol of the kernel by its name: a parameter or a step.
+ex symbol(const Kernel& kernel, const std::string& name) {
+  for (const ex& parameter : kernel.parameters) {
+    if (GiNaC::ex_to<GiNaC::symbol>(parameter).get_name() == name) return parameter;
+  }
+  for (const KernelStep& s : kernel.steps) {
+    if (s.name.get_name() == name) return s.name;
+  }
+  throw std::invalid_argument("kernel " + kernel.name + " has no symbol " + name);
+}
+
+}  // namespace
+
+const std::vector<Mutation>& paper_mutations() {
+  static const std::vector<Mutation> mutations = {
+      {"relative_speed_sign_flipped", "elastic_normal_velocity_change",
+       [](Kernel& k) { step(k, "relative_normal_speed").expression = symbol(k, "v1n") - symbol(k, "v2n"); }},
+      {"mass_ratio_swapped", "elastic_normal_velocity_change",
+       [](Kernel& k) { step(k, "first_mass_ratio").expression = symbol(k, "m2") / symbol(k, "m1"); }},
+      {"approach_clamp_sign_flipped", "approaching_direction_velocity_change",
+       [](Kernel& k) {
+         const ex s = symbol(k, "direction_speed");
+         step(k, "approach_speed").expression = (s + GiNaC::abs(s)) / 2;
+       }},
+      {"division_by_dd_dropped", "direction_velocity_change",
+       [](Kernel& k) { step(k, "direction_speed").expression = symbol(k, "v2d") - symbol(k, "v1d"); }},
+      {"division_by_dd_squared", "direction_velocity_change",
+       [](Kernel& k) {
+         step(k, "direction_speed").expression =
+             (symbol(k, "v2d") - symbol(k, "v1d")) / GiNaC::pow(symbol(k, "dd"), 2);
+       }},
+      {"guard_alternative_m1_for_m2", "normal_velocity_change",
+       [](Kernel& k) { step(k, "first_multiplier").guards.at(0).alternative = symbol(k, "m1"); }},
+      {"guard_alternative_difference_of_masses", "normal_velocity_change",
+       [](Kernel& k) {
+         step(k, "impulse_per_total_mass").expression = (1 + symbol(k, "restitution")) *
+                                                        symbol(k, "relative_normal_speed") /
+                                                        (symbol(k, "m1") - symbol(k, "m2"));
+       }},
+      {"reference_root_sign_flipped", "raw_normal_velocity_change",
+       [](Kernel& k) {
+         step(k, "x1n").expression =
+             (-symbol(k, "quadratic_b") - symbol(k, "signed_root")) / (2 * symbol(k, "quadratic_a"));
+       }},
+      {"reference_factor_two_dropped", "raw_normal_velocity_change",
+       [](Kernel& k) {
+         step(k, "x1n").expression = (-symbol(k, "quadratic_b") + symbol(k, "signed_root")) / symbol(k, "quadratic_a");
+       }},
+      {"time_of_impact_approach_test_reversed", "time_of_impact",
+       [](Kernel& k) { step(k, "contact_time").guards.at(2).condition = symbol(k, "pv") <= 0; }},
+      {"cushion_output_negated", "cushion_normal_velocity_change",
+       [](Kernel& k) { k.outputs.at(0) = -k.outputs.at(0); }},
+      // Beyond the eleven the issue names.
+      {"time_of_impact_touching_value", "time_of_impact",
+       [](Kernel& k) { step(k, "contact_time").guards.at(0).alternative = 1; }},
+      {"reference_discriminant_guard_not_a_sign", "raw_normal_velocity_change",
+       [](Kernel& k) { step(k, "discriminant").guards.at(0).condition = symbol(k, "quadratic_b") < 0; }},
+      {"step_reads_an_unknown_symbol", "elastic_normal_velocity_change",
+       [](Kernel& k) { step(k, "first_mass_ratio").expression = symbol(k, "m1") / GiNaC::symbol("m3"); }},
+      {"cites_an_unknown_claim", "cushion_normal_velocity_change",
+       [](Kernel& k) { k.claims.push_back("cushion.no_such_claim"); }},
+      {"equals_an_unverified_claim", "elastic_normal_velocity_change",
+       [](Kernel& k) { k.equals = "assumption.tangential_velocity_unchanged"; }},
+  };
+  return mutations;
+}
+
+void apply(const Mutation& mutation, Derivation& derivation) {
+  for (std::vector<Kernel>* list : {&derivation.kernels, &derivation.reference_kernels}) {
+    for (Kernel& kernel : *list) {
+      if (kernel.name == mutation.kernel) {
+        mutation.edit(kernel);
+        return;
+      }
+    }
+  }
+  throw std::invalid_argument("mutation " + mutation.name + ": no kernel " + mutation.kernel);
+}
+
+}  // namespace billiards::derive::testing
