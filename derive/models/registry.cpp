@@ -1,12 +1,12 @@
 // The registry of models: one line each. billiards-derive runs them in this order.
-#include "derivation.hpp"
 #include "model.hpp"
+#include "models/parkin2023/paper.hpp"
 
 namespace billiards::derive {
 
 const std::vector<ModelEntry>& registered_models() {
   static const std::vector<ModelEntry> models = {
-      {"parkin2023", [] { return derive_paper(); }},
+      {"parkin2023", [] { return parkin2023::derive(); }},
   };
   return models;
 }

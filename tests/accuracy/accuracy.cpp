@@ -16,7 +16,7 @@
 //   prints a Markdown table (kernel, type, samples, largest error in ULP, non-finite results) and
 //   exits 1 when an error exceeds --limit (default 4) or a valid input gives NaN or infinity.
 #include "core/named_constants.hpp"
-#include "derivation.hpp"
+#include "models/parkin2023/paper.hpp"
 #include "exact.hpp"
 
 #include <billiards/kernels.hpp>
@@ -384,7 +384,7 @@ int main(int argc, char** argv) {
   }
 
   GiNaC::Digits = 60;  // square roots, far beyond double precision
-  const billiards::derive::Derivation derivation = billiards::derive::derive_paper();
+  const billiards::derive::Derivation derivation = billiards::derive::parkin2023::derive();
   std::vector<Row> rows, reference_rows;
   for (const billiards::derive::Kernel& kernel : derivation.kernels) {
     rows.push_back(measure<float>(kernel, "float", samples));

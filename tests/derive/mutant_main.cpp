@@ -1,7 +1,7 @@
 // billiards-derive-mutant: billiards-derive with one mutation of the paper's kernels applied after the
 // model is built, for the mutation suite. Usage: billiards-derive-mutant MUTATION [billiards-derive
 // options]; `--list` prints the mutations, one "name kernel" line each.
-#include "derivation.hpp"
+#include "models/parkin2023/paper.hpp"
 #include "mutations.hpp"
 #include "run.hpp"
 
@@ -19,7 +19,7 @@ int main(int argc, char** argv) {
   for (const testing::Mutation& mutation : testing::paper_mutations()) {
     if (mutation.name != wanted) continue;
     const std::vector<ModelEntry> models = {{"parkin2023", [&mutation] {
-                                               Derivation derivation = derive_paper();
+                                               Derivation derivation = parkin2023::derive();
                                                testing::apply(mutation, derivation);
                                                return derivation;
                                              }}};

@@ -1,6 +1,6 @@
 // The derivation of the paper: every claim verified, one assumption, and perturbed definitions caught.
 #include "audit/audit.hpp"
-#include "derivation.hpp"
+#include "models/parkin2023/paper.hpp"
 
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
@@ -17,7 +17,7 @@ using namespace billiards::derive;
 namespace {
 
 const Derivation& paper_derivation() {
-  static const Derivation derivation = derive_paper();
+  static const Derivation derivation = parkin2023::derive();
   return derivation;
 }
 
@@ -140,9 +140,9 @@ TEST_CASE("The paper's derivation checks out", "[derive][paper]") {
 
 TEST_CASE("A perturbed definition fails the claims downstream of it", "[derive][perturbation]") {
   SECTION("K with the ½ dropped from m2's term: every printed formula downstream fails") {
-    Definitions wrong;
+    parkin2023::Definitions wrong;
     wrong.kinetic_coefficient_2 = 1;  // K(a, b) = ½ m1 a² + m2 b²
-    const Derivation derivation = derive_paper(wrong);
+    const Derivation derivation = parkin2023::derive(wrong);
     // These state properties that hold for any K(a, b) = α m1 a² + β m2 b², so they must stay true:
     // the split (no cross terms), the reduction to normal components, and that the derived result
     // conserves the K it was derived from. (D ≥ 0 still holds too, but the sign claim also compares D
@@ -172,10 +172,10 @@ TEST_CASE("A perturbed definition fails the claims downstream of it", "[derive][
   SECTION("K with the ½ dropped from both terms: the coefficients and D fail, the roots cannot") {
     // K → 2K scales the energy equation K(v) = K(x) by 2: its roots, and so everything from the roots
     // on, are unchanged. What the paper prints for A, B, C and D is no longer what is derived.
-    Definitions doubled;
+    parkin2023::Definitions doubled;
     doubled.kinetic_coefficient_1 = 1;
     doubled.kinetic_coefficient_2 = 1;
-    const Derivation derivation = derive_paper(doubled);
+    const Derivation derivation = parkin2023::derive(doubled);
     for (const char* id : {"quadratic.vector_form", "quadratic.in_normal_component",
                            "quadratic.coefficient_a", "quadratic.coefficient_b", "quadratic.coefficient_c",
                            "discriminant.paper_form", "discriminant.expanded", "discriminant.factored"}) {
@@ -185,9 +185,9 @@ TEST_CASE("A perturbed definition fails the claims downstream of it", "[derive][
     CHECK(find_claim(derivation, "result.x1_simplified_form")->verdict == Verdict::verified);
   }
   SECTION("the report names every failed claim with its residual, one line each") {
-    Definitions wrong;
+    parkin2023::Definitions wrong;
     wrong.kinetic_coefficient_2 = 1;
-    const Derivation derivation = derive_paper(wrong);
+    const Derivation derivation = parkin2023::derive(wrong);
     std::ostringstream out, err;
     const int failed = report(derivation, {}, {"dir/AUDIT.md"}, out, err);
     CHECK(failed == summarize(derivation.claims).failed);
@@ -201,9 +201,9 @@ TEST_CASE("A perturbed definition fails the claims downstream of it", "[derive][
     CHECK(clean_err.str().empty());
   }
   SECTION("P with m2 doubled: everything from momentum conservation on fails") {
-    Definitions wrong;
+    parkin2023::Definitions wrong;
     wrong.momentum_coefficient_2 = 2;
-    const Derivation derivation = derive_paper(wrong);
+    const Derivation derivation = parkin2023::derive(wrong);
     for (const char* id : {"quadratic.x2_from_momentum", "quadratic.coefficient_a", "discriminant.factored",
                            "roots.quadratic_formula.relative_speed_nonnegative", "result.x1_simplified_form",
                            "result.x2_by_symmetry", "sanity.head_on.x1", "cushion.limit"}) {
@@ -244,7 +244,7 @@ TEST_CASE("The audit", "[derive][audit]") {
     }
   }
   SECTION("a second run writes the same bytes") {
-    const Derivation again = derive_paper();
+    const Derivation again = parkin2023::derive();
     CHECK(audit_markdown(again) == audit_markdown(derivation));
     CHECK(audit_json(again) == audit_json(derivation));
   }
@@ -253,10 +253,10 @@ TEST_CASE("The audit", "[derive][audit]") {
 TEST_CASE("A slip that GiNaC cannot compare fails its claims and the run goes on", "[derive][perturbation]") {
   // B² + 4AC for the discriminant: no perfect square, so √D stays a square root and reducing modulo
   // n·n = 1 meets a non-integer power, which GiNaC refuses with an exception.
-  Definitions slip;
+  parkin2023::Definitions slip;
   slip.discriminant_ac_coefficient = 4;
   Derivation derivation;
-  REQUIRE_NOTHROW(derivation = derive_paper(slip));
+  REQUIRE_NOTHROW(derivation = parkin2023::derive(slip));
   const Summary summary = summarize(derivation.claims);
   CHECK(summary.failed >= 8);
   // At least one comparison threw inside GiNaC and was turned into a failure with its reason.

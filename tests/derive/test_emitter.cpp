@@ -1,5 +1,5 @@
 // The emitter: C++ without pow or floating literals, common subexpressions hoisted, honest op counts.
-#include "derivation.hpp"
+#include "models/parkin2023/paper.hpp"
 #include "emit/emitter.hpp"
 #include "print/printer.hpp"
 
@@ -125,7 +125,7 @@ TEST_CASE("Kernels", "[derive][emitter]") {
 }
 
 TEST_CASE("The reference kernels header", "[derive][emitter]") {
-  const Derivation derivation = derive_paper();
+  const Derivation derivation = parkin2023::derive();
   REQUIRE(derivation.reference_kernels.size() == 1);
   const std::string header = reference_kernels_header(derivation, "{}");
   CHECK(contains(header, "do not edit"));
@@ -143,7 +143,7 @@ TEST_CASE("The reference kernels header", "[derive][emitter]") {
 }
 
 TEST_CASE("The fingerprint covers the emitted text and the audit", "[derive][emitter]") {
-  const Derivation derivation = derive_paper();
+  const Derivation derivation = parkin2023::derive();
   const auto fingerprint_line = [](const std::string& header) {
     const auto at = header.find("// Fingerprint: ");
     return header.substr(at, header.find('\n', at) - at);

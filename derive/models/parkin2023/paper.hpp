@@ -1,13 +1,12 @@
-// The derivation of S. T. Parkin, "Billiard Ball Physics" (2023), step by step from the definitions.
-// Each step computes its expressions from the previous steps' output and records claims; check()
-// decides every verdict.
+// The model of S. T. Parkin, "Billiard Ball Physics" (2023): the paper re-derived step by step from
+// its definitions, the physics engines need beyond it, and the kernels emitted from both.
 #pragma once
 
 #include "model.hpp"
 
 #include <ginac/ginac.h>
 
-namespace billiards::derive {
+namespace billiards::derive::parkin2023 {
 
 /// The paper's definitions, P(a, b) = m1 a + m2 b and K(a, b) = ½ m1 a² + ½ m2 b², and the quadratic
 /// formula's discriminant, written as the coefficients of each term so that a test can perturb one and
@@ -21,7 +20,11 @@ struct Definitions {
   GiNaC::ex discriminant_ac_coefficient = -4;
 };
 
-/// Runs every step with the given definitions (the paper's by default) and checks every claim.
-Derivation derive_paper(const Definitions& definitions = {});
+/// Runs every step with the given definitions (the paper's by default), checks every claim and builds
+/// the kernels (validated later, by the pipeline, before anything is printed).
+Derivation derive(const Definitions& definitions = {});
 
-}  // namespace billiards::derive
+/// Title, citation, scope, notation, the paper's imprecisions and the output paths.
+ModelInfo info();
+
+}  // namespace billiards::derive::parkin2023

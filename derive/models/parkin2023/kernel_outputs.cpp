@@ -1,0 +1,96 @@
+#include "models/parkin2023/steps.hpp"
+
+namespace billiards::derive::parkin2023 {
+
+void kernel_outputs(Recorder& record, const Setting& setting, const Selection& selection,
+                    const Restitution& restitution, const Direction& direction, const Approaching& approaching) {
+  const Symbols& s = symbols();
+  const ex e = s.restitution;
+  const ex speed = s.relative_normal_speed;
+  const ex &plus_root = selection.x1n, &x2n_selected = selection.x2n;
+  const ex &x1n_e = restitution.x1n, &x2n_e = restitution.x2n;
+  const ex& second_coefficient_e = restitution.second_coefficient;
+  const ex relative = s.v2n - s.v1n;
+  const ex& dd = direction.dd;
+  const lst& from_unit_form = direction.from_unit_form;
+  const Vec& n_of_d = direction.unit;
+  const ex& approach_speed = approaching.approach_speed;
+  const Space& space = setting.space;
+  const ex direction_speed_in_components =
+      (dot(space.v2, direction.d) - dot(space.v1, direction.d)) / dd;  // ((v2 − v1)·d)/(d·d)
+  {
+    const lst changes{GiNaC::normal(plus_root - s.v1n), GiNaC::normal(x2n_selected - s.v2n)};
+    const lst printed{2 * s.m2 / (s.m1 + s.m2) * relative, -2 * s.m1 / (s.m1 + s.m2) * relative};
+    record.add({
+        .id = "kernel.elastic_normal_velocity_change",
+        .paper = "\"This form makes it easier to see the impulse magnitude\"",
+        .statement = "x1·n − v1·n = (2 m2/(m1 + m2)) (v2 − v1)·n and x2·n − v2·n = −(2 m1/(m1 + m2)) (v2 − v1)·n: "
+                     "the selected root, and x2·n from momentum, along n.",
+        .method = "the \"+\" root minus v1·n, x2·n from momentum minus v2·n; identity after normal()",
+        .comparison = Comparison::identity,
+        .paper_expression = printed,
+        .derived_expression = changes,
+        .paper_display = printed,
+        .derived_display = factored_form(changes),
+        .depends_on = {"selection.plus_root_reverses_relative_normal_velocity", "result.x1_simplified_form",
+                       "result.x2_by_symmetry"},
+    });
+    const lst changes_e{GiNaC::normal(x1n_e - s.v1n), GiNaC::normal(x2n_e - s.v2n)};
+    const lst printed_e{(1 + e) * s.m2 / (s.m1 + s.m2) * relative, -(1 + e) * s.m1 / (s.m1 + s.m2) * relative};
+    record.add({
+        .id = "kernel.normal_velocity_change",
+        .statement = "With restitution e: x1·n − v1·n = (1 + e) m2/(m1 + m2) (v2 − v1)·n and x2·n − v2·n = "
+                     "−(1 + e) m1/(m1 + m2) (v2 − v1)·n.",
+        .method = "the normal components solved with lsolve() minus v1·n, v2·n; identity after normal()",
+        .comparison = Comparison::identity,
+        .paper_expression = printed_e,
+        .derived_expression = changes_e,
+        .paper_display = printed_e,
+        .derived_display = factored_form(changes_e),
+        .depends_on = {"beyond.restitution.impulse_coefficients"},
+    });
+    // The multiples of d: (x1 − v1) = λ1 d in the direction form derived from the unit form, λ1 read off
+    // the first component (beyond.any_normal.direction_form checks every component).
+    const Vec x2_unit = add(space.v2, scale(second_coefficient_e * dot(subtract(space.v2, space.v1), n_of_d), n_of_d));
+    const lst multiples{GiNaC::normal((from_unit_form.op(0) - space.v1[0]) / direction.d[0]),
+                        GiNaC::normal((x2_unit[0] - space.v2[0]) / direction.d[0])};
+    const lst printed_multiples{(1 + e) * s.m2 / (s.m1 + s.m2) * direction_speed_in_components,
+                                -(1 + e) * s.m1 / (s.m1 + s.m2) * direction_speed_in_components};
+    record.add({
+        .id = "kernel.direction_velocity_change",
+        .statement = "Along a direction d (not necessarily unit) the velocities change by λ1 d and λ2 d with "
+                     "λ1 = (1 + e) m2/(m1 + m2) ((v2 − v1)·d)/(d·d) and λ2 = −(1 + e) m1/(m1 + m2) ((v2 − v1)·d)/(d·d).",
+        .method = "n = d/√(d·d) substituted into the unit form (3-D components); (x_i − v_i)/d read off the first "
+                  "component; identity after normal()",
+        .comparison = Comparison::identity,
+        .paper_expression = printed_multiples,
+        .derived_expression = multiples,
+        .paper_display = lst{(1 + e) * s.m2 / (s.m1 + s.m2) * s.relative_direction_speed,
+                             -(1 + e) * s.m1 / (s.m1 + s.m2) * s.relative_direction_speed},
+        .depends_on = {"beyond.any_normal.direction_form", "beyond.restitution.impulse_coefficients"},
+    });
+    // Only approaching balls: the relative speed along d clamped as beyond.approaching.kernel_form proves.
+    const ex clamped = approach_speed.subs(speed == direction_speed_in_components);
+    const lst approaching{GiNaC::normal(multiples.op(0) / direction_speed_in_components) * clamped,
+                          GiNaC::normal(multiples.op(1) / direction_speed_in_components) * clamped};
+    const ex printed_clamp = (direction_speed_in_components - GiNaC::abs(direction_speed_in_components)) / 2;
+    const lst printed_approaching{(1 + e) * s.m2 / (s.m1 + s.m2) * printed_clamp,
+                                  -(1 + e) * s.m1 / (s.m1 + s.m2) * printed_clamp};
+    record.add({
+        .id = "kernel.approaching_direction_velocity_change",
+        .statement = "Resolving only approaching balls along d: λ1 and λ2 with ((v2 − v1)·d)/(d·d) replaced by "
+                     "σ = (s − |s|)/2 of it, which is the collision when (v2 − v1)·d < 0 and no change otherwise.",
+        .method = "the multiples of kernel.direction_velocity_change divided by their speed, times the clamped "
+                  "speed of beyond.approaching.kernel_form; identity after normal()",
+        .comparison = Comparison::identity,
+        .paper_expression = printed_approaching,
+        .derived_expression = approaching,
+        .paper_display = lst{(1 + e) * s.m2 / (s.m1 + s.m2) * s.approach_direction_speed,
+                             -(1 + e) * s.m1 / (s.m1 + s.m2) * s.approach_direction_speed},
+        .depends_on = {"kernel.direction_velocity_change", "beyond.approaching.kernel_form"},
+    });
+  }
+
+}
+
+}  // namespace billiards::derive::parkin2023

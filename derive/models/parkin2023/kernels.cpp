@@ -1,0 +1,262 @@
+// The kernels the emitter prints, built from the steps' results — never typed a second time — and
+// validated against the claim each `equals` before anything is printed. Every collision kernel uses the
+// mass-ratio form (beyond.immovable.mass_ratio_form); the paper's elastic one is the same with e = 1.
+// Coefficients are emitted as magnitudes with the sign on the product, so swapping the balls swaps the
+// results bit for bit, and equal masses give exactly (1 + e)/2.
+#include "models/parkin2023/steps.hpp"
+
+#include "core/named_constants.hpp"
+#include "print/printer.hpp"
+
+namespace billiards::derive::parkin2023 {
+
+namespace {
+
+ex magnitude(const ex& coefficient) { return prints_negative(coefficient) ? ex(-coefficient) : coefficient; }
+
+ex with_sign(const ex& coefficient, const ex& product) {
+  return prints_negative(coefficient) ? ex(-product) : product;
+}
+
+std::vector<KernelStep> steps_then(std::vector<KernelStep> first, const std::vector<KernelStep>& then) {
+  first.insert(first.end(), then.begin(), then.end());
+  return first;
+}
+
+// The names of the collision kernels' steps.
+struct ChangeNames {
+  GiNaC::symbol first_ratio{"first_mass_ratio"}, second_ratio{"second_mass_ratio"};
+  GiNaC::symbol first_coefficient{"first_impulse_coefficient"}, second_coefficient{"second_impulse_coefficient"};
+  GiNaC::symbol first_change{"first_change"}, second_change{"second_change"};
+  GiNaC::symbol first_factor{"first_factor"}, second_factor{"second_factor"};
+  GiNaC::symbol first_multiplier{"first_multiplier"}, second_multiplier{"second_multiplier"};
+  GiNaC::symbol per_mass{"impulse_per_total_mass"};
+};
+
+// The two changes for restitution `restitution` (e, or 1) and speed `by`: the ratio form c1 · by, or
+// the small-mass form where c1 = (1 + e)/(1 + m1/m2) has dropped below the smallest normal number
+// and so lost digits (beyond.immovable.small_mass_form), likewise for ball 2. Each change is a
+// product whose two factors are chosen, never computed, under the condition: so no operation
+// depends on it, and compilers vectorise a loop of kernels with plain selects (GCC would not
+// if-convert a division or product made conditional, short of AVX-512 masks).
+std::vector<KernelStep> change_steps(const ChangeNames& names, const MassRatios& ratios, const ex& restitution,
+                                     const ex& by) {
+  const Symbols& s = symbols();
+  const ex e = s.restitution, speed = s.relative_normal_speed;
+  const ex first = ratios.first_ratio_form.subs(lst{e == restitution, s.first_mass_ratio == names.first_ratio});
+  const ex second = ratios.second_ratio_form.subs(lst{e == restitution, s.second_mass_ratio == names.second_ratio});
+  // In the small-mass form (1 + e) s/(m1 + m2) is computed first and the light mass multiplies it
+  // last: the product then rounds once, even into the subnormal range, where m2 (1 + e) s would
+  // round at every step; and (1 + e) s/(m1 + m2) cannot overflow there (c1 below the smallest
+  // normal means m1/m2 > 2^1022 (double), so m1 + m2 ≥ 2 ε).
+  const ex per_mass = (1 + restitution) * by / (s.m1 + s.m2);
+  const ex in_per_mass = speed == names.per_mass * (s.m1 + s.m2) / (1 + restitution);
+  const ex first_small = magnitude(ratios.first_small_mass_form.subs(e == restitution).subs(in_per_mass));
+  const ex second_small = magnitude(ratios.second_small_mass_form.subs(e == restitution).subs(in_per_mass));
+  const auto tiny = [](const GiNaC::symbol& coefficient, const ex& alternative) {
+    return Guard{coefficient < smallest_normal(), alternative, Guard::Kind::same_value,
+                 "beyond.immovable.small_mass_form"};
+  };
+  return {
+      {names.first_ratio, s.m1 / s.m2},
+      {names.second_ratio, s.m2 / s.m1},
+      {names.first_coefficient, magnitude(first)},
+      {names.second_coefficient, magnitude(second)},
+      {names.per_mass, per_mass},
+      // The small-mass form's factors, read off the derived form: per_mass times the light mass.
+      {names.first_factor, names.first_coefficient, {tiny(names.first_coefficient, names.per_mass)}},
+      {names.first_multiplier, by, {tiny(names.first_coefficient, GiNaC::normal(first_small / names.per_mass))}},
+      {names.first_change, names.first_factor * names.first_multiplier},
+      {names.second_factor, names.second_coefficient, {tiny(names.second_coefficient, names.per_mass)}},
+      {names.second_multiplier, by, {tiny(names.second_coefficient, GiNaC::normal(second_small / names.per_mass))}},
+      {names.second_change, names.second_factor * names.second_multiplier}};
+}
+
+}  // namespace
+
+std::vector<Kernel> collision_kernels(const Setting& setting, const Selection&, const KernelPieces& pieces,
+                                      const Restitution&, const MassRatios& ratios, const Direction& direction) {
+  const Symbols& s = symbols();
+  const Space& space = setting.space;
+  const ex e = s.restitution;
+  const ChangeNames names;
+  const GiNaC::symbol speed_name("relative_normal_speed"), direction_speed("direction_speed");
+  const GiNaC::symbol approach_name("approach_speed");
+  const GiNaC::realsymbol v1d("v1d"), v2d("v2d");
+  const GiNaC::possymbol ddot("dd");
+  const auto change_steps = [&](const ex& restitution, const ex& by) {
+    return parkin2023::change_steps(names, ratios, restitution, by);
+  };
+  const auto outputs = [&] {
+    return std::vector<ex>{with_sign(ratios.first_ratio_form, names.first_change),
+                           with_sign(ratios.second_ratio_form, names.second_change)};
+  };
+  const ex cushion_change = pieces.cushion_change;
+  // The direction kernels' parameters in the claims' terms: dot products in 3-D components.
+  const GiNaC::exmap direction_terms{
+      {v1d, dot(space.v1, direction.d)}, {v2d, dot(space.v2, direction.d)}, {ddot, direction.dd}};
+  std::vector<Kernel> kernels;
+  kernels.push_back({
+      .name = "elastic_normal_velocity_change",
+      .brief = "The paper's perfectly elastic collision in normal components: the changes x1·n − v1·n and "
+               "x2·n − v2·n of the two balls' velocities along the unit contact normal n, from the masses "
+               "and v1·n, v2·n. A mass may be +∞ (an immovable body), not both.",
+      .parameters = {s.m1, s.m2, s.v1n, s.v2n},
+      .steps = steps_then({{speed_name, s.v2n - s.v1n}}, change_steps(1, speed_name)),
+      .outputs = outputs(),
+      .equals = "kernel.elastic_normal_velocity_change",
+      .claims = {"result.x1_simplified_form", "result.x2_by_symmetry", "kernel.impulse_coefficient_first",
+                 "kernel.impulse_coefficient_second", "beyond.immovable.mass_ratio_form"},
+  });
+  kernels.push_back({
+      .name = "normal_velocity_change",
+      .brief = "A collision with coefficient of restitution e (0 ≤ e ≤ 1; e = 1 is the paper's): the "
+               "changes x1·n − v1·n and x2·n − v2·n along the unit contact normal n. A mass may be +∞.",
+      .parameters = {s.m1, s.m2, s.v1n, s.v2n, e},
+      .steps = steps_then({{speed_name, s.v2n - s.v1n}}, change_steps(e, speed_name)),
+      .outputs = outputs(),
+      .equals = "kernel.normal_velocity_change",
+      .claims = {"beyond.restitution.impulse_coefficients", "beyond.immovable.mass_ratio_form",
+                 "beyond.restitution.energy_loss"},
+      .names = {{"restitution_factor", 1 + e}},
+  });
+  kernels.push_back({
+      .name = "direction_velocity_change",
+      .brief = "The same along a direction d that need not be a unit vector: the multiples of d to add to "
+               "v1 and v2, from the masses, v1·d, v2·d, d·d and e. d must not be zero.",
+      .parameters = {s.m1, s.m2, v1d, v2d, ddot, e},
+      .steps = steps_then({{direction_speed, (v2d - v1d) / ddot}}, change_steps(e, direction_speed)),
+      .outputs = outputs(),
+      .equals = "kernel.direction_velocity_change",
+      .in_claim_terms = direction_terms,
+      .claims = {"beyond.any_normal.direction_form", "beyond.any_normal.scale_invariant",
+                 "beyond.immovable.mass_ratio_form"},
+      .names = {{"restitution_factor", 1 + e}},
+  });
+  kernels.push_back({
+      .name = "approaching_direction_velocity_change",
+      .brief = "Like direction_velocity_change with d pointing from ball 1 to ball 2, but only for "
+               "approaching balls ((v2 − v1)·d < 0); separating or resting contacts are left unchanged "
+               "(zero change), so rounding can never make a separating pair collide again.",
+      .parameters = {s.m1, s.m2, v1d, v2d, ddot, e},
+      .steps = steps_then({{direction_speed, (v2d - v1d) / ddot},
+                           {approach_name, (direction_speed - GiNaC::abs(direction_speed)) / 2}},
+                          change_steps(e, approach_name)),
+      .outputs = outputs(),
+      .equals = "kernel.approaching_direction_velocity_change",
+      .in_claim_terms = direction_terms,
+      .claims = {"beyond.approaching.kernel_form", "beyond.approaching.resolve_only_approaching",
+                 "beyond.any_normal.direction_form", "beyond.immovable.mass_ratio_form"},
+      .names = {{"restitution_factor", 1 + e}},
+  });
+  const GiNaC::realsymbol vn("vn");
+  kernels.push_back({
+      .name = "cushion_normal_velocity_change",
+      .brief = "A ball meeting an immovable cushion (the paper's limit m2 → ∞ with v2 = 0): the change "
+               "x·n − v·n of its velocity along the unit contact normal n, from v·n.",
+      .parameters = {vn},
+      .steps = {},
+      .outputs = {cushion_change.subs(s.v1n == vn)},
+      .equals = "kernel.cushion_velocity_change",
+      .in_claim_terms = {{vn, s.v1n}},
+      .claims = {"cushion.limit"},
+  });
+  // The raw derivation, for the benchmark: the coefficients A, B, C as read off, D = B² − 4AC, and the
+  // root (−B ± √D)/(2A) with the sign of (v2 − v1)·n, the collision root whichever the sign
+  return kernels;
+}
+
+std::vector<Kernel> reference_kernels(const Quadratic& quadratic) {
+  const Symbols& s = symbols();
+  const ex &A = quadratic.A, &B = quadratic.B, &C = quadratic.C, &x2n_solved = quadratic.x2n_solved;
+  std::vector<Kernel> kernels;
+// one); x2·n from momentum.
+{
+  const GiNaC::symbol a_name("quadratic_a"), b_name("quadratic_b"), c_name("quadratic_c");
+  const GiNaC::symbol d_name("discriminant"), root_name("signed_root"), x1_name("x1n"), x2_name("x2n");
+  kernels.push_back({
+      .name = "raw_normal_velocity_change",
+      .brief = "For the benchmark only: the paper's derivation before simplification. The quadratic in "
+               "x1·n with its coefficients as read off, D = B² − 4AC, the root (−B ± √D)/(2A) with the "
+               "sign of (v2 − v1)·n (the collision root), x2·n from momentum; returns the changes x1·n − "
+               "v1·n and x2·n − v2·n. Finite masses only.",
+      .parameters = {s.m1, s.m2, s.v1n, s.v2n},
+      .steps = {{a_name, A},
+                {b_name, B},
+                {c_name, C},
+                // D ≥ 0 exactly (discriminant.nonnegative); rounding can make it negative when the
+                // contact is nearly tangent, and √ of that would be NaN.
+                {d_name,
+                 b_name * b_name - 4 * a_name * c_name,
+                 {{d_name < 0, 0, Guard::Kind::unreachable, "discriminant.nonnegative"}}},
+                {root_name,
+                 GiNaC::sqrt(d_name),
+                 {{s.v2n - s.v1n < 0, -GiNaC::sqrt(d_name), Guard::Kind::piecewise,
+                   "roots.quadratic_formula.relative_speed_negative"}}},
+                {x1_name, (-b_name + root_name) / (2 * a_name)},
+                {x2_name, x2n_solved.subs(s.x1n == x1_name)}},
+      .outputs = {x1_name - s.v1n, x2_name - s.v2n},
+      .equals = "kernel.elastic_normal_velocity_change",
+      .claims = {"quadratic.coefficient_a", "quadratic.coefficient_b", "quadratic.coefficient_c",
+                 "discriminant.paper_form", "roots.quadratic_formula.relative_speed_nonnegative",
+                 "quadratic.x2_from_momentum"},
+  });
+}
+  return kernels;
+}
+
+Kernel time_of_impact_kernel(const TimeOfImpact& toi) {
+  const Vec &p = toi.p, &w = toi.w;
+  const ex &coefficient_a = toi.a, &coefficient_b = toi.b, &coefficient_c = toi.c;
+  const ex &quarter_discriminant = toi.quarter_discriminant, &stable_root = toi.stable_root;
+  const Vec& cross = toi.cross;
+  const GiNaC::possymbol &contact_distance = toi.r, &qa = toi.qa, &root_of_d = toi.root_of_d;
+  const GiNaC::realsymbol &qb = toi.qb, &qc = toi.qc, &qd = toi.qd;
+  // The time of impact in the dot products pp = p·p, pv = p·w, vv = w·w: the coefficients read off
+  // in components, the last component eliminated through each dot product.
+  const GiNaC::realsymbol pp("pp"), pv("pv"), vv("vv");
+  const ex b_in_dots = GiNaC::normal(coefficient_b.subs(p[2] == (pv - p[0] * w[0] - p[1] * w[1]) / w[2]));
+  const ex c_in_dots = reduce_modulo(coefficient_c, GiNaC::pow(p[2], 2) == pp - p[0] * p[0] - p[1] * p[1]);
+  const ex a_in_dots = reduce_modulo(coefficient_a, GiNaC::pow(w[2], 2) == vv - w[0] * w[0] - w[1] * w[1]);
+  // D in Lagrange's form, (w·w) r² − |p × w|² (beyond.time_of_impact.discriminant): D + |p × w|²
+  // expanded in components is (w·w) r², written in vv. Unlike b² − a c it does not cancel when the
+  // spheres are far apart (r ≪ |p|), where b² and a c agree in all but their last digits.
+  const GiNaC::realsymbol cross_squared("cross_squared");
+  const ex lagrange_in_dots = reduce_modulo((quarter_discriminant + dot(cross, cross)).expand(),
+                                            GiNaC::pow(w[2], 2) == vv - w[0] * w[0] - w[1] * w[1]) -
+                              cross_squared;
+  const GiNaC::symbol gap("gap"), discriminant("discriminant"), contact_time("contact_time");
+  const lst in_kernel{qb == b_in_dots, qc == gap};  // the stable form c/(√D − b) has no a
+  // The dot products in the claims' terms, inverting what was read off: b = pv, c = pp − r², a = vv,
+  // D = a r² − |p × w|², and √D for the claims' s.
+  const GiNaC::exmap time_terms{{pv, qb},
+                                {pp, GiNaC::lsolve(c_in_dots == qc, pp)},
+                                {vv, GiNaC::lsolve(a_in_dots == qa, vv)},
+                                {cross_squared, GiNaC::lsolve(lagrange_in_dots.subs(vv == qa) == qd, cross_squared)},
+                                {root_of_d, GiNaC::sqrt(qd)}};
+  using Kind = Guard::Kind;
+  return {
+      .name = "time_of_impact",
+      .brief =
+          "The time until two spheres moving in straight lines first touch: from pp = p·p, pv = p·w, "
+          "vv = w·w and cross_squared = |p × w|² (in any dimension the sum over i < j of (p_i w_j − "
+          "p_j w_i)²), with p = p2 − p1 and w = v2 − v1 (relative position and velocity), and the "
+          "contact distance r1 + r2. Returns the earliest t ≥ 0 at which they touch while approaching; "
+          "0 when they already touch (or overlap by rounding) and approach; +∞ when they never touch "
+          "(separating, no relative motion, a miss or a graze).",
+      .parameters = {pp, pv, vv, cross_squared, contact_distance},
+      .steps = {{gap, c_in_dots},
+                {discriminant, lagrange_in_dots},
+                {contact_time,
+                 stable_root.subs(in_kernel).subs(root_of_d == GiNaC::sqrt(discriminant)),
+                 {{gap < 0, 0, Kind::piecewise, "beyond.time_of_impact.touching_now"},
+                  {discriminant <= 0, infinity(), Kind::piecewise, "beyond.time_of_impact.grazing"},
+                  {pv >= 0, infinity(), Kind::piecewise, "beyond.time_of_impact.no_contact"}}}},
+      .outputs = {contact_time},
+      .equals = "beyond.time_of_impact.stable_form",
+      .in_claim_terms = time_terms,
+      .claims = {"beyond.time_of_impact.quadratic", "beyond.time_of_impact.discriminant"},
+  };
+}
+
+}  // namespace billiards::derive::parkin2023
