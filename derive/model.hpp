@@ -27,6 +27,9 @@ struct ModelInfo {
   std::string json_path = "audit.json";
   std::string kernels_path = "billiards/kernels.hpp";
   std::string reference_path;
+  /// A test-only header listing every kernel (billiards/kernel_list.hpp for the paper), so that tests
+  /// call, measure and compile each kernel without a list kept by hand; empty for none.
+  std::string kernel_list_path;
 };
 
 /// A model's record (premises, sections, claims) and the kernels built from it.

@@ -50,6 +50,7 @@ int run_model(const ModelEntry& entry, const fs::path& folder) {
     if (problems.empty()) {
       if (!model.kernels_path.empty()) write(model.kernels_path, kernels_header(derivation, json_text));
       if (!model.reference_path.empty()) write(model.reference_path, reference_kernels_header(derivation, json_text));
+      if (!model.kernel_list_path.empty()) write(model.kernel_list_path, kernel_list_header(derivation, json_text));
     }
   } catch (const std::exception& error) {
     std::cerr << "billiards-derive: " << error.what() << "\n";

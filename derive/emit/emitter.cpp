@@ -395,4 +395,77 @@ std::string reference_kernels_header(const Derivation& derivation, const std::st
   return with_fingerprint(out.str(), audit_text);
 }
 
+namespace {
+
+std::string parameter_name(const ex& parameter) { return GiNaC::ex_to<GiNaC::symbol>(parameter).get_name(); }
+
+// `if (name == "kernel") { … return {outputs}; }` for call().
+std::string call_branch(const Kernel& kernel, const std::string& qualified) {
+  std::vector<std::string> arguments;
+  for (const ex& parameter : kernel.parameters) arguments.push_back("at(\"" + parameter_name(parameter) + "\")");
+  std::string out = "  if (name == \"" + kernel.name + "\") {\n";
+  std::string call = qualified + "(";
+  for (std::size_t i = 0; i < arguments.size(); ++i) call += (i ? ", " : "") + arguments[i];
+  call += ");";
+  // As clang-format lays it out: on one line, else broken after "=", else aligned under the "(".
+  if (19 + call.size() <= column_limit) {
+    out += "    const auto r = " + call + "\n";
+  } else if (8 + call.size() <= column_limit) {
+    out += "    const auto r =\n        " + call + "\n";
+  } else {
+    out += wrapped_list("    const auto r = " + qualified + "(", arguments, ");") + "\n";
+  }
+  out += kernel.outputs.size() == 1 ? "    return {r};\n" : "    return {r.first, r.second};\n";
+  return out + "  }\n";
+}
+
+
+}  // namespace
+
+std::string kernel_list_header(const Derivation& derivation, const std::string& audit_text) {
+  const ModelInfo& model = derivation.model;
+  std::size_t largest_arity = 0;
+  for (const Kernel& kernel : derivation.kernels) largest_arity = std::max(largest_arity, kernel.parameters.size());
+  std::ostringstream out;
+  out << preamble("// For tests only, not installed: every kernel of " + model.citation +
+                  ",\n"
+                  "// listed by the derivation, so that tests call, measure and compile each one without a list\n"
+                  "// kept by hand.\n")
+      << "#pragma once\n\n"
+      << "#include <" << model.kernels_path << ">\n";
+  if (!model.reference_path.empty()) out << "#include <" << model.reference_path << ">\n";
+  out << "\n#include <cstddef>\n#include <stdexcept>\n#include <string>\n#include <vector>\n\n"
+      << "namespace " << model.kernels_namespace << "::list {\n\n"
+      << "/// The kernels, in the order of the header.\n"
+      << "/// The most parameters any kernel takes.\n"
+      << "inline constexpr std::size_t largest_arity = " << largest_arity << ";\n\n"
+      << doc_comment("Calls the kernel or reference kernel `name` with its arguments looked up by parameter "
+                     "name, `at(\"m1\")`; returns its outputs in order. Throws std::invalid_argument for an "
+                     "unknown name.")
+      << "template <typename Scalar, typename Arguments>\n"
+      << "std::vector<Scalar> call(const std::string& name, const Arguments& at) {\n";
+  for (const Kernel& kernel : derivation.kernels) out << call_branch(kernel, kernel.name);
+  for (const Kernel& kernel : derivation.reference_kernels) {
+    out << call_branch(kernel, model.reference_namespace + "::" + kernel.name);
+  }
+  out << "  throw std::invalid_argument(\"no kernel named \" + name);\n}\n\n"
+      << doc_comment("Every kernel called with arguments taken in order from `a` (at least largest_arity of "
+                     "them), its outputs summed: instantiates every kernel for Scalar, on the host or a device.")
+      << "template <typename Scalar>\n"
+      << "BILLIARDS_HOST_DEVICE Scalar sum_of_every_kernel(const Scalar* a) noexcept {\n"
+      << "  Scalar sum = Scalar(0);\n";
+  for (const Kernel& kernel : derivation.kernels) {
+    std::vector<std::string> arguments;
+    for (std::size_t i = 0; i < kernel.parameters.size(); ++i) arguments.push_back("a[" + std::to_string(i) + "]");
+    if (kernel.outputs.size() == 1) {
+      out << wrapped_list("  sum += " + kernel.name + "(", arguments, ");") << "\n";
+    } else {
+      out << "  {\n" << wrapped_list("    const auto r = " + kernel.name + "(", arguments, ");") << "\n"
+          << "    sum += r.first + r.second;\n  }\n";
+    }
+  }
+  out << "  return sum;\n}\n\n}  // namespace " << model.kernels_namespace << "::list\n";
+  return with_fingerprint(out.str(), audit_text);
+}
+
 }  // namespace billiards::derive

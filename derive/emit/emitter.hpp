@@ -36,4 +36,10 @@ std::string kernels_header(const Derivation& derivation, const std::string& audi
 /// fingerprinted the same way.
 std::string reference_kernels_header(const Derivation& derivation, const std::string& audit_text);
 
+/// The model's test-only kernel list (billiards/kernel_list.hpp for the paper), namespace
+/// `<kernels_namespace>::list`: `largest_arity`, `call<Scalar>(name, at)` calling any kernel or
+/// reference kernel with arguments looked up by parameter name, and `sum_of_every_kernel<Scalar>(a)`,
+/// which calls every kernel on the host or a device and so instantiates each for Scalar.
+std::string kernel_list_header(const Derivation& derivation, const std::string& audit_text);
+
 }  // namespace billiards::derive

@@ -19,8 +19,7 @@
 #include "models/parkin2023/paper.hpp"
 #include "exact.hpp"
 
-#include <billiards/kernels.hpp>
-#include <billiards/reference_kernels.hpp>
+#include <billiards/kernel_list.hpp>
 
 #include <CLI/CLI.hpp>
 
@@ -46,38 +45,10 @@ using GiNaC::numeric;
 template <typename Scalar>
 using Inputs = std::map<std::string, Scalar>;
 
-// Calls the compiled kernel `name` in type Scalar.
+// Calls the compiled kernel `name` in type Scalar, through the derivation's own list of its kernels.
 template <typename Scalar>
 std::vector<Scalar> call_kernel(const std::string& name, const Inputs<Scalar>& in) {
-  using namespace billiards::kernels;
-  const auto at = [&](const char* key) { return in.at(key); };
-  if (name == "elastic_normal_velocity_change") {
-    const auto r = elastic_normal_velocity_change(at("m1"), at("m2"), at("v1n"), at("v2n"));
-    return {r.first, r.second};
-  }
-  if (name == "normal_velocity_change") {
-    const auto r = normal_velocity_change(at("m1"), at("m2"), at("v1n"), at("v2n"), at("restitution"));
-    return {r.first, r.second};
-  }
-  if (name == "direction_velocity_change") {
-    const auto r =
-        direction_velocity_change(at("m1"), at("m2"), at("v1d"), at("v2d"), at("dd"), at("restitution"));
-    return {r.first, r.second};
-  }
-  if (name == "approaching_direction_velocity_change") {
-    const auto r = approaching_direction_velocity_change(at("m1"), at("m2"), at("v1d"), at("v2d"), at("dd"),
-                                                         at("restitution"));
-    return {r.first, r.second};
-  }
-  if (name == "cushion_normal_velocity_change") return {cushion_normal_velocity_change(at("vn"))};
-  if (name == "raw_normal_velocity_change") {
-    const auto r =
-        billiards::reference_kernels::raw_normal_velocity_change(at("m1"), at("m2"), at("v1n"), at("v2n"));
-    return {r.first, r.second};
-  }
-  if (name == "time_of_impact")
-    return {time_of_impact(at("pp"), at("pv"), at("vv"), at("cross_squared"), at("contact_distance"))};
-  throw std::invalid_argument("kernel " + name + " has no caller in billiards-accuracy: add one");
+  return billiards::kernels::list::call<Scalar>(name, [&](const char* key) { return in.at(key); });
 }
 
 // An exact output: a number, or +∞ where a piecewise guard says "no contact".

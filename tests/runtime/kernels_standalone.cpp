@@ -1,37 +1,21 @@
 // The generated header compiles on its own, with every kernel instantiated for float and double,
 // under -Wall -Wextra -Wpedantic -Werror and -Wdouble-promotion -Wconversion (a double literal in
 // float code would promote and fail).
+#include <billiards/kernel_list.hpp>
 #include <billiards/kernels.hpp>
 
 #include <limits>
 
 namespace billiards::kernels {
 
-template NormalVelocityChange<float> elastic_normal_velocity_change<float>(float, float, float,
-                                                                           float) noexcept;
-template NormalVelocityChange<double> elastic_normal_velocity_change<double>(double, double, double,
-                                                                             double) noexcept;
-template NormalVelocityChange<float> normal_velocity_change<float>(float, float, float, float,
-                                                                   float) noexcept;
-template NormalVelocityChange<double> normal_velocity_change<double>(double, double, double, double,
-                                                                     double) noexcept;
-template NormalVelocityChange<float> direction_velocity_change<float>(float, float, float, float, float,
-                                                                      float) noexcept;
-template NormalVelocityChange<double> direction_velocity_change<double>(double, double, double, double,
-                                                                        double, double) noexcept;
-template NormalVelocityChange<float> approaching_direction_velocity_change<float>(float, float, float, float,
-                                                                                  float, float) noexcept;
-template NormalVelocityChange<double> approaching_direction_velocity_change<double>(double, double, double,
-                                                                                    double, double,
-                                                                                    double) noexcept;
+// Every kernel the derivation emits, instantiated for float and double through the generated list
+// (billiards/kernel_list.hpp), so a new kernel is compiled here without editing this file.
+template float list::sum_of_every_kernel<float>(const float*) noexcept;
+template double list::sum_of_every_kernel<double>(const double*) noexcept;
 template float absolute_value<float>(float) noexcept;
 template double absolute_value<double>(double) noexcept;
 static_assert(smallest_normal<float>() == std::numeric_limits<float>::min());
 static_assert(smallest_normal<double>() == std::numeric_limits<double>::min());
-template float cushion_normal_velocity_change<float>(float) noexcept;
-template double cushion_normal_velocity_change<double>(double) noexcept;
-template float time_of_impact<float>(float, float, float, float, float) noexcept;
-template double time_of_impact<double>(double, double, double, double, double) noexcept;
 static_assert(infinity<float>() == std::numeric_limits<float>::infinity());
 static_assert(infinity<double>() == std::numeric_limits<double>::infinity());
 

@@ -32,6 +32,7 @@ ModelInfo info() {
       "v1 + 2((v2 − v1)·n) n (`cushion.limit`). −n v1 n is a reflection only when n² = 1.",
   };
   model.reference_path = "billiards/reference_kernels.hpp";
+  model.kernel_list_path = "billiards/kernel_list.hpp";
   return model;
 }
 
