@@ -15,16 +15,20 @@ namespace {
 // Longer than this, a component expression is summarised rather than printed in the audit.
 constexpr std::size_t longest_printed_latex = 600;
 
-std::string shown_latex(const ex& display, const ex& expression) {
-  // A display is printed as given (the derivation puts derived ones in factored_form()); an
-  // expression without one (components) in its expanded normal form, canonical and cheap.
+// What the audit shows for one side of a claim: its display when one is set (check() has proven it
+// equal to what was compared), otherwise the compared expression in its expanded normal form; a label
+// stands beside it ("P(x1, x2) = …"), never instead of it.
+std::string shown_latex(const ex& label, const ex& display, const ex& expression) {
   const bool has_display = !GiNaC::is_a<GiNaC::fail>(display);
   const ex shown = has_display ? display : expanded_form(expression);
-  const std::string latex = print(shown, Notation::latex);
-  if (latex.size() <= longest_printed_latex) return latex;
-  return "\\text{(" + std::to_string(GiNaC::is_a<GiNaC::lst>(shown) ? shown.nops() : 1) +
-         " symbolic component expressions, " + std::to_string(latex.size()) +
-         " characters of LaTeX: too long to print)}";
+  std::string latex = print(shown, Notation::latex);
+  if (latex.size() > longest_printed_latex) {
+    const std::size_t count = GiNaC::is_a<GiNaC::lst>(shown) ? shown.nops() : 1;
+    latex = "\\text{(" + (count == 1 ? std::string("a symbolic expression") : std::to_string(count) + " symbolic component expressions") +
+            " of " + std::to_string(latex.size()) + " characters of LaTeX: too long to print)}";
+  }
+  if (GiNaC::is_a<GiNaC::fail>(label)) return latex;
+  return print(label, Notation::latex) + " = " + latex;
 }
 
 std::string verdict_mark(Verdict verdict) {
@@ -72,11 +76,11 @@ std::string ginac_version() {
 }
 
 std::string paper_latex(const Claim& claim) {
-  return shown_latex(claim.paper_display, claim.paper_expression);
+  return shown_latex(claim.paper_label, claim.paper_display, claim.paper_expression);
 }
 
 std::string derived_latex(const Claim& claim) {
-  return shown_latex(claim.derived_display, claim.derived_expression);
+  return shown_latex(claim.derived_label, claim.derived_display, claim.derived_expression);
 }
 
 std::string audit_markdown(const Derivation& derivation) {

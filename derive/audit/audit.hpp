@@ -23,8 +23,9 @@ std::string audit_json(const Derivation& derivation);
 int report(const Derivation& derivation, const std::vector<KernelProblem>& problems,
            const std::vector<std::string>& written, std::ostream& out, std::ostream& err);
 
-/// The latex of what the audit shows for each side of a claim: the display form when one is set,
-/// otherwise the expression itself.
+/// The latex of what the audit shows for each side of a claim: the display form when one is set (which
+/// check() proves equal to the compared expression), otherwise the expression itself; a label, when
+/// set, stands beside it as "label = …".
 std::string paper_latex(const Claim& claim);
 std::string derived_latex(const Claim& claim);
 

@@ -67,6 +67,39 @@ bool all_symbols_real(const ex& e) {
   return true;
 }
 
+// A display in the terms of what was compared: its own symbols defined, and a vector display expanded
+// into components.
+ex display_as_compared(const ex& display, const Claim& claim) {
+  const ex defined = display.subs(claim.display_definitions).subs(claim.display_definitions);
+  if (claim.display_components.empty()) return defined;
+  GiNaC::lst components;
+  const auto expand = [&](const ex& element) {
+    for (const GiNaC::exmap& component : claim.display_components) components.append(element.subs(component));
+  };
+  if (GiNaC::is_a<GiNaC::lst>(defined)) {
+    for (const ex& element : defined) expand(element);
+  } else {
+    expand(defined);
+  }
+  return components;
+}
+
+// Fails the claim when a display is set that is not what was compared.
+void check_displays(Claim& claim) {
+  const std::pair<const ex*, const ex*> sides[] = {{&claim.paper_display, &claim.paper_expression},
+                                                   {&claim.derived_display, &claim.derived_expression}};
+  for (const auto& [display, expression] : sides) {
+    if (GiNaC::is_a<GiNaC::fail>(*display)) continue;
+    const ex residual = residual_of(*expression, display_as_compared(*display, claim), claim.constraints);
+    if (all_zero(residual)) continue;
+    claim.verdict = Verdict::failed;
+    claim.residual = residual;
+    claim.failure = std::string("the ") + (display == &claim.paper_display ? "paper" : "derived") +
+                    " side shown is not the expression compared";
+    return;
+  }
+}
+
 void decide(Claim& claim) {
   switch (claim.comparison) {
     case Comparison::assumption:
@@ -109,6 +142,7 @@ void check(Claim& claim) {
   claim.failure.clear();
   try {
     decide(claim);
+    if (claim.verdict == Verdict::verified) check_displays(claim);
   } catch (const std::exception& error) {
     claim.verdict = Verdict::failed;
     // Arithmetic on lists would throw again: the residual is then the derived side as it stands.

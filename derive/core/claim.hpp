@@ -50,8 +50,18 @@ struct Claim {
   GiNaC::ex paper_expression;                 ///< typed exactly as the paper prints it
   GiNaC::ex derived_expression;               ///< computed by the derivation, never typed
   std::vector<Constraint> constraints;        ///< imposed by substitution before comparing
-  GiNaC::ex paper_display = GiNaC::fail();    ///< shown in the audit instead of paper_expression when set
-  GiNaC::ex derived_display = GiNaC::fail();  ///< shown in the audit instead of derived_expression when set
+  /// Shown in the audit instead of paper_expression (a readable form: shorthand, vectors): check()
+  /// proves it equal to what was compared, or the claim fails. Unset: the expression itself is shown.
+  GiNaC::ex paper_display = GiNaC::fail();
+  GiNaC::ex derived_display = GiNaC::fail();  ///< likewise for derived_expression
+  GiNaC::ex paper_label = GiNaC::fail();      ///< a name shown beside the paper side, e.g. P(x1, x2)
+  GiNaC::ex derived_label = GiNaC::fail();    ///< a name shown beside the derived side
+  /// What the displays' own symbols stand for (P·n → m1 v1·n + m2 v2·n), substituted before comparing.
+  GiNaC::exmap display_definitions = {};
+  /// For displays written with vector symbols (v1 + κ n) against a list of components: the substitution
+  /// that turns the display into component i (v1 → v1_x, n → n_x). Each element of a list display
+  /// expands into as many components.
+  std::vector<GiNaC::exmap> display_components = {};
   std::string note;                           ///< where the paper is imprecise, or what the claim adds
   std::vector<std::string> depends_on;        ///< definitions and claims it rests on
   std::vector<Case> cases = {};               ///< the piecewise cases it establishes, if any

@@ -134,6 +134,42 @@ TEST_CASE("Sets, signs and assumptions", "[derive][checker]") {
   }
 }
 
+TEST_CASE("What the audit shows is what was compared", "[derive][checker]") {
+  const GiNaC::realsymbol shorthand("S");
+  Claim claim = identity_claim(a + b, b + a);
+  SECTION("a display the checker proves equal to the compared expression is accepted") {
+    claim.paper_display = shorthand;
+    claim.display_definitions = {{shorthand, a + b}};
+    check(claim);
+    CHECK(claim.verdict == Verdict::verified);
+  }
+  SECTION("a display that is not what was compared fails the claim, though the comparison holds") {
+    claim.paper_display = shorthand;
+    claim.display_definitions = {{shorthand, a - b}};
+    check(claim);
+    CHECK(claim.verdict == Verdict::failed);
+    CHECK_THAT(claim.failure, Catch::Contains("paper side shown"));
+  }
+  SECTION("a display with a symbol nothing defines fails") {
+    claim.derived_display = shorthand;
+    check(claim);
+    CHECK(claim.verdict == Verdict::failed);
+    CHECK_THAT(claim.failure, Catch::Contains("derived side shown"));
+  }
+  SECTION("a vector display is expanded into components") {
+    const GiNaC::symbol v("v"), n("n");
+    const Vec vc = component_symbols("v1", "v", "1", 2), nc = component_symbols("n", "n", "", 2);
+    Claim vector = identity_claim(to_lst(add(vc, scale(2, nc))), to_lst(add(scale(2, nc), vc)));
+    vector.paper_display = v + 2 * n;
+    vector.display_components = {{{v, vc[0]}, {n, nc[0]}}, {{v, vc[1]}, {n, nc[1]}}};
+    check(vector);
+    CHECK(vector.verdict == Verdict::verified);
+    vector.paper_display = v + 3 * n;
+    check(vector);
+    CHECK(vector.verdict == Verdict::failed);
+  }
+}
+
 TEST_CASE("The checker never throws", "[derive][checker]") {
   const Vec n = component_symbols("n", "n", "", 3);
   SECTION("a comparison GiNaC cannot carry out is a failed claim with the reason") {

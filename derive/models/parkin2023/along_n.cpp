@@ -23,8 +23,8 @@ void conservation_along_n(Recorder& record, const Setting& setting) {
         .paper_expression = to_lst(subtract(momentum(d, v1_par, v2_par), momentum(d, x1_par, x2_par))),
         .derived_expression = to_lst(subtract(momentum(d, space.v1, space.v2), momentum(d, x1, x2))),
         .constraints = {space.unit_normal},
-        .paper_display = s.P_v_par_minus_x_par,
-        .derived_display = s.P_v_minus_x,
+        .paper_label = s.P_v_par_minus_x_par,
+        .derived_label = s.P_v_minus_x,
         .depends_on = {"definition.conservation", "split.momentum.3d",
                        "assumption.tangential_velocity_unchanged"},
     });
@@ -38,8 +38,8 @@ void conservation_along_n(Recorder& record, const Setting& setting) {
         .paper_expression = kinetic(d, v1_par, v2_par) - kinetic(d, x1_par, x2_par),
         .derived_expression = kinetic(d, space.v1, space.v2) - kinetic(d, x1, x2),
         .constraints = {space.unit_normal},
-        .paper_display = s.K_v_par_minus_x_par,
-        .derived_display = s.K_v_minus_x,
+        .paper_label = s.K_v_par_minus_x_par,
+        .derived_label = s.K_v_minus_x,
         .depends_on = {"definition.conservation", "split.kinetic.3d",
                        "assumption.tangential_velocity_unchanged"},
     });
@@ -54,7 +54,9 @@ void conservation_along_n(Recorder& record, const Setting& setting) {
         .paper_expression = to_lst(scale(dot(momentum(d, space.v1, space.v2), space.n), space.n)),
         .derived_expression = to_lst(momentum(d, v1_par, v2_par)),
         .paper_display = s.Pn * s.n,
-        .derived_display = s.P_of_v_parallel,
+        .derived_label = s.P_of_v_parallel,
+        .display_definitions = merged({shorthand(d), space.normal_components()}),
+        .display_components = space.vector_components(),
         .note = "The paper writes P·n for P(v1, v2)·n, the total momentum along n.",
         .depends_on = {"definition.momentum", "definition.split"},
     });
@@ -69,7 +71,8 @@ void conservation_along_n(Recorder& record, const Setting& setting) {
         .derived_expression = kinetic(d, v1_par, v2_par),
         .constraints = {space.unit_normal},
         .paper_display = scalar_kinetic(d, s.v1n, s.v2n),
-        .derived_display = s.K_of_v_parallel,
+        .derived_label = s.K_of_v_parallel,
+        .display_definitions = space.normal_components(),
         .depends_on = {"definition.kinetic_energy", "definition.split"},
     });
   }

@@ -19,6 +19,18 @@ Direction any_direction(Recorder& record, const Setting& setting, const Restitut
   const auto direction_form = [&](const Vec& dir) {
     return add(space.v1, scale(c1 * dot(subtract(space.v2, space.v1), dir) / dot(dir, dir), dir));
   };
+  // The displays v1 + c1 ((v2 − v1)·d)/(d·d) d and v1 + c1 ((v2 − v1)·d̂) d̂ in components, d̂ = `unit`.
+  const ex relative_along_d = dot(subtract(space.v2, space.v1), direction);
+  const auto displayed_with = [&](const Vec& unit) {
+    std::vector<GiNaC::exmap> components;
+    for (std::size_t i = 0; i < 3; ++i) {
+      components.push_back({{s.v1, space.v1[i]}, {s.direction, direction[i]}, {s.unit_direction, unit[i]}});
+    }
+    return components;
+  };
+  const GiNaC::exmap direction_definitions{{s.c1, c1},
+                                           {s.relative_direction_speed, relative_along_d / dd},
+                                           {s.relative_unit_speed, dot(subtract(space.v2, space.v1), n_of_d)}};
   record.add({
       .id = "beyond.any_normal.direction_form",
       .statement = "For a non-zero direction d (not necessarily unit), x1 = v1 + c1 ((v2 − v1)·d)/(d·d) d: "
@@ -29,6 +41,8 @@ Direction any_direction(Recorder& record, const Setting& setting, const Restitut
       .derived_expression = from_unit_form,
       .paper_display = s.v1 + s.c1 * s.relative_direction_speed * s.direction,
       .derived_display = s.v1 + s.c1 * s.relative_unit_speed * s.unit_direction,
+      .display_definitions = direction_definitions,
+      .display_components = displayed_with(n_of_d),
       .depends_on = {"beyond.restitution.impulse_coefficients"},
   });
   const GiNaC::realsymbol lambda("lambda", "\\lambda");
@@ -39,8 +53,8 @@ Direction any_direction(Recorder& record, const Setting& setting, const Restitut
       .comparison = Comparison::identity,
       .paper_expression = to_lst(direction_form(direction)),
       .derived_expression = to_lst(direction_form(scale(lambda, direction))),
-      .paper_display = s.x1,
-      .derived_display = s.x1_scaled_direction,
+      .paper_label = s.x1,
+      .derived_label = s.x1_scaled_direction,
       .depends_on = {"beyond.any_normal.direction_form"},
   });
   record.add({
@@ -54,6 +68,10 @@ Direction any_direction(Recorder& record, const Setting& setting, const Restitut
       .constraints = {{unit_normal_relation(direction), "d·d = 1"}},
       .paper_display = s.v1 + s.c1 * s.relative_unit_speed * s.unit_direction,
       .derived_display = s.v1 + s.c1 * s.relative_direction_speed * s.direction,
+      .display_definitions = {{s.c1, c1},
+                              {s.relative_direction_speed, relative_along_d / dd},
+                              {s.relative_unit_speed, relative_along_d}},
+      .display_components = displayed_with(direction),
       .depends_on = {"beyond.any_normal.direction_form"},
   });
   return {direction, dd, n_of_d, from_unit_form};

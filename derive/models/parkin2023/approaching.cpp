@@ -22,6 +22,9 @@ Approaching approaching_contacts(Recorder& record, const Definitions& d, const S
       .derived_expression = x2n_e - x1n_e,
       .paper_display = -e * (s.v2n - s.v1n),
       .derived_display = factored_form(x2n_e - x1n_e),
+      .note = "This restates Newton's law of restitution (definition.restitution), which the solution was "
+              "solved from; what it adds is the reading: for e > 0 the balls separate after the collision "
+              "exactly when they approached before it.",
       .depends_on = {"beyond.restitution.elastic_is_the_paper"},
   });
   // The kernel form for any e: c1 (s − |s|)/2, which is c1 s when s < 0 and 0 when s ≥ 0.
@@ -44,8 +47,8 @@ Approaching approaching_contacts(Recorder& record, const Definitions& d, const S
         .comparison = Comparison::identity,
         .paper_expression = expected,
         .derived_expression = cases,
-        .paper_display = lst{plus_root, s.v1n},
-        .derived_display = minus_abs_root,
+        .paper_display = factored_form(expected),
+        .derived_display = factored_form(cases),
         .depends_on = {"beyond.approaching.collision_root_separates", "result.x1_simplified_form"},
     });
     const lst kernel_cases{GiNaC::normal(resolve_absolute_values(c1 * approach_speed, speed, -1)),
@@ -60,7 +63,8 @@ Approaching approaching_contacts(Recorder& record, const Definitions& d, const S
         .paper_expression = kernel_expected,
         .derived_expression = kernel_cases,
         .paper_display = lst{s.c1 * s.relative_normal_speed, 0},
-        .derived_display = s.c1 * approach_speed,
+        .derived_display = factored_form(kernel_cases),
+        .display_definitions = {{s.c1, c1}},
         .depends_on = {"beyond.approaching.collision_root_separates",
                        "beyond.restitution.impulse_coefficients"},
     });

@@ -40,6 +40,33 @@ Vec Space::after_collision(const Vec& v, const ex& normal) const {
   return add(perpendicular_part(v, n), scale(components_of(normal), n));
 }
 
+GiNaC::exmap Space::normal_components() const {
+  const Symbols& s = symbols();
+  return {{s.v1n, dot(v1, n)}, {s.v2n, dot(v2, n)}};
+}
+
+std::vector<GiNaC::exmap> Space::vector_components() const {
+  const Symbols& s = symbols();
+  std::vector<GiNaC::exmap> components;
+  for (std::size_t i = 0; i < dimension; ++i) {
+    components.push_back({{s.v1, v1[i]}, {s.v2, v2[i]}, {s.n, n[i]}, {s.x1, x1[i]}, {s.x2, x2[i]}});
+  }
+  return components;
+}
+
+GiNaC::exmap shorthand(const Definitions& d) {
+  const Symbols& s = symbols();
+  return {{s.Pn, scalar_momentum(d, s.v1n, s.v2n)}, {s.K_parallel, scalar_kinetic(d, s.v1n, s.v2n)}};
+}
+
+GiNaC::exmap merged(std::initializer_list<GiNaC::exmap> maps) {
+  GiNaC::exmap all;
+  for (const GiNaC::exmap& map : maps) {
+    for (const auto& [from, to] : map) all[from] = to;
+  }
+  return all;
+}
+
 lst concatenate(const Vec& a, const Vec& b) {
   lst all = to_lst(a);
   for (const ex& component : b) all.append(component);

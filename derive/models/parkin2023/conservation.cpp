@@ -22,8 +22,8 @@ void end_to_end(Recorder& record, const Setting& setting, const Selection& selec
         .paper_expression = to_lst(momentum(d, sp->v1, sp->v2)),
         .derived_expression = to_lst(momentum(d, x1, x2)),
         .constraints = {sp->unit_normal},
-        .paper_display = s.P_of_v,
-        .derived_display = s.P_of_x,
+        .paper_label = s.P_of_v,
+        .derived_label = s.P_of_x,
         .depends_on = {"result.x1_simplified_form", "result.x2_by_symmetry", "definition.conservation"},
     });
     record.add({
@@ -37,8 +37,8 @@ void end_to_end(Recorder& record, const Setting& setting, const Selection& selec
         .paper_expression = kinetic(d, sp->v1, sp->v2),
         .derived_expression = kinetic(d, x1, x2),
         .constraints = {sp->unit_normal},
-        .paper_display = s.K_of_v,
-        .derived_display = s.K_of_x,
+        .paper_label = s.K_of_v,
+        .derived_label = s.K_of_x,
         .depends_on = {"result.x1_simplified_form", "result.x2_by_symmetry", "definition.conservation"},
     });
   }

@@ -37,6 +37,8 @@ void the_cushion(Recorder& record, const Setting& setting, const Selection& sele
                        GiNaC::normal((plus_root - s.v1n).subs(lst{s.m2 == 1 / s.inverse_m2, s.v2n == 0}))
                            .series(s.inverse_m2 == 0, 1))) *
                        s.n,
+        .display_definitions = space.normal_components(),
+        .display_components = space.vector_components(),
         .note = "v2 = 0 matters: the limit of x1 for a moving wall is v1 + 2((v2 − v1)·n) n.",
         .depends_on = {"result.x1_simplified_form"},
     });
@@ -62,7 +64,9 @@ void the_cushion(Recorder& record, const Setting& setting, const Selection& sele
           .derived_expression = sandwich,
           .constraints = {sp->unit_normal},
           .paper_display = s.v1 - 2 * s.v1n * s.n,
-          .derived_display = -s.sandwich,
+          .derived_label = -s.sandwich,
+          .display_definitions = sp->normal_components(),
+          .display_components = sp->vector_components(),
           .note = "In geometric algebra n v n = 2 (n·v) n − (n·n) v, so −n v n is the reflection in "
                   "the plane normal to n only when n² = n·n = 1.",
           .depends_on = {"definition.split"},

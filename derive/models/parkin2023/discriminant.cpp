@@ -28,6 +28,7 @@ Discriminant the_discriminant(Recorder& record, const Definitions& d, const Quad
         .derived_expression = D,
         .paper_display = paper_first,
         .derived_display = factored_form(D),
+        .display_definitions = shorthand(d),
         .depends_on = from_coefficients,
     });
     record.add({

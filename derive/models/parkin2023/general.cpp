@@ -34,6 +34,8 @@ void putting_it_together(Recorder& record, const Setting& setting, const Quadrat
         .paper_display = lst{s.v1 + printed_coefficient_plus * s.n, s.v1 + printed_coefficient_minus * s.n},
         .derived_display = lst{s.v1 + factored_form(plus_root - s.v1n) * s.n,
                                s.v1 + factored_form(minus_root - s.v1n) * s.n},
+        .display_definitions = merged({shorthand(setting.definitions), space.normal_components()}),
+        .display_components = space.vector_components(),
         .depends_on = {"roots.absolute_value_dropped.relative_speed_nonnegative",
                        "roots.absolute_value_dropped.relative_speed_negative",
                        "assumption.tangential_velocity_unchanged"},

@@ -39,6 +39,9 @@ MassRatios immovable_bodies(Recorder& record, const Restitution& restitution) {
           lst{first_ratio_form.subs(rho1 == s.m1 / s.m2), second_ratio_form.subs(rho2 == s.m2 / s.m1)},
       .paper_display = factored_form(lst{first_coefficient_e, second_coefficient_e}),
       .derived_display = printed_ratio_forms,
+      .display_definitions = {{rho1, s.m1 / s.m2}, {rho2, s.m2 / s.m1}},
+      .note = "A round trip: the ratio form with ρ1 = m1/m2 and ρ2 = m2/m1 put back, which is how the "
+              "kernels compute it. It restates beyond.immovable.mass_ratio_form for finite masses.",
       .depends_on = {"beyond.immovable.mass_ratio_form"},
   });
   const ex first_small_mass_form = (1 + e) * (speed * s.m2) / (s.m1 + s.m2);

@@ -67,6 +67,7 @@ void kernel_outputs(Recorder& record, const Setting& setting, const Selection& s
         .derived_expression = multiples,
         .paper_display = lst{(1 + e) * s.m2 / (s.m1 + s.m2) * s.relative_direction_speed,
                              -(1 + e) * s.m1 / (s.m1 + s.m2) * s.relative_direction_speed},
+        .display_definitions = {{s.relative_direction_speed, direction_speed_in_components}},
         .depends_on = {"beyond.any_normal.direction_form", "beyond.restitution.impulse_coefficients"},
     });
     // Only approaching balls: the relative speed along d clamped as beyond.approaching.kernel_form proves.
@@ -87,6 +88,7 @@ void kernel_outputs(Recorder& record, const Setting& setting, const Selection& s
         .derived_expression = approaching,
         .paper_display = lst{(1 + e) * s.m2 / (s.m1 + s.m2) * s.approach_direction_speed,
                              -(1 + e) * s.m1 / (s.m1 + s.m2) * s.approach_direction_speed},
+        .display_definitions = {{s.approach_direction_speed, printed_clamp}},
         .depends_on = {"kernel.direction_velocity_change", "beyond.approaching.kernel_form"},
     });
   }

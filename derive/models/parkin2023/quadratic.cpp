@@ -2,6 +2,24 @@
 
 namespace billiards::derive::parkin2023 {
 
+namespace {
+
+// A scalar of the 3-D space (a polynomial in components over the masses) in the normal components:
+// v1_z and v2_z written through v1·n and v2·n, then n_z² reduced by n·n = 1. What is left has no
+// component of v1, v2 when the scalar depends on them only through v1·n and v2·n.
+ex in_normal_components(const ex& scalar, const Space& space) {
+  const Symbols& s = symbols();
+  const Vec &v1 = space.v1, &v2 = space.v2, &n = space.n;
+  const ex through_normal = scalar.subs(lst{v1[2] == (s.v1n - v1[0] * n[0] - v1[1] * n[1]) / n[2],
+                                            v2[2] == (s.v2n - v2[0] * n[0] - v2[1] * n[1]) / n[2]});
+  const ex numerator_denominator = GiNaC::normal(through_normal).numer_denom();
+  const ex numerator = reduce_modulo(numerator_denominator.op(0), space.unit_normal.relation);
+  const ex denominator = reduce_modulo(numerator_denominator.op(1), space.unit_normal.relation);
+  return GiNaC::normal(numerator / denominator).expand();
+}
+
+}  // namespace
+
 Quadratic the_quadratic(Recorder& record, const Setting& setting) {
   const Symbols& s = symbols();
   const Definitions& d = setting.definitions;
@@ -23,11 +41,14 @@ Quadratic the_quadratic(Recorder& record, const Setting& setting) {
       .paper_expression = ((s.Pn - s.m1 * s.x1n) / s.m2).subs(paper_shorthand),
       .derived_expression = x2n_solved,
       .paper_display = (s.Pn - s.m1 * s.x1n) / s.m2,
+      .display_definitions = shorthand(d),
       .note = "The paper states this step in words only; it is the vector equation "
               "x2∥ = (P∥ − m1 x1∥)/m2 along n.",
       .depends_on = {"along_n.momentum", "along_n.momentum_is_along_n"},
   });
-  // The quadratic as the paper first writes it, in vectors: K(x1∥, x2∥) − K∥ with x2∥ from momentum.
+  // The quadratic as the paper first writes it, in vectors: K(x1∥, x2∥) − K∥ with x2∥ from momentum;
+  // then the same with every component written through x1·n, v1·n and v2·n: the scalar quadratic.
+  ex quadratic;
   {
     const Vec v1_par = parallel_part(space.v1, space.n), v2_par = parallel_part(space.v2, space.n);
     const Vec x1_par = scale(s.x1n, space.n);
@@ -53,12 +74,16 @@ Quadratic the_quadratic(Recorder& record, const Setting& setting) {
         .paper_display = numeric(1, 2) * s.m1 * (1 + s.m1 / s.m2) * s.x1_parallel_squared -
                          s.m1 / s.m2 * s.P_parallel_dot_x1_parallel + s.P_parallel_squared / (2 * s.m2) -
                          s.K_parallel,
-        .derived_display = s.K_of_x_parallel - s.K_parallel,
+        .derived_label = s.K_of_x_parallel - s.K_parallel,
+        .display_definitions = {{s.x1_parallel_squared, dot(x1_par, x1_par)},
+                                {s.P_parallel_dot_x1_parallel, dot(P_par, x1_par)},
+                                {s.P_parallel_squared, dot(P_par, P_par)},
+                                {s.K_parallel, kinetic(d, v1_par, v2_par)}},
         .note = "(x1∥)² means x1∥·x1∥ and P∥ = P(v1∥, v2∥).",
         .depends_on = {"quadratic.x2_from_momentum", "along_n.kinetic_energy"},
     });
+    quadratic = in_normal_components(derived_vector_form, space);
   }
-  const ex quadratic = (scalar_kinetic(d, s.x1n, x2n_solved) - scalar_kinetic(d, s.v1n, s.v2n)).expand();
   {
     const ex paper_scalar_form = numeric(1, 2) * s.m1 * (1 + s.m1 / s.m2) * GiNaC::pow(s.x1n, 2) -
                                  s.m1 / s.m2 * s.Pn * s.x1n + GiNaC::pow(s.Pn, 2) / (2 * s.m2) - s.K_parallel;
@@ -69,15 +94,15 @@ Quadratic the_quadratic(Recorder& record, const Setting& setting) {
             R"tex(0 = \frac{1}{2}m_1 \left(1 + \frac{m_1}{m_2}\right) (x_1 \cdot n)^2 - \frac{m_1}{m_2} (P \cdot n)(x_1 \cdot n) + \frac{(P \cdot n)^2}{2m_2} - K^\parallel)tex",
         .statement = "The quadratic is one in x1·n: ½ m1 (1 + m1/m2)(x1·n)² − (m1/m2)(P·n)(x1·n) + "
                      "(P·n)²/(2 m2) − K∥ (checked in 3-D components).",
-        .method = std::string("the scalar quadratic, written in components, against the paper's; "
-                              "identity after normal()") +
-                  unit_normal_method,
+        .method = std::string("the vector form with v1_z, v2_z written through v1·n, v2·n and reduced "
+                              "modulo n_z² = 1 − n_x² − n_y²: a polynomial in x1·n, v1·n, v2·n and the "
+                              "masses alone; identity after normal()"),
         .comparison = Comparison::identity,
-        .paper_expression = space.components_of(paper_scalar_form.subs(paper_shorthand)),
-        .derived_expression = space.components_of(quadratic),
-        .constraints = {space.unit_normal},
+        .paper_expression = paper_scalar_form.subs(paper_shorthand),
+        .derived_expression = quadratic,
         .paper_display = paper_scalar_form,
         .derived_display = factored_form(quadratic),
+        .display_definitions = shorthand(d),
         .depends_on = {"quadratic.vector_form"},
     });
     struct Coefficient {
@@ -105,6 +130,7 @@ Quadratic the_quadratic(Recorder& record, const Setting& setting) {
           .derived_expression = quadratic.coeff(s.x1n, c.power),
           .paper_display = c.printed,
           .derived_display = factored_form(quadratic.coeff(s.x1n, c.power)),
+          .display_definitions = shorthand(d),
           .depends_on = {"quadratic.in_normal_component"},
       });
     }

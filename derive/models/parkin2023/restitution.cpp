@@ -27,8 +27,7 @@ Restitution restitution(Recorder& record, const Definitions& d) {
       .paper_expression = lst{paper_x1n, paper_x2n},
       .derived_expression = lst{x1n_e.subs(e == 1), x2n_e.subs(e == 1)},
       .paper_display = lst{paper_x1n, paper_x2n},
-      .derived_display = factored_form(lst{x1n_e, x2n_e}),
-      .note = "The derived display is the general solution for any e.",
+      .derived_display = factored_form(lst{x1n_e.subs(e == 1), x2n_e.subs(e == 1)}),
       .depends_on = restitution_premises,
   });
   record.add({
@@ -39,7 +38,8 @@ Restitution restitution(Recorder& record, const Definitions& d) {
       .paper_expression = scalar_kinetic(d, s.v1n, s.v2n),
       .derived_expression = scalar_kinetic(d, x1n_e, x2n_e).subs(e == 1),
       .paper_display = s.K_parallel,
-      .derived_display = s.K_of_x_parallel,
+      .derived_label = s.K_of_x_parallel,
+      .display_definitions = shorthand(d),
       .depends_on = {"beyond.restitution.elastic_is_the_paper", "definition.kinetic_energy"},
   });
   const ex reduced_mass = s.m1 * s.m2 / (s.m1 + s.m2);
@@ -78,6 +78,8 @@ Restitution restitution(Recorder& record, const Definitions& d) {
       .derived_expression = (x2n_e - x1n_e).subs(e == 0),
       .paper_display = 0,
       .derived_display = factored_form((x2n_e - x1n_e).subs(e == 0)),
+      .note = "This restates Newton's law of restitution (definition.restitution) at e = 0, which the "
+              "solution was solved from: it checks lsolve(), not new physics.",
       .depends_on = {"beyond.restitution.elastic_is_the_paper"},
   });
   const ex first_coefficient_e = GiNaC::normal(through_speed(x1n_e - s.v1n) / speed);

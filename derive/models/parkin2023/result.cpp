@@ -32,6 +32,8 @@ void the_collision_formula(Recorder& record, const Setting& setting, const Discr
         .constraints = {space.unit_normal},
         .paper_display = s.v1 + expanded_coefficient * s.n,
         .derived_display = s.v1 + factored_form(plus_root - s.v1n) * s.n,
+        .display_definitions = space.normal_components(),
+        .display_components = space.vector_components(),
         .depends_on = {"selection.plus_root_reverses_relative_normal_velocity",
                        "selection.minus_root_is_no_collision"},
     });
@@ -47,6 +49,8 @@ void the_collision_formula(Recorder& record, const Setting& setting, const Discr
         .constraints = {space.unit_normal},
         .paper_display = s.v1 + simplified_coefficient * s.n,
         .derived_display = s.v1 + factored_form(plus_root - s.v1n) * s.n,
+        .display_definitions = space.normal_components(),
+        .display_components = space.vector_components(),
         .depends_on = {"result.x1_expanded_form"},
     });
   }
@@ -72,6 +76,8 @@ void the_collision_formula(Recorder& record, const Setting& setting, const Discr
       .constraints = {space.unit_normal},
       .paper_display = s.v2 + 2 * s.m1 / (s.m1 + s.m2) * (s.v1n - s.v2n) * s.n,
       .derived_display = s.v2 + factored_form(x2n_selected - s.v2n) * s.n,
+      .display_definitions = space.normal_components(),
+      .display_components = space.vector_components(),
       .depends_on = {"result.x1_simplified_form", "quadratic.x2_from_momentum"},
   });
   {
@@ -85,8 +91,8 @@ void the_collision_formula(Recorder& record, const Setting& setting, const Discr
         .comparison = Comparison::identity,
         .paper_expression = concatenate(x1_selected, x2_selected),
         .derived_expression = concatenate(x1_selected, x2_selected).subs(flip),
-        .paper_display = s.results,
-        .derived_display = s.results_flipped,
+        .paper_label = s.results,
+        .derived_label = s.results_flipped,
         .depends_on = {"result.x1_simplified_form", "result.x2_by_symmetry"},
     });
   }

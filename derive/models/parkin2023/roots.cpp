@@ -45,8 +45,8 @@ Roots the_roots(Recorder& record, const Quadratic& quadratic, const Discriminant
         .comparison = Comparison::identity,
         .paper_expression = in_case_lst(paper_roots, c.sign),
         .derived_expression = in_case_lst(roots, c.sign),
-        .paper_display = paper_roots,
-        .derived_display = factored_form(roots),
+        .paper_display = factored_form(in_case_lst(paper_roots, c.sign)),
+        .derived_display = factored_form(in_case_lst(roots, c.sign)),
         .depends_on = {"discriminant.factored", "discriminant.nonnegative"},
     });
     record.add({
@@ -61,8 +61,8 @@ Roots the_roots(Recorder& record, const Quadratic& quadratic, const Discriminant
         .comparison = Comparison::same_set,
         .paper_expression = in_case_lst(paper_roots_no_abs, c.sign),
         .derived_expression = in_case_lst(roots, c.sign),
-        .paper_display = paper_roots_no_abs,
-        .derived_display = factored_form(roots),
+        .paper_display = factored_form(in_case_lst(paper_roots_no_abs, c.sign)),
+        .derived_display = factored_form(in_case_lst(roots, c.sign)),
         .note = c.sign > 0 ? "Here the pairing is sign for sign." : "Here ± pair crosswise.",
         .depends_on = {std::string("roots.quadratic_formula.") + c.suffix},
     });

@@ -32,6 +32,8 @@ void sanity_checks(Recorder& record, const Setting& setting, const Selection& se
         .constraints = {space.unit_normal},
         .paper_display = s.v2n * s.n,
         .derived_display = factored_form(x1_shown.subs(at_rest_shown)),
+        .display_definitions = space.normal_components(),
+        .display_components = space.vector_components(),
         .depends_on = {"result.x1_simplified_form"},
     });
     record.add({
@@ -46,6 +48,8 @@ void sanity_checks(Recorder& record, const Setting& setting, const Selection& se
         .constraints = {space.unit_normal},
         .paper_display = s.v2 - s.v2n * s.n,
         .derived_display = x2_shown.subs(at_rest_shown),
+        .display_definitions = space.normal_components(),
+        .display_components = space.vector_components(),
         .depends_on = {"result.x2_by_symmetry"},
     });
     GiNaC::exmap head_on = at_rest;
@@ -63,6 +67,8 @@ void sanity_checks(Recorder& record, const Setting& setting, const Selection& se
         .constraints = {space.unit_normal},
         .paper_display = s.v2,
         .derived_display = factored_form(x1_shown.subs(head_on_shown)),
+        .display_definitions = merged({space.normal_components(), {{s.v2, s.head_on_speed * s.n}}}),
+        .display_components = space.vector_components(),
         .depends_on = {"sanity.equal_masses_at_rest.x1"},
     });
     record.add({
@@ -77,6 +83,8 @@ void sanity_checks(Recorder& record, const Setting& setting, const Selection& se
         .constraints = {space.unit_normal},
         .paper_display = 0,
         .derived_display = factored_form(x2_shown.subs(head_on_shown)),
+        .display_definitions = space.normal_components(),
+        .display_components = space.vector_components(),
         .depends_on = {"sanity.equal_masses_at_rest.x2"},
     });
   }

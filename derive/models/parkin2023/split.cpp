@@ -23,8 +23,8 @@ void split_along_and_across(Recorder& record, const Setting& setting) {
         .comparison = Comparison::identity,
         .paper_expression = to_lst(momentum(d, sp->x1, sp->x2)),
         .derived_expression = to_lst(add(momentum(d, x1_par, x2_par), momentum(d, x1_perp, x2_perp))),
-        .paper_display = s.P_of_x,
-        .derived_display = s.P_split,
+        .paper_label = s.P_of_x,
+        .derived_label = s.P_split,
         .note = "P is linear, so the split holds for any n; it needs only a = a∥ + a⊥.",
         .depends_on = {"definition.momentum", "definition.split"},
     });
@@ -38,7 +38,7 @@ void split_along_and_across(Recorder& record, const Setting& setting) {
         .derived_expression = dot(x1_par, x2_perp),
         .constraints = {sp->unit_normal},
         .paper_display = 0,
-        .derived_display = s.a_par_dot_b_perp,
+        .derived_label = s.a_par_dot_b_perp,
         .note = "The footnote calls P and K \"bilinear\". P is linear and K is a quadratic form; "
                 "K(a, b) splits because (a∥ + a⊥)² = (a∥)² + 2 a∥·a⊥ + (a⊥)² and the cross term "
                 "a∥·a⊥ is zero when n is a unit vector.",
@@ -55,8 +55,8 @@ void split_along_and_across(Recorder& record, const Setting& setting) {
         .paper_expression = kinetic(d, sp->x1, sp->x2),
         .derived_expression = kinetic(d, x1_par, x2_par) + kinetic(d, x1_perp, x2_perp),
         .constraints = {sp->unit_normal},
-        .paper_display = s.K_of_x,
-        .derived_display = s.K_split,
+        .paper_label = s.K_of_x,
+        .derived_label = s.K_split,
         .note = "Holds only because n is a unit vector: without n·n = 1 the parallel part carries a "
                 "factor (n·n)² and the cross terms do not cancel.",
         .depends_on = {"definition.kinetic_energy", "definition.split",

@@ -12,6 +12,7 @@
 #include <ginac/ginac.h>
 
 #include <cstddef>
+#include <initializer_list>
 #include <string>
 #include <vector>
 
@@ -103,7 +104,16 @@ struct Space {
   ex components_of(const ex& scalar) const;
   /// The velocity v⊥ + κ n for a ball whose new normal component is `normal` (a scalar).
   Vec after_collision(const Vec& v, const ex& normal) const;
+  /// For a claim's displays: v1·n and v2·n in this space's components.
+  GiNaC::exmap normal_components() const;
+  /// For a claim's vector displays: the vector symbols v1, v2, n, x1, x2 → component i, one map each.
+  std::vector<GiNaC::exmap> vector_components() const;
 };
+
+/// For a claim's displays: the paper's shorthand P·n and K∥ by their definitions.
+GiNaC::exmap shorthand(const Definitions& d);
+/// The substitutions of several maps in one (a later map's entry wins).
+GiNaC::exmap merged(std::initializer_list<GiNaC::exmap> maps);
 
 /// What every step may read and none changes: the definitions and the two spaces.
 struct Setting {

@@ -29,8 +29,8 @@ TimeOfImpact time_of_impact_quadratic(Recorder& record) {
       .comparison = Comparison::identity,
       .paper_expression = lst{dot(w, w), dot(p, w), dot(p, p) - contact_distance * contact_distance},
       .derived_expression = lst{coefficient_a, coefficient_b, coefficient_c},
-      .paper_display = qa * GiNaC::pow(time, 2) + 2 * qb * time + qc,
-      .derived_display = touching,
+      .paper_label = lst{qa, qb, qc},
+      .derived_label = lst{qa, qb, qc},
       .depends_on = time_premises,
   });
   // D/4 = b² − a c from the coefficients read off; in 3-D it is a r² − |p × w|² (Lagrange's identity).
@@ -47,6 +47,10 @@ TimeOfImpact time_of_impact_quadratic(Recorder& record) {
       .derived_expression = quarter_discriminant,
       .paper_display = qa * contact_distance * contact_distance - s.cross_product_squared,
       .derived_display = qb * qb - qa * qc,
+      .display_definitions = {{qa, dot(w, w)},
+                              {qb, dot(p, w)},
+                              {qc, dot(p, p) - contact_distance * contact_distance},
+                              {s.cross_product_squared, dot(cross, cross)}},
       .note = "D here is a quarter of the usual B² − 4AC with B = 2b.",
       .depends_on = {"beyond.time_of_impact.quadratic"},
   });
@@ -69,8 +73,6 @@ TimeOfImpact time_of_impact_quadratic(Recorder& record) {
       .derived_expression = lst{earlier_root, later_root, quadratic_in_t.subs(time == earlier_root),
                                 quadratic_in_t.subs(time == later_root)},
       .constraints = {{root_relation, "s² = b² − a c (s = √D)"}},
-      .paper_display = printed_roots,
-      .derived_display = lst{earlier_root, later_root},
       .depends_on = {"beyond.time_of_impact.discriminant"},
   });
   // (p + t w)·w is the rate of change of |p + t w|²/2: negative while the gap closes.
@@ -85,8 +87,6 @@ TimeOfImpact time_of_impact_quadratic(Recorder& record) {
       .paper_expression = lst{0, -root_of_d, root_of_d},
       .derived_expression = lst{(closing_rate - (coefficient_b + coefficient_a * time)).expand(),
                                 qb + qa * earlier_root, qb + qa * later_root},
-      .paper_display = lst{-root_of_d, root_of_d},
-      .derived_display = lst{qb + qa * time},
       .depends_on = {"beyond.time_of_impact.roots"},
   });
   // The earlier root without cancellation: multiply by (s − b)/(s − b) and reduce s² = b² − a c.
@@ -147,7 +147,6 @@ void time_of_impact_cases(Recorder& record, const TimeOfImpact& toi) {
       .derived_expression = lst{(earlier_root - later_root).subs(root_of_d == 0),
                                 GiNaC::normal(qb + qa * earlier_root).subs(root_of_d == 0)},
       .paper_display = lst{0, 0},
-      .derived_display = lst{earlier_root - later_root, qb + qa * earlier_root},
       .depends_on = {"beyond.time_of_impact.first_contact_approaches", "beyond.approaching.kernel_form"},
         .cases = {{lst{qd <= 0, qb < 0}, infinity()}},
   });
