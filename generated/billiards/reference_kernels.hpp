@@ -4,7 +4,7 @@
 // derivation of S. T. Parkin, "Billiard Ball Physics", 2023 before simplification,
 // printed from the same derived expressions as billiards/kernels.hpp and proven the same way.
 //
-// Fingerprint: fnv1a64:7b899f9c69c2e4c3 (of this header and the audit)
+// Fingerprint: fnv1a64:1a03f7b76939059b (of this header and the audit)
 #pragma once
 
 #include <billiards/kernels.hpp>

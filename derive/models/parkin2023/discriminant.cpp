@@ -70,7 +70,7 @@ Discriminant the_discriminant(Recorder& record, const Definitions& d, const Quad
         .derived_display = factored_form(D),
         .note = "Masses are positive (GiNaC possymbol); D = 0 exactly when (v2 − v1)·n = 0, a "
                 "grazing contact, where both roots coincide and nothing happens.",
-        .depends_on = {"discriminant.factored"},
+        .depends_on = {"definition.masses", "discriminant.factored"},
     });
   }
   return {D, relative};

@@ -9,7 +9,9 @@ KernelPieces what_the_emitter_prints(Recorder& record, const Selection& selectio
   record.section("kernels", "What the code emitter prints",
                  "The emitted kernels are scalar functions of the masses and the normal components "
                  "v1·n, v2·n, so they serve vectors of any dimension. Their expressions are read off "
-                 "the selected root, never typed again; these claims vouch for each piece.");
+                 "the selected root, never typed again, and every kernel is proven equal to a verified "
+                 "claim before it is printed (\"The emitted kernels\" at the end lists which); these "
+                 "claims vouch for the pieces.");
   {
     const ex speed = s.relative_normal_speed;
     // Each ball's change of normal velocity, with v2·n written as v1·n + (v2 − v1)·n.

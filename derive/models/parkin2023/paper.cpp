@@ -28,8 +28,16 @@ ModelInfo info() {
       "The paper rejects the \"−\" root because it does not depend on v2. The stronger reason is that it is "
       "x1 = v1, x2 = v2: the state before the collision (`selection.minus_root_is_no_collision`); the \"+\" "
       "root reverses the relative normal velocity (`selection.plus_root_reverses_relative_normal_velocity`).",
-      "The cushion limit needs v2 = 0 (or bounded): the limit of x1 for a wall moving with v2 is "
-      "v1 + 2((v2 − v1)·n) n (`cushion.limit`). −n v1 n is a reflection only when n² = 1.",
+      "The cushion limit asks for v2 = 0 but needs only v2·n = 0 (`cushion.limit`): the limit for a wall "
+      "moving with v2 is v1 + 2((v2 − v1)·n) n (`cushion.moving_wall_limit`). −n v1 n is a reflection only "
+      "when n² = 1.",
+      "The masses are taken in ℝ; they must be positive (`definition.masses`): √D = m1 |(v2 − v1)·n| and "
+      "D ≥ 0 rest on it.",
+      "The \"+\" root is chosen whatever the sign of (v2 − v1)·n, and the paper says the direction of n does "
+      "not matter. That is true of the formula, not of the choice: with n from ball 1 to ball 2 the \"+\" "
+      "root is the collision only when the balls approach "
+      "(`selection.plus_root_separates_only_approaching_balls`); for separating balls nothing happens "
+      "(`beyond.approaching.resolve_only_approaching`).",
   };
   model.reference_path = "billiards/reference_kernels.hpp";
   model.kernel_list_path = "billiards/kernel_list.hpp";

@@ -10,6 +10,10 @@ void record_premises(Recorder& record, const Definitions& d) {
          scalar_momentum(d, a, b)},
         {"definition.kinetic_energy", "K(a, b) = ½ m1 a² + ½ m2 b²: their total kinetic energy (a² = a·a).",
          scalar_kinetic(d, a, b)},
+        {"definition.masses",
+         "m1 > 0 and m2 > 0 (the paper takes m1, m2 ∈ ℝ; a mass is positive): GiNaC's positive symbols "
+         "carry it, so √(m1²) = m1 and the sign claims rest on it.",
+         ex(0)},
         {"definition.split",
          "a∥ = (a·n) n and a⊥ = a − a∥ for a unit contact normal n (n·n = 1); vectors are kept in "
          "symbolic components in 2-D and 3-D, never a chosen numeric n.",
@@ -29,7 +33,6 @@ void record_premises(Recorder& record, const Definitions& d) {
     };
     for (const Premise& premise : premises) record.premise(premise);
   }
-
 }
 
 }  // namespace billiards::derive::parkin2023

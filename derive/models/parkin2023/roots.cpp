@@ -47,7 +47,7 @@ Roots the_roots(Recorder& record, const Quadratic& quadratic, const Discriminant
         .derived_expression = in_case_lst(roots, c.sign),
         .paper_display = factored_form(in_case_lst(paper_roots, c.sign)),
         .derived_display = factored_form(in_case_lst(roots, c.sign)),
-        .depends_on = {"discriminant.factored", "discriminant.nonnegative"},
+        .depends_on = {"definition.masses", "discriminant.factored", "discriminant.nonnegative"},
     });
     record.add({
         .id = std::string("roots.absolute_value_dropped.") + c.suffix,

@@ -51,6 +51,28 @@ Selection choosing_the_root(Recorder& record, const Quadratic& quadratic, const 
               "fast as they approached.",
       .depends_on = {"general.x1_both_roots", "quadratic.x2_from_momentum"},
   });
+  // The "+" root is the collision only for balls that approach: with n from ball 1 to ball 2 and
+  // s = (v2 − v1)·n = −σ (σ > 0, approaching), the closing rate afterwards is (x2 − x1)·n = σ ≥ 0.
+  const GiNaC::possymbol approach("sigma", "\\sigma");
+  const ex separation_after =
+      GiNaC::normal((x2n_selected - plus_root).subs(s.v2n == s.v1n - approach));
+  record.add({
+      .id = "selection.plus_root_separates_only_approaching_balls",
+      .paper = "\"the case we care about must be the positive case\"",
+      .statement = "With n pointing from ball 1 to ball 2, the \"+\" root leaves the balls separating, "
+                   "(x2 − x1)·n ≥ 0, exactly when they approached, (v2 − v1)·n < 0: it is the collision "
+                   "only then; for balls already separating the physical answer is the \"−\" root (nothing "
+                   "happens).",
+      .method = "sign: v2·n = v1·n − σ with σ > 0 substituted into (x2 − x1)·n of the \"+\" root; it factors "
+                "into positive symbols",
+      .comparison = Comparison::nonnegative,
+      .paper_expression = 0,
+      .derived_expression = separation_after,
+      .note = "The paper takes the \"+\" root whatever the sign of (v2 − v1)·n, and says the direction of "
+              "n does not matter; that holds for the formula, not for the choice of root. "
+              "beyond.approaching.resolve_only_approaching makes the choice for any sign.",
+      .depends_on = {"definition.masses", "selection.plus_root_reverses_relative_normal_velocity"},
+  });
   return {plus_root, x2n_selected};
 }
 
