@@ -46,13 +46,6 @@ template <typename Scalar>
   return std::sqrt(std::numeric_limits<Scalar>::max()) / Scalar(64);
 }
 
-/// How far n·n may be from 1 where a unit normal is required: 64 ε (7.6e-6 for float, 1.4e-14 for
-/// double), loose enough for a vector normalised in its own precision.
-template <typename Scalar>
-[[nodiscard]] constexpr Scalar unit_length_tolerance() noexcept {
-  return Scalar(64) * std::numeric_limits<Scalar>::epsilon();
-}
-
 namespace detail {
 
 template <typename Scalar>
@@ -72,7 +65,7 @@ std::string to_text(const Eigen::MatrixBase<Derived>& v) {
 
 template <typename Scalar>
 void check_mass(const char* function, const char* name, Scalar m) {
-  if (!(m > 0)) {  // also rejects NaN
+  if (!is_mass(m)) {
     throw invalid_argument(function, name, to_text(m),
                            "a positive mass (finite, or +infinity for an immovable body)");
   }
@@ -82,7 +75,7 @@ template <typename Scalar>
 void check_masses(const char* function, Scalar m1, Scalar m2) {
   check_mass(function, "m1", m1);
   check_mass(function, "m2", m2);
-  if (std::isinf(m1) && std::isinf(m2)) {
+  if (both_infinite(m1, m2)) {
     throw invalid_argument(function, "m2", to_text(m2),
                            "a finite mass when m1 is infinite (two immovable bodies do not collide)");
   }
@@ -112,7 +105,7 @@ template <typename Derived>
 void check_unit_normal(const char* function, const char* name, const Eigen::MatrixBase<Derived>& n) {
   using Scalar = typename Derived::Scalar;
   check_components(function, name, n, "a unit normal");
-  if (!(std::fabs(n.squaredNorm() - Scalar(1)) <= unit_length_tolerance<Scalar>())) {
+  if (!is_unit(n)) {
     throw invalid_argument(function, name, to_text(n),
                            "a unit vector (|n·n − 1| ≤ " + to_text(unit_length_tolerance<Scalar>()) + ")");
   }
@@ -120,7 +113,7 @@ void check_unit_normal(const char* function, const char* name, const Eigen::Matr
 
 template <typename Scalar>
 void check_restitution(const char* function, Scalar e) {
-  if (!(e >= 0 && e <= 1)) {
+  if (!is_restitution(e)) {
     throw invalid_argument(function, "restitution", to_text(e), "a coefficient of restitution in [0, 1]");
   }
 }
@@ -149,8 +142,7 @@ template <typename D1, typename D2, typename DN>
 [[nodiscard]] Collision<detail::PlainVector<D1>> collide(
     typename D1::Scalar m1, const Eigen::MatrixBase<D1>& v1, typename D1::Scalar m2,
     const Eigen::MatrixBase<D2>& v2, const Eigen::MatrixBase<DN>& n, typename D1::Scalar restitution = 1) {
-  detail::require_same_vector_type<D1, D2>();
-  detail::require_same_vector_type<D1, DN>();
+  detail::require_vectors<D1, D2, DN>();
   constexpr const char* function = "billiards::checked::collide";
   detail::check_collision(function, m1, v1, m2, v2, restitution);
   detail::check_unit_normal(function, "n", n);
@@ -164,8 +156,7 @@ template <typename D1, typename D2, typename DD>
 [[nodiscard]] Collision<detail::PlainVector<D1>> collide_along_direction(
     typename D1::Scalar m1, const Eigen::MatrixBase<D1>& v1, typename D1::Scalar m2,
     const Eigen::MatrixBase<D2>& v2, const Eigen::MatrixBase<DD>& d, typename D1::Scalar restitution = 1) {
-  detail::require_same_vector_type<D1, D2>();
-  detail::require_same_vector_type<D1, DD>();
+  detail::require_vectors<D1, D2, DD>();
   constexpr const char* function = "billiards::checked::collide_along_direction";
   detail::check_collision(function, m1, v1, m2, v2, restitution);
   detail::check_direction(function, "d", d);
@@ -179,9 +170,7 @@ template <typename DP1, typename D1, typename DP2, typename D2>
     typename D1::Scalar m1, const Eigen::MatrixBase<DP1>& p1, const Eigen::MatrixBase<D1>& v1,
     typename D1::Scalar m2, const Eigen::MatrixBase<DP2>& p2, const Eigen::MatrixBase<D2>& v2,
     typename D1::Scalar restitution = 1) {
-  detail::require_same_vector_type<D1, D2>();
-  detail::require_same_vector_type<D1, DP1>();
-  detail::require_same_vector_type<D1, DP2>();
+  detail::require_vectors<D1, D2, DP1, DP2>();
   constexpr const char* function = "billiards::checked::collide_if_approaching";
   detail::check_collision(function, m1, v1, m2, v2, restitution);
   detail::check_components(function, "p1", p1, "a position");
@@ -207,9 +196,7 @@ template <typename DP1, typename D1, typename DP2, typename D2>
                                                  const Eigen::MatrixBase<D2>& v2,
                                                  typename D1::Scalar contact_distance) {
   using Scalar = typename D1::Scalar;
-  detail::require_same_vector_type<D1, D2>();
-  detail::require_same_vector_type<D1, DP1>();
-  detail::require_same_vector_type<D1, DP2>();
+  detail::require_vectors<D1, D2, DP1, DP2>();
   constexpr const char* function = "billiards::checked::time_of_impact";
   detail::check_components(function, "p1", p1, "a position");
   detail::check_components(function, "v1", v1, "a velocity");
@@ -237,7 +224,7 @@ template <typename DP1, typename D1, typename DP2, typename D2>
 template <typename DV, typename DN>
 [[nodiscard]] detail::PlainVector<DV> reflect(const Eigen::MatrixBase<DV>& v,
                                               const Eigen::MatrixBase<DN>& n) {
-  detail::require_same_vector_type<DV, DN>();
+  detail::require_vectors<DV, DN>();
   constexpr const char* function = "billiards::checked::reflect";
   detail::check_components(function, "v", v, "a velocity");
   detail::check_unit_normal(function, "n", n);

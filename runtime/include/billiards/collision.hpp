@@ -22,6 +22,14 @@ struct Collision {
   Vector second;  ///< \f$x_2\f$, the second ball's velocity after the collision
 };
 
+/// How far n·n may be from 1 where a unit normal is required: 64 ε (7.6e-6 for float, 1.4e-14 for
+/// double), loose enough for a vector normalised in its own precision. The debug asserts of the
+/// unchecked calls and billiards::checked use the same tolerance.
+template <typename Scalar>
+[[nodiscard]] constexpr Scalar unit_length_tolerance() noexcept {
+  return Scalar(64) * std::numeric_limits<Scalar>::epsilon();
+}
+
 namespace detail {
 
 /// The plain fixed-size column vector type of an Eigen expression.
@@ -40,13 +48,15 @@ constexpr void require_vector() {
       "billiards: the scalar type must be float or double");
 }
 
-template <typename A, typename B>
-constexpr void require_same_vector_type() {
-  require_vector<A>();
-  require_vector<B>();
-  static_assert(std::is_same_v<typename A::Scalar, typename B::Scalar>,
+/// One compile-time check for every vector argument of a call: fixed-size column vectors of float or
+/// double, all of one scalar type and one dimension.
+template <typename First, typename... Rest>
+constexpr void require_vectors() {
+  require_vector<First>();
+  (require_vector<Rest>(), ...);
+  static_assert((std::is_same_v<typename First::Scalar, typename Rest::Scalar> && ...),
                 "billiards: all vectors must have the same scalar type (all float or all double)");
-  static_assert(static_cast<int>(A::RowsAtCompileTime) == static_cast<int>(B::RowsAtCompileTime),
+  static_assert(((static_cast<int>(First::RowsAtCompileTime) == static_cast<int>(Rest::RowsAtCompileTime)) && ...),
                 "billiards: all vectors must have the same dimension");
 }
 
@@ -81,23 +91,43 @@ typename Vector::Scalar cross_squared(const Vector& p, const Vector& w) noexcept
   return sum;
 }
 
-// Debug-build checks of the unchecked calls' preconditions (assert: compiled out with NDEBUG). The
-// checked API (billiards/checked.hpp) validates the same and throws instead.
+// The preconditions, one predicate each: the unchecked calls assert them in debug builds (compiled out
+// with NDEBUG) and the checked API (billiards/checked.hpp) validates the same and throws instead.
+template <typename Scalar>
+[[nodiscard]] bool is_mass(Scalar m) noexcept {
+  return m > 0;  // finite or +infinity; false for NaN
+}
+
+template <typename Scalar>
+[[nodiscard]] bool both_infinite(Scalar m1, Scalar m2) noexcept {
+  return std::isinf(m1) && std::isinf(m2);
+}
+
+template <typename Scalar>
+[[nodiscard]] bool is_restitution(Scalar e) noexcept {
+  return e >= 0 && e <= 1;  // false for NaN
+}
+
+template <typename Derived>
+[[nodiscard]] bool is_unit(const Eigen::MatrixBase<Derived>& n) noexcept {
+  using Scalar = typename Derived::Scalar;
+  return std::fabs(n.squaredNorm() - Scalar(1)) <= unit_length_tolerance<Scalar>();  // false for NaN
+}
+
 template <typename Scalar>
 void assert_masses([[maybe_unused]] Scalar m1, [[maybe_unused]] Scalar m2) noexcept {
-  assert(m1 > 0 && m2 > 0 && "billiards: masses must be positive (finite or +infinity)");
-  assert(!(std::isinf(m1) && std::isinf(m2)) && "billiards: two infinite masses do not collide");
+  assert(is_mass(m1) && is_mass(m2) && "billiards: masses must be positive (finite or +infinity)");
+  assert(!both_infinite(m1, m2) && "billiards: two infinite masses do not collide");
 }
 
 template <typename Derived>
 void assert_unit([[maybe_unused]] const Eigen::MatrixBase<Derived>& n) noexcept {
-  assert(std::fabs(n.squaredNorm() - 1) <= 64 * std::numeric_limits<typename Derived::Scalar>::epsilon() &&
-         "billiards: the contact normal must be a unit vector");
+  assert(is_unit(n) && "billiards: the contact normal must be a unit vector");
 }
 
 template <typename Scalar>
 void assert_restitution([[maybe_unused]] Scalar e) noexcept {
-  assert(e >= 0 && e <= 1 && "billiards: restitution must lie in [0, 1]");
+  assert(is_restitution(e) && "billiards: restitution must lie in [0, 1]");
 }
 
 }  // namespace detail
@@ -130,8 +160,7 @@ template <typename D1, typename D2, typename DN>
                                                          typename D1::Scalar m2,
                                                          const Eigen::MatrixBase<D2>& v2,
                                                          const Eigen::MatrixBase<DN>& n) noexcept {
-  detail::require_same_vector_type<D1, D2>();
-  detail::require_same_vector_type<D1, DN>();
+  detail::require_vectors<D1, D2, DN>();
   detail::assert_masses(m1, m2);
   detail::assert_unit(n);
   const auto change = kernels::elastic_normal_velocity_change(m1, m2, v1.dot(n), v2.dot(n));
@@ -158,8 +187,7 @@ template <typename D1, typename D2, typename DN>
                                                          const Eigen::MatrixBase<D2>& v2,
                                                          const Eigen::MatrixBase<DN>& n,
                                                          typename D1::Scalar restitution) noexcept {
-  detail::require_same_vector_type<D1, D2>();
-  detail::require_same_vector_type<D1, DN>();
+  detail::require_vectors<D1, D2, DN>();
   detail::assert_masses(m1, m2);
   detail::assert_unit(n);
   detail::assert_restitution(restitution);
@@ -181,8 +209,7 @@ template <typename D1, typename D2, typename DD>
     typename D1::Scalar m1, const Eigen::MatrixBase<D1>& v1, typename D1::Scalar m2,
     const Eigen::MatrixBase<D2>& v2, const Eigen::MatrixBase<DD>& d,
     typename D1::Scalar restitution = 1) noexcept {
-  detail::require_same_vector_type<D1, D2>();
-  detail::require_same_vector_type<D1, DD>();
+  detail::require_vectors<D1, D2, DD>();
   detail::assert_masses(m1, m2);
   detail::assert_restitution(restitution);
   const detail::PlainVector<D1> direction = detail::power_of_two_scaled(d);
@@ -205,9 +232,7 @@ template <typename DP1, typename D1, typename DP2, typename D2>
     typename D1::Scalar m1, const Eigen::MatrixBase<DP1>& p1, const Eigen::MatrixBase<D1>& v1,
     typename D1::Scalar m2, const Eigen::MatrixBase<DP2>& p2, const Eigen::MatrixBase<D2>& v2,
     typename D1::Scalar restitution = 1) noexcept {
-  detail::require_same_vector_type<D1, D2>();
-  detail::require_same_vector_type<D1, DP1>();
-  detail::require_same_vector_type<D1, DP2>();
+  detail::require_vectors<D1, D2, DP1, DP2>();
   detail::assert_masses(m1, m2);
   detail::assert_restitution(restitution);
   const detail::PlainVector<D1> d = detail::power_of_two_scaled(p2 - p1);
@@ -238,9 +263,7 @@ template <typename DP1, typename D1, typename DP2, typename D2>
                                                  const Eigen::MatrixBase<DP2>& p2,
                                                  const Eigen::MatrixBase<D2>& v2,
                                                  typename D1::Scalar contact_distance) noexcept {
-  detail::require_same_vector_type<D1, D2>();
-  detail::require_same_vector_type<D1, DP1>();
-  detail::require_same_vector_type<D1, DP2>();
+  detail::require_vectors<D1, D2, DP1, DP2>();
   assert(contact_distance > 0 && std::isfinite(contact_distance) &&
          "billiards: the contact distance must be positive and finite");
   const detail::PlainVector<D1> p = p2 - p1, w = v2 - v1;
@@ -257,7 +280,7 @@ template <typename DP1, typename D1, typename DP2, typename D2>
 template <typename DV, typename DN>
 [[nodiscard]] detail::PlainVector<DV> reflect(const Eigen::MatrixBase<DV>& v,
                                               const Eigen::MatrixBase<DN>& n) noexcept {
-  detail::require_same_vector_type<DV, DN>();
+  detail::require_vectors<DV, DN>();
   detail::assert_unit(n);
   return v + kernels::cushion_normal_velocity_change(v.dot(n)) * n;
 }
