@@ -15,6 +15,7 @@
 #include <limits>
 #include <random>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace {
@@ -189,29 +190,33 @@ std::int64_t max_pairs() {
   return text != nullptr ? std::max<std::int64_t>(100, std::atoll(text)) : 10'000'000;
 }
 
-void register_all() {
-  benchmark::RegisterBenchmark("collide/generated/double", generated_collide<double>);
-  benchmark::RegisterBenchmark("collide/paper_formula/double", hand_written_paper_formula<double>);
-  benchmark::RegisterBenchmark("collide/ratio_formula/double", hand_written_ratio_formula<double>);
-  benchmark::RegisterBenchmark("collide/ratio_formula_without_select/double",
-                               hand_written_ratio_formula_without_select<double>);
-  benchmark::RegisterBenchmark("collide/raw_derivation/double", raw_derivation<double>);
-  benchmark::RegisterBenchmark("collide/eigen_expression/double", plain_eigen_expression<double>);
-  benchmark::RegisterBenchmark("collide/generated/float", generated_collide<float>);
-  benchmark::RegisterBenchmark("collide/paper_formula/float", hand_written_paper_formula<float>);
-  benchmark::RegisterBenchmark("collide/ratio_formula/float", hand_written_ratio_formula<float>);
-  benchmark::RegisterBenchmark("collide/ratio_formula_without_select/float",
-                               hand_written_ratio_formula_without_select<float>);
-  benchmark::RegisterBenchmark("collide/raw_derivation/float", raw_derivation<float>);
-  benchmark::RegisterBenchmark("collide/eigen_expression/float", plain_eigen_expression<float>);
-  for (std::int64_t pairs = 100; pairs <= max_pairs(); pairs *= 10) {
-    benchmark::RegisterBenchmark("batch/double", batch<double>)->Arg(pairs);
-    benchmark::RegisterBenchmark("memcpy/double", memcpy_reference<double>)->Arg(pairs);
-    benchmark::RegisterBenchmark("batch/float", batch<float>)->Arg(pairs);
-    benchmark::RegisterBenchmark("memcpy/float", memcpy_reference<float>)->Arg(pairs);
-    benchmark::RegisterBenchmark("divisions/double", division_limit<double>)->Arg(pairs);
-    benchmark::RegisterBenchmark("divisions/float", division_limit<float>)->Arg(pairs);
+// Every benchmark for one scalar type, named "<group>/<variant>/<type>" ("batch/<type>" with N).
+template <typename Scalar>
+void register_type(const std::string& type) {
+  using Function = void (*)(benchmark::State&);
+  const std::pair<const char*, Function> one_call[] = {
+      {"generated", generated_collide<Scalar>},
+      {"paper_formula", hand_written_paper_formula<Scalar>},
+      {"ratio_formula", hand_written_ratio_formula<Scalar>},
+      {"ratio_formula_without_select", hand_written_ratio_formula_without_select<Scalar>},
+      {"raw_derivation", raw_derivation<Scalar>},
+      {"eigen_expression", plain_eigen_expression<Scalar>},
+  };
+  for (const auto& [variant, function] : one_call) {
+    benchmark::RegisterBenchmark(("collide/" + std::string(variant) + "/" + type).c_str(), function);
   }
+  const std::pair<const char*, Function> per_pair[] = {
+      {"batch", batch<Scalar>}, {"memcpy", memcpy_reference<Scalar>}, {"divisions", division_limit<Scalar>}};
+  for (std::int64_t pairs = 100; pairs <= max_pairs(); pairs *= 10) {
+    for (const auto& [group, function] : per_pair) {
+      benchmark::RegisterBenchmark((std::string(group) + "/" + type).c_str(), function)->Arg(pairs);
+    }
+  }
+}
+
+void register_all() {
+  register_type<double>("double");
+  register_type<float>("float");
 }
 
 }  // namespace
