@@ -14,11 +14,11 @@ namespace billiards::derive {
 
 /// What the audit and the headers say about a model, and where its outputs go.
 struct ModelInfo {
-  std::string name;      ///< registry name, e.g. "parkin2023"
-  std::string title;     ///< the audit's heading, e.g. "Billiard Ball Physics"
-  std::string citation;  ///< e.g. S. T. Parkin, "Billiard Ball Physics", 2023
-  std::string scope;     ///< what the model covers, one phrase
-  std::string notation;  ///< how the audit writes symbols, a paragraph of Markdown
+  std::string name;                  ///< registry name, e.g. "parkin2023"
+  std::string title;                 ///< the audit's heading, e.g. "Billiard Ball Physics"
+  std::string citation;              ///< e.g. S. T. Parkin, "Billiard Ball Physics", 2023
+  std::string scope;                 ///< what the model covers, one phrase
+  std::string notation;              ///< how the audit writes symbols, a paragraph of Markdown
   std::vector<std::string> remarks;  ///< where the source is imprecise, one Markdown bullet each
   std::string kernels_namespace = "billiards::kernels";
   std::string reference_namespace = "billiards::reference_kernels";

@@ -26,12 +26,14 @@ int run_model(const ModelEntry& entry, const fs::path& folder) {
   try {
     derived = entry.derive();
   } catch (const std::exception& error) {
-    std::cerr << "billiards-derive: model " << entry.name << ": the derivation stopped: " << error.what() << "\n";
+    std::cerr << "billiards-derive: model " << entry.name << ": the derivation stopped: " << error.what()
+              << "\n";
     return exit_claims_failed;
   }
   const Derivation& derivation = *derived;
   std::vector<KernelProblem> problems = validate_kernels(derivation.kernels, derivation.claims);
-  const std::vector<KernelProblem> reference = validate_kernels(derivation.reference_kernels, derivation.claims);
+  const std::vector<KernelProblem> reference =
+      validate_kernels(derivation.reference_kernels, derivation.claims);
   problems.insert(problems.end(), reference.begin(), reference.end());
 
   const ModelInfo& model = derivation.model;
@@ -49,8 +51,10 @@ int run_model(const ModelEntry& entry, const fs::path& folder) {
     // A kernel that is not proven is never printed.
     if (problems.empty()) {
       if (!model.kernels_path.empty()) write(model.kernels_path, kernels_header(derivation, json_text));
-      if (!model.reference_path.empty()) write(model.reference_path, reference_kernels_header(derivation, json_text));
-      if (!model.kernel_list_path.empty()) write(model.kernel_list_path, kernel_list_header(derivation, json_text));
+      if (!model.reference_path.empty())
+        write(model.reference_path, reference_kernels_header(derivation, json_text));
+      if (!model.kernel_list_path.empty())
+        write(model.kernel_list_path, kernel_list_header(derivation, json_text));
     }
   } catch (const std::exception& error) {
     std::cerr << "billiards-derive: " << error.what() << "\n";
@@ -92,7 +96,8 @@ int derive_main(int argc, const char* const* argv, const std::vector<ModelEntry>
     if (only.empty() || entry.name == only) chosen.push_back(&entry);
   }
   if (chosen.empty()) {
-    std::cerr << "billiards-derive: --model: unknown model '" << only << "', expected one of: " << names << "\n";
+    std::cerr << "billiards-derive: --model: unknown model '" << only << "', expected one of: " << names
+              << "\n";
     return exit_usage;
   }
   int status = 0;

@@ -24,7 +24,9 @@ std::string shown_latex(const ex& label, const ex& display, const ex& expression
   std::string latex = print(shown, Notation::latex);
   if (latex.size() > longest_printed_latex) {
     const std::size_t count = GiNaC::is_a<GiNaC::lst>(shown) ? shown.nops() : 1;
-    latex = "\\text{(" + (count == 1 ? std::string("a symbolic expression") : std::to_string(count) + " symbolic component expressions") +
+    latex = "\\text{(" +
+            (count == 1 ? std::string("a symbolic expression")
+                        : std::to_string(count) + " symbolic component expressions") +
             " of " + std::to_string(latex.size()) + " characters of LaTeX: too long to print)}";
   }
   if (GiNaC::is_a<GiNaC::fail>(label)) return latex;
@@ -58,7 +60,8 @@ std::string residual_text(const Claim& claim, Notation notation) {
 
 std::string constraint_words(const Claim& claim) {
   std::string words;
-  for (const Constraint& constraint : claim.constraints) words += (words.empty() ? "" : ", ") + constraint.words;
+  for (const Constraint& constraint : claim.constraints)
+    words += (words.empty() ? "" : ", ") + constraint.words;
   return words;
 }
 
@@ -149,7 +152,8 @@ std::string audit_markdown(const Derivation& derivation) {
           "named constants; every claim it cites is verified; its outputs, every step substituted, equal the "
           "derived expression of the claim named here exactly (GiNaC, normal() of the difference, under that "
           "claim's constraints), with every guard's alternative too; a guard that changes the value is a "
-          "case of its claim. A kernel that drifts from the audit stops billiards-derive with exit status 1.\n\n"
+          "case of its claim. A kernel that drifts from the audit stops billiards-derive with exit status "
+          "1.\n\n"
        << "| kernel | proven equal to | also implements |\n|---|---|---|\n";
     for (const std::vector<Kernel>* list : {&derivation.kernels, &derivation.reference_kernels}) {
       for (const Kernel& kernel : *list) {
@@ -219,7 +223,8 @@ std::string audit_json(const Derivation& derivation) {
     if (!claim.cases.empty()) {
       nlohmann::ordered_json cases = nlohmann::ordered_json::array();
       for (const Case& c : claim.cases) {
-        cases.push_back({{"conditions", print(c.conditions, Notation::text)}, {"value", print(c.value, Notation::text)}});
+        cases.push_back(
+            {{"conditions", print(c.conditions, Notation::text)}, {"value", print(c.value, Notation::text)}});
       }
       entry["cases"] = cases;
     }

@@ -146,8 +146,8 @@ void check(Claim& claim) {
   } catch (const std::exception& error) {
     claim.verdict = Verdict::failed;
     // Arithmetic on lists would throw again: the residual is then the derived side as it stands.
-    const bool lists = GiNaC::is_a<GiNaC::lst>(claim.derived_expression) ||
-                       GiNaC::is_a<GiNaC::lst>(claim.paper_expression);
+    const bool lists =
+        GiNaC::is_a<GiNaC::lst>(claim.derived_expression) || GiNaC::is_a<GiNaC::lst>(claim.paper_expression);
     claim.residual = lists ? claim.derived_expression : claim.derived_expression - claim.paper_expression;
     claim.failure = std::string("the comparison could not be carried out: ") + error.what();
   }

@@ -47,9 +47,9 @@ struct Claim {
   std::string statement;  ///< one sentence a reader can check
   std::string method;     ///< how the derived side was obtained and compared, in words
   Comparison comparison = Comparison::identity;
-  GiNaC::ex paper_expression;                 ///< typed exactly as the paper prints it
-  GiNaC::ex derived_expression;               ///< computed by the derivation, never typed
-  std::vector<Constraint> constraints;        ///< imposed by substitution before comparing
+  GiNaC::ex paper_expression;           ///< typed exactly as the paper prints it
+  GiNaC::ex derived_expression;         ///< computed by the derivation, never typed
+  std::vector<Constraint> constraints;  ///< imposed by substitution before comparing
   /// Shown in the audit instead of paper_expression (a readable form: shorthand, vectors): check()
   /// proves it equal to what was compared, or the claim fails. Unset: the expression itself is shown.
   GiNaC::ex paper_display = GiNaC::fail();
@@ -62,9 +62,9 @@ struct Claim {
   /// that turns the display into component i (v1 → v1_x, n → n_x). Each element of a list display
   /// expands into as many components.
   std::vector<GiNaC::exmap> display_components = {};
-  std::string note;                           ///< where the paper is imprecise, or what the claim adds
-  std::vector<std::string> depends_on;        ///< definitions and claims it rests on
-  std::vector<Case> cases = {};               ///< the piecewise cases it establishes, if any
+  std::string note;                     ///< where the paper is imprecise, or what the claim adds
+  std::vector<std::string> depends_on;  ///< definitions and claims it rests on
+  std::vector<Case> cases = {};         ///< the piecewise cases it establishes, if any
 
   Verdict verdict = Verdict::failed;  ///< set by check()
   GiNaC::ex residual = 0;             ///< set by check(): what is left of derived − paper

@@ -12,8 +12,6 @@ const GiNaC::symbol& infinity() {
   return constant;
 }
 
-bool is_named_constant(const GiNaC::ex& e) {
-  return e.is_equal(smallest_normal()) || e.is_equal(infinity());
-}
+bool is_named_constant(const GiNaC::ex& e) { return e.is_equal(smallest_normal()) || e.is_equal(infinity()); }
 
 }  // namespace billiards::derive

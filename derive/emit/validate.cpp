@@ -40,7 +40,9 @@ class Validation {
   }
 
  private:
-  void fail(const std::string& claim, const std::string& reason) { problems_.push_back({kernel_.name, claim, reason}); }
+  void fail(const std::string& claim, const std::string& reason) {
+    problems_.push_back({kernel_.name, claim, reason});
+  }
 
   const Claim* find_claim(const std::string& id) const {
     for (const Claim& claim : claims_) {
@@ -109,7 +111,8 @@ class Validation {
       const ex usual = step.expression.subs(values);
       ex value = usual;
       for (std::size_t j = 0; j < step.guards.size(); ++j) {
-        if (branch.taken.count({i, j})) value = guard_in_parameters(values, i, step.guards[j].alternative, usual);
+        if (branch.taken.count({i, j}))
+          value = guard_in_parameters(values, i, step.guards[j].alternative, usual);
       }
       values[step.name] = value;
     }
@@ -131,7 +134,8 @@ class Validation {
       earlier[kernel_.steps[i].name] = kernel_.steps[i].expression.subs(earlier);
     }
     const KernelStep& step = kernel_.steps[at.first];
-    return guard_in_parameters(earlier, at.first, step.guards[at.second].condition, step.expression.subs(earlier));
+    return guard_in_parameters(earlier, at.first, step.guards[at.second].condition,
+                               step.expression.subs(earlier));
   }
 
   std::vector<GuardAt> all_guards() const {
@@ -176,7 +180,8 @@ class Validation {
     if (GiNaC::is_a<GiNaC::function>(e) && GiNaC::ex_to<GiNaC::function>(e).get_name() == "abs") {
       const ex argument = GiNaC::normal(orient_absolute_values(e.op(0)));
       const ex negated = GiNaC::normal(-argument);
-      return GiNaC::abs(print(negated, Notation::text) < print(argument, Notation::text) ? negated : argument);
+      return GiNaC::abs(print(negated, Notation::text) < print(argument, Notation::text) ? negated
+                                                                                         : argument);
     }
     struct map_abs : GiNaC::map_function {
       ex operator()(const ex& operand) override { return orient_absolute_values(operand); }
@@ -195,8 +200,8 @@ class Validation {
     lst ours, theirs;
     const lst target = target_outputs();
     if (target.nops() != kernel_.outputs.size()) {
-      residual = std::to_string(kernel_.outputs.size()) + " outputs against " + std::to_string(target.nops()) +
-                 " in the claim";
+      residual = std::to_string(kernel_.outputs.size()) + " outputs against " +
+                 std::to_string(target.nops()) + " in the claim";
       return false;
     }
     for (std::size_t i = 0; i < kernel_.outputs.size(); ++i) {
@@ -218,10 +223,14 @@ class Validation {
   static ex negation(const ex& condition) {
     using GiNaC::relational;
     const ex l = condition.lhs(), r = condition.rhs();
-    if (condition.info(GiNaC::info_flags::relation_less)) return relational(l, r, relational::greater_or_equal);
-    if (condition.info(GiNaC::info_flags::relation_less_or_equal)) return relational(l, r, relational::greater);
-    if (condition.info(GiNaC::info_flags::relation_greater)) return relational(l, r, relational::less_or_equal);
-    if (condition.info(GiNaC::info_flags::relation_greater_or_equal)) return relational(l, r, relational::less);
+    if (condition.info(GiNaC::info_flags::relation_less))
+      return relational(l, r, relational::greater_or_equal);
+    if (condition.info(GiNaC::info_flags::relation_less_or_equal))
+      return relational(l, r, relational::greater);
+    if (condition.info(GiNaC::info_flags::relation_greater))
+      return relational(l, r, relational::less_or_equal);
+    if (condition.info(GiNaC::info_flags::relation_greater_or_equal))
+      return relational(l, r, relational::less);
     if (condition.info(GiNaC::info_flags::relation_equal)) return relational(l, r, relational::not_equal);
     return relational(l, r, relational::equal);
   }
@@ -265,8 +274,10 @@ class Validation {
     for (const auto& [condition, taken] : groups) {
       std::string residual;
       if (!outputs_equal_target(branch_taking(taken), residual)) {
-        fail(kernel_.equals, "under its guard " + condition + " the outputs differ from the claim's derived "
-                             "expression by " + residual);
+        fail(kernel_.equals, "under its guard " + condition +
+                                 " the outputs differ from the claim's derived "
+                                 "expression by " +
+                                 residual);
       }
     }
   }
@@ -276,12 +287,12 @@ class Validation {
     if (!GiNaC::is_a<GiNaC::relational>(a) || !GiNaC::is_a<GiNaC::relational>(b)) return false;
     const ex da = a.lhs() - a.rhs(), db = b.lhs() - b.rhs();
     using GiNaC::info_flags;
-    const unsigned operators[] = {info_flags::relation_equal, info_flags::relation_not_equal,
-                                  info_flags::relation_less, info_flags::relation_less_or_equal,
+    const unsigned operators[] = {info_flags::relation_equal,   info_flags::relation_not_equal,
+                                  info_flags::relation_less,    info_flags::relation_less_or_equal,
                                   info_flags::relation_greater, info_flags::relation_greater_or_equal};
-    const unsigned mirrored[] = {info_flags::relation_equal, info_flags::relation_not_equal,
+    const unsigned mirrored[] = {info_flags::relation_equal,   info_flags::relation_not_equal,
                                  info_flags::relation_greater, info_flags::relation_greater_or_equal,
-                                 info_flags::relation_less, info_flags::relation_less_or_equal};
+                                 info_flags::relation_less,    info_flags::relation_less_or_equal};
     for (std::size_t k = 0; k < 6; ++k) {
       if (!a.info(operators[k])) continue;
       if (b.info(operators[k]) && GiNaC::normal(da - db).is_zero()) return true;
@@ -295,7 +306,8 @@ class Validation {
     for (const ex& condition : conditions) {
       const ex ours = condition.subs(kernel_.in_claim_terms);
       bool found = false;
-      for (const ex& theirs : stated.conditions) found |= same_condition(ours, theirs.subs(kernel_.in_claim_terms));
+      for (const ex& theirs : stated.conditions)
+        found |= same_condition(ours, theirs.subs(kernel_.in_claim_terms));
       if (!found) return false;
     }
     return GiNaC::normal(comparable(value, {}) - comparable(stated.value, {})).is_zero();
@@ -323,8 +335,10 @@ class Validation {
       }
       if (!stated) {
         fail(guard.claim, "its guard " + print(guard.condition, Notation::text) + " on step " +
-                              step.name.get_name() + " is no case the claim states, and the outputs there differ "
-                              "from " + kernel_.equals + " by " + residual);
+                              step.name.get_name() +
+                              " is no case the claim states, and the outputs there differ "
+                              "from " +
+                              kernel_.equals + " by " + residual);
       }
     }
   }
@@ -335,8 +349,8 @@ class Validation {
       if (guard.kind != Guard::Kind::unreachable) continue;
       const ex condition = condition_of(at);
       const Claim* claim = find_claim(guard.claim);
-      const bool is_less = GiNaC::is_a<GiNaC::relational>(condition) &&
-                           condition.info(GiNaC::info_flags::relation_less);
+      const bool is_less =
+          GiNaC::is_a<GiNaC::relational>(condition) && condition.info(GiNaC::info_flags::relation_less);
       const bool proven = is_less && claim != nullptr && claim->comparison == Comparison::nonnegative &&
                           GiNaC::normal(comparable(condition.lhs() - condition.rhs(), {}) -
                                         comparable(claim->derived_expression, {}))
@@ -360,11 +374,13 @@ std::vector<KernelProblem> validate_kernel(const Kernel& kernel, const std::vect
   try {
     return Validation(kernel, claims).run();
   } catch (const std::exception& error) {
-    return {{kernel.name, kernel.equals, std::string("the validation could not be carried out: ") + error.what()}};
+    return {{kernel.name, kernel.equals,
+             std::string("the validation could not be carried out: ") + error.what()}};
   }
 }
 
-std::vector<KernelProblem> validate_kernels(const std::vector<Kernel>& kernels, const std::vector<Claim>& claims) {
+std::vector<KernelProblem> validate_kernels(const std::vector<Kernel>& kernels,
+                                            const std::vector<Claim>& claims) {
   std::vector<KernelProblem> problems;
   for (const Kernel& kernel : kernels) {
     const std::vector<KernelProblem> found = validate_kernel(kernel, claims);

@@ -32,6 +32,7 @@ struct KernelProblem {
 std::vector<KernelProblem> validate_kernel(const Kernel& kernel, const std::vector<Claim>& claims);
 
 /// The problems of every kernel in `kernels`, in order.
-std::vector<KernelProblem> validate_kernels(const std::vector<Kernel>& kernels, const std::vector<Claim>& claims);
+std::vector<KernelProblem> validate_kernels(const std::vector<Kernel>& kernels,
+                                            const std::vector<Claim>& claims);
 
 }  // namespace billiards::derive

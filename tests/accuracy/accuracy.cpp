@@ -16,8 +16,8 @@
 //   prints a Markdown table (kernel, type, samples, largest error in ULP, non-finite results) and
 //   exits 1 when an error exceeds --limit (default 4) or a valid input gives NaN or infinity.
 #include "core/named_constants.hpp"
-#include "models/parkin2023/paper.hpp"
 #include "exact.hpp"
+#include "models/parkin2023/paper.hpp"
 
 #include <billiards/kernel_list.hpp>
 

@@ -13,7 +13,8 @@ int main(int argc, char** argv) {
   using namespace billiards::derive;
   const std::string wanted = argc > 1 ? argv[1] : "";
   if (wanted == "--list") {
-    for (const testing::Mutation& m : testing::paper_mutations()) std::cout << m.name << " " << m.kernel << "\n";
+    for (const testing::Mutation& m : testing::paper_mutations())
+      std::cout << m.name << " " << m.kernel << "\n";
     return 0;
   }
   for (const testing::Mutation& mutation : testing::paper_mutations()) {

@@ -63,7 +63,8 @@ const std::vector<Mutation>& paper_mutations() {
        }},
       {"reference_factor_two_dropped", "raw_normal_velocity_change",
        [](Kernel& k) {
-         step(k, "x1n").expression = (-symbol(k, "quadratic_b") + symbol(k, "signed_root")) / symbol(k, "quadratic_a");
+         step(k, "x1n").expression =
+             (-symbol(k, "quadratic_b") + symbol(k, "signed_root")) / symbol(k, "quadratic_a");
        }},
       {"time_of_impact_approach_test_reversed", "time_of_impact",
        [](Kernel& k) { step(k, "contact_time").guards.at(2).condition = symbol(k, "pv") <= 0; }},

@@ -130,7 +130,8 @@ TEST_CASE("The paper's derivation checks out", "[derive][paper]") {
     // The elastic kernel's claim holds the changes x1·n − v1·n and x2·n − v2·n as derived.
     const Claim* claim = find_claim(derivation, "kernel.elastic_normal_velocity_change");
     REQUIRE(claim != nullptr);
-    const std::map<std::string, GiNaC::numeric> at{{"m1", 3}, {"m2", 5}, {"v1n", GiNaC::numeric(7, 2)}, {"v2n", -1}};
+    const std::map<std::string, GiNaC::numeric> at{
+        {"m1", 3}, {"m2", 5}, {"v1n", GiNaC::numeric(7, 2)}, {"v2n", -1}};
     const GiNaC::ex x1 = by_name(claim->derived_expression.op(0), at) + GiNaC::numeric(7, 2);
     CHECK(GiNaC::normal(x1 - GiNaC::numeric(-17, 8)).is_zero());
     const GiNaC::ex x2 = by_name(claim->derived_expression.op(1), at) - 1;
@@ -260,8 +261,9 @@ TEST_CASE("A slip that GiNaC cannot compare fails its claims and the run goes on
   const Summary summary = summarize(derivation.claims);
   CHECK(summary.failed >= 8);
   // At least one comparison threw inside GiNaC and was turned into a failure with its reason.
-  CHECK(std::any_of(derivation.claims.begin(), derivation.claims.end(),
-                    [](const Claim& c) { return c.failure.find("could not be carried out") != std::string::npos; }));
+  CHECK(std::any_of(derivation.claims.begin(), derivation.claims.end(), [](const Claim& c) {
+    return c.failure.find("could not be carried out") != std::string::npos;
+  }));
   CHECK(find_claim(derivation, "discriminant.factored")->verdict == Verdict::failed);
   CHECK(find_claim(derivation, "result.x1_simplified_form")->verdict == Verdict::failed);
   // Claims before the slip and claims that do not rest on it stand.
@@ -273,7 +275,8 @@ TEST_CASE("A slip that GiNaC cannot compare fails its claims and the run goes on
   CHECK_FALSE(problems.empty());
   report(derivation, problems, {}, out, err);
   for (const Claim& claim : derivation.claims) {
-    if (claim.verdict == Verdict::failed) CHECK(err.str().find("FAILED " + claim.id + ":") != std::string::npos);
+    if (claim.verdict == Verdict::failed)
+      CHECK(err.str().find("FAILED " + claim.id + ":") != std::string::npos);
   }
   CHECK_NOTHROW(audit_markdown(derivation));
   CHECK_NOTHROW(audit_json(derivation));

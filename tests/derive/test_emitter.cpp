@@ -1,6 +1,6 @@
 // The emitter: C++ without pow or floating literals, common subexpressions hoisted, honest op counts.
-#include "models/parkin2023/paper.hpp"
 #include "emit/emitter.hpp"
+#include "models/parkin2023/paper.hpp"
 #include "print/printer.hpp"
 
 #include <catch2/catch.hpp>

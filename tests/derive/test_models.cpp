@@ -140,7 +140,8 @@ TEST_CASE("Every claim id cited in generated/, runtime/ and the README exists an
   int cited = 0;
   for (const fs::path& file : files) {
     const std::string text = read(file);
-    for (auto it = std::sregex_iterator(text.begin(), text.end(), citation); it != std::sregex_iterator(); ++it) {
+    for (auto it = std::sregex_iterator(text.begin(), text.end(), citation); it != std::sregex_iterator();
+         ++it) {
       const std::string first = (*it)[1];
       if (!first_segments.count(first)) continue;
       std::string rest = (*it)[2];
@@ -164,7 +165,8 @@ TEST_CASE("Every claim id cited in generated/, runtime/ and the README exists an
         ++cited;
         if (candidate.size() > 2 && candidate.substr(candidate.size() - 2) == ".*") {
           const std::string prefix = candidate.substr(0, candidate.size() - 1);
-          CHECK(std::any_of(ids.begin(), ids.end(), [&](const std::string& known) { return known.rfind(prefix, 0) == 0; }));
+          CHECK(std::any_of(ids.begin(), ids.end(),
+                            [&](const std::string& known) { return known.rfind(prefix, 0) == 0; }));
         } else {
           CHECK(ids.count(candidate) == 1);
         }

@@ -28,9 +28,10 @@ Direction any_direction(Recorder& record, const Setting& setting, const Restitut
     }
     return components;
   };
-  const GiNaC::exmap direction_definitions{{s.c1, c1},
-                                           {s.relative_direction_speed, relative_along_d / dd},
-                                           {s.relative_unit_speed, dot(subtract(space.v2, space.v1), n_of_d)}};
+  const GiNaC::exmap direction_definitions{
+      {s.c1, c1},
+      {s.relative_direction_speed, relative_along_d / dd},
+      {s.relative_unit_speed, dot(subtract(space.v2, space.v1), n_of_d)}};
   record.add({
       .id = "beyond.any_normal.direction_form",
       .statement = "For a non-zero direction d (not necessarily unit), x1 = v1 + c1 ((v2 − v1)·d)/(d·d) d: "

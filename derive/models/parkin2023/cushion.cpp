@@ -19,8 +19,7 @@ void the_cushion(Recorder& record, const Setting& setting, const Selection& sele
       const ex in_epsilon = GiNaC::normal(component.subs(s.m2 == 1 / s.inverse_m2));
       moving_limit.append(GiNaC::series_to_poly(in_epsilon.series(s.inverse_m2 == 0, 1)));
     }
-    const Vec moving_wall =
-        add(space.v1, scale(2 * dot(subtract(space.v2, space.v1), space.n), space.n));
+    const Vec moving_wall = add(space.v1, scale(2 * dot(subtract(space.v2, space.v1), space.n), space.n));
     record.add({
         .id = "cushion.moving_wall_limit",
         .statement = "For a wall of mass m2 → ∞ moving with v2, x1 → v1 + 2 ((v2 − v1)·n) n: the ball leaves "
@@ -92,7 +91,6 @@ void the_cushion(Recorder& record, const Setting& setting, const Selection& sele
       });
     }
   }
-
 }
 
 }  // namespace billiards::derive::parkin2023

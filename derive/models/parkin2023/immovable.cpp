@@ -6,7 +6,8 @@ MassRatios immovable_bodies(Recorder& record, const Restitution& restitution) {
   const Symbols& s = symbols();
   const ex e = s.restitution;
   const ex speed = s.relative_normal_speed;
-  const ex &first_coefficient_e = restitution.first_coefficient, &second_coefficient_e = restitution.second_coefficient;
+  const ex &first_coefficient_e = restitution.first_coefficient,
+           &second_coefficient_e = restitution.second_coefficient;
   // Immovable bodies: the coefficients in the mass ratios ρ1 = m1/m2 and ρ2 = m2/m1.
   const ex rho1 = s.first_mass_ratio, rho2 = s.second_mass_ratio;
   const ex first_ratio_form = GiNaC::normal(first_coefficient_e.subs(s.m1 == rho1 * s.m2));

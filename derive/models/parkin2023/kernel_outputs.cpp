@@ -3,7 +3,8 @@
 namespace billiards::derive::parkin2023 {
 
 void kernel_outputs(Recorder& record, const Setting& setting, const Selection& selection,
-                    const Restitution& restitution, const Direction& direction, const Approaching& approaching) {
+                    const Restitution& restitution, const Direction& direction,
+                    const Approaching& approaching) {
   const Symbols& s = symbols();
   const ex e = s.restitution;
   const ex speed = s.relative_normal_speed;
@@ -24,8 +25,9 @@ void kernel_outputs(Recorder& record, const Setting& setting, const Selection& s
     record.add({
         .id = "kernel.elastic_normal_velocity_change",
         .paper = "\"This form makes it easier to see the impulse magnitude\"",
-        .statement = "x1·n − v1·n = (2 m2/(m1 + m2)) (v2 − v1)·n and x2·n − v2·n = −(2 m1/(m1 + m2)) (v2 − v1)·n: "
-                     "the selected root, and x2·n from momentum, along n.",
+        .statement =
+            "x1·n − v1·n = (2 m2/(m1 + m2)) (v2 − v1)·n and x2·n − v2·n = −(2 m1/(m1 + m2)) (v2 − v1)·n: "
+            "the selected root, and x2·n from momentum, along n.",
         .method = "the \"+\" root minus v1·n, x2·n from momentum minus v2·n; identity after normal()",
         .comparison = Comparison::identity,
         .paper_expression = printed,
@@ -36,7 +38,8 @@ void kernel_outputs(Recorder& record, const Setting& setting, const Selection& s
                        "result.x2_by_symmetry"},
     });
     const lst changes_e{GiNaC::normal(x1n_e - s.v1n), GiNaC::normal(x2n_e - s.v2n)};
-    const lst printed_e{(1 + e) * s.m2 / (s.m1 + s.m2) * relative, -(1 + e) * s.m1 / (s.m1 + s.m2) * relative};
+    const lst printed_e{(1 + e) * s.m2 / (s.m1 + s.m2) * relative,
+                        -(1 + e) * s.m1 / (s.m1 + s.m2) * relative};
     record.add({
         .id = "kernel.normal_velocity_change",
         .statement = "With restitution e: x1·n − v1·n = (1 + e) m2/(m1 + m2) (v2 − v1)·n and x2·n − v2·n = "
@@ -51,7 +54,8 @@ void kernel_outputs(Recorder& record, const Setting& setting, const Selection& s
     });
     // The multiples of d: (x1 − v1) = λ1 d in the direction form derived from the unit form, λ1 read off
     // the first component (beyond.any_normal.direction_form checks every component).
-    const Vec x2_unit = add(space.v2, scale(second_coefficient_e * dot(subtract(space.v2, space.v1), n_of_d), n_of_d));
+    const Vec x2_unit =
+        add(space.v2, scale(second_coefficient_e * dot(subtract(space.v2, space.v1), n_of_d), n_of_d));
     const lst multiples{GiNaC::normal((from_unit_form.op(0) - space.v1[0]) / direction.d[0]),
                         GiNaC::normal((x2_unit[0] - space.v2[0]) / direction.d[0])};
     const lst printed_multiples{(1 + e) * s.m2 / (s.m1 + s.m2) * direction_speed_in_components,
@@ -59,9 +63,11 @@ void kernel_outputs(Recorder& record, const Setting& setting, const Selection& s
     record.add({
         .id = "kernel.direction_velocity_change",
         .statement = "Along a direction d (not necessarily unit) the velocities change by λ1 d and λ2 d with "
-                     "λ1 = (1 + e) m2/(m1 + m2) ((v2 − v1)·d)/(d·d) and λ2 = −(1 + e) m1/(m1 + m2) ((v2 − v1)·d)/(d·d).",
-        .method = "n = d/√(d·d) substituted into the unit form (3-D components); (x_i − v_i)/d read off the first "
-                  "component; identity after normal()",
+                     "λ1 = (1 + e) m2/(m1 + m2) ((v2 − v1)·d)/(d·d) and λ2 = −(1 + e) m1/(m1 + m2) ((v2 − "
+                     "v1)·d)/(d·d).",
+        .method =
+            "n = d/√(d·d) substituted into the unit form (3-D components); (x_i − v_i)/d read off the first "
+            "component; identity after normal()",
         .comparison = Comparison::identity,
         .paper_expression = printed_multiples,
         .derived_expression = multiples,
@@ -79,10 +85,12 @@ void kernel_outputs(Recorder& record, const Setting& setting, const Selection& s
                                   -(1 + e) * s.m1 / (s.m1 + s.m2) * printed_clamp};
     record.add({
         .id = "kernel.approaching_direction_velocity_change",
-        .statement = "Resolving only approaching balls along d: λ1 and λ2 with ((v2 − v1)·d)/(d·d) replaced by "
-                     "σ = (s − |s|)/2 of it, which is the collision when (v2 − v1)·d < 0 and no change otherwise.",
-        .method = "the multiples of kernel.direction_velocity_change divided by their speed, times the clamped "
-                  "speed of beyond.approaching.kernel_form; identity after normal()",
+        .statement =
+            "Resolving only approaching balls along d: λ1 and λ2 with ((v2 − v1)·d)/(d·d) replaced by "
+            "σ = (s − |s|)/2 of it, which is the collision when (v2 − v1)·d < 0 and no change otherwise.",
+        .method =
+            "the multiples of kernel.direction_velocity_change divided by their speed, times the clamped "
+            "speed of beyond.approaching.kernel_form; identity after normal()",
         .comparison = Comparison::identity,
         .paper_expression = printed_approaching,
         .derived_expression = approaching,
@@ -92,7 +100,6 @@ void kernel_outputs(Recorder& record, const Setting& setting, const Selection& s
         .depends_on = {"kernel.direction_velocity_change", "beyond.approaching.kernel_form"},
     });
   }
-
 }
 
 }  // namespace billiards::derive::parkin2023

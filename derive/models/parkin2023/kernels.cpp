@@ -26,7 +26,8 @@ std::vector<KernelStep> steps_then(std::vector<KernelStep> first, const std::vec
 // The names of the collision kernels' steps.
 struct ChangeNames {
   GiNaC::symbol first_ratio{"first_mass_ratio"}, second_ratio{"second_mass_ratio"};
-  GiNaC::symbol first_coefficient{"first_impulse_coefficient"}, second_coefficient{"second_impulse_coefficient"};
+  GiNaC::symbol first_coefficient{"first_impulse_coefficient"},
+      second_coefficient{"second_impulse_coefficient"};
   GiNaC::symbol first_change{"first_change"}, second_change{"second_change"};
   GiNaC::symbol first_factor{"first_factor"}, second_factor{"second_factor"};
   GiNaC::symbol first_multiplier{"first_multiplier"}, second_multiplier{"second_multiplier"};
@@ -39,12 +40,14 @@ struct ChangeNames {
 // product whose two factors are chosen, never computed, under the condition: so no operation
 // depends on it, and compilers vectorise a loop of kernels with plain selects (GCC would not
 // if-convert a division or product made conditional, short of AVX-512 masks).
-std::vector<KernelStep> change_steps(const ChangeNames& names, const MassRatios& ratios, const ex& restitution,
-                                     const ex& by) {
+std::vector<KernelStep> change_steps(const ChangeNames& names, const MassRatios& ratios,
+                                     const ex& restitution, const ex& by) {
   const Symbols& s = symbols();
   const ex e = s.restitution, speed = s.relative_normal_speed;
-  const ex first = ratios.first_ratio_form.subs(lst{e == restitution, s.first_mass_ratio == names.first_ratio});
-  const ex second = ratios.second_ratio_form.subs(lst{e == restitution, s.second_mass_ratio == names.second_ratio});
+  const ex first =
+      ratios.first_ratio_form.subs(lst{e == restitution, s.first_mass_ratio == names.first_ratio});
+  const ex second =
+      ratios.second_ratio_form.subs(lst{e == restitution, s.second_mass_ratio == names.second_ratio});
   // In the small-mass form (1 + e) s/(m1 + m2) is computed first and the light mass multiplies it
   // last: the product then rounds once, even into the subnormal range, where m2 (1 + e) s would
   // round at every step; and (1 + e) s/(m1 + m2) cannot overflow there (c1 below the smallest
@@ -57,25 +60,29 @@ std::vector<KernelStep> change_steps(const ChangeNames& names, const MassRatios&
     return Guard{coefficient < smallest_normal(), alternative, Guard::Kind::same_value,
                  "beyond.immovable.small_mass_form"};
   };
-  return {
-      {names.first_ratio, s.m1 / s.m2},
-      {names.second_ratio, s.m2 / s.m1},
-      {names.first_coefficient, magnitude(first)},
-      {names.second_coefficient, magnitude(second)},
-      {names.per_mass, per_mass},
-      // The small-mass form's factors, read off the derived form: per_mass times the light mass.
-      {names.first_factor, names.first_coefficient, {tiny(names.first_coefficient, names.per_mass)}},
-      {names.first_multiplier, by, {tiny(names.first_coefficient, GiNaC::normal(first_small / names.per_mass))}},
-      {names.first_change, names.first_factor * names.first_multiplier},
-      {names.second_factor, names.second_coefficient, {tiny(names.second_coefficient, names.per_mass)}},
-      {names.second_multiplier, by, {tiny(names.second_coefficient, GiNaC::normal(second_small / names.per_mass))}},
-      {names.second_change, names.second_factor * names.second_multiplier}};
+  return {{names.first_ratio, s.m1 / s.m2},
+          {names.second_ratio, s.m2 / s.m1},
+          {names.first_coefficient, magnitude(first)},
+          {names.second_coefficient, magnitude(second)},
+          {names.per_mass, per_mass},
+          // The small-mass form's factors, read off the derived form: per_mass times the light mass.
+          {names.first_factor, names.first_coefficient, {tiny(names.first_coefficient, names.per_mass)}},
+          {names.first_multiplier,
+           by,
+           {tiny(names.first_coefficient, GiNaC::normal(first_small / names.per_mass))}},
+          {names.first_change, names.first_factor * names.first_multiplier},
+          {names.second_factor, names.second_coefficient, {tiny(names.second_coefficient, names.per_mass)}},
+          {names.second_multiplier,
+           by,
+           {tiny(names.second_coefficient, GiNaC::normal(second_small / names.per_mass))}},
+          {names.second_change, names.second_factor * names.second_multiplier}};
 }
 
 }  // namespace
 
 std::vector<Kernel> collision_kernels(const Setting& setting, const Selection&, const KernelPieces& pieces,
-                                      const Restitution&, const MassRatios& ratios, const Direction& direction) {
+                                      const Restitution&, const MassRatios& ratios,
+                                      const Direction& direction) {
   const Symbols& s = symbols();
   const Space& space = setting.space;
   const ex e = s.restitution;
@@ -170,38 +177,38 @@ std::vector<Kernel> reference_kernels(const Quadratic& quadratic) {
   const Symbols& s = symbols();
   const ex &A = quadratic.A, &B = quadratic.B, &C = quadratic.C, &x2n_solved = quadratic.x2n_solved;
   std::vector<Kernel> kernels;
-// one); x2·n from momentum.
-{
-  const GiNaC::symbol a_name("quadratic_a"), b_name("quadratic_b"), c_name("quadratic_c");
-  const GiNaC::symbol d_name("discriminant"), root_name("signed_root"), x1_name("x1n"), x2_name("x2n");
-  kernels.push_back({
-      .name = "raw_normal_velocity_change",
-      .brief = "For the benchmark only: the paper's derivation before simplification. The quadratic in "
-               "x1·n with its coefficients as read off, D = B² − 4AC, the root (−B ± √D)/(2A) with the "
-               "sign of (v2 − v1)·n (the collision root), x2·n from momentum; returns the changes x1·n − "
-               "v1·n and x2·n − v2·n. Finite masses only.",
-      .parameters = {s.m1, s.m2, s.v1n, s.v2n},
-      .steps = {{a_name, A},
-                {b_name, B},
-                {c_name, C},
-                // D ≥ 0 exactly (discriminant.nonnegative); rounding can make it negative when the
-                // contact is nearly tangent, and √ of that would be NaN.
-                {d_name,
-                 b_name * b_name - 4 * a_name * c_name,
-                 {{d_name < 0, 0, Guard::Kind::unreachable, "discriminant.nonnegative"}}},
-                {root_name,
-                 GiNaC::sqrt(d_name),
-                 {{s.v2n - s.v1n < 0, -GiNaC::sqrt(d_name), Guard::Kind::piecewise,
-                   "roots.quadratic_formula.relative_speed_negative"}}},
-                {x1_name, (-b_name + root_name) / (2 * a_name)},
-                {x2_name, x2n_solved.subs(s.x1n == x1_name)}},
-      .outputs = {x1_name - s.v1n, x2_name - s.v2n},
-      .equals = "kernel.elastic_normal_velocity_change",
-      .claims = {"quadratic.coefficient_a", "quadratic.coefficient_b", "quadratic.coefficient_c",
-                 "discriminant.paper_form", "roots.quadratic_formula.relative_speed_nonnegative",
-                 "quadratic.x2_from_momentum"},
-  });
-}
+  // one); x2·n from momentum.
+  {
+    const GiNaC::symbol a_name("quadratic_a"), b_name("quadratic_b"), c_name("quadratic_c");
+    const GiNaC::symbol d_name("discriminant"), root_name("signed_root"), x1_name("x1n"), x2_name("x2n");
+    kernels.push_back({
+        .name = "raw_normal_velocity_change",
+        .brief = "For the benchmark only: the paper's derivation before simplification. The quadratic in "
+                 "x1·n with its coefficients as read off, D = B² − 4AC, the root (−B ± √D)/(2A) with the "
+                 "sign of (v2 − v1)·n (the collision root), x2·n from momentum; returns the changes x1·n − "
+                 "v1·n and x2·n − v2·n. Finite masses only.",
+        .parameters = {s.m1, s.m2, s.v1n, s.v2n},
+        .steps = {{a_name, A},
+                  {b_name, B},
+                  {c_name, C},
+                  // D ≥ 0 exactly (discriminant.nonnegative); rounding can make it negative when the
+                  // contact is nearly tangent, and √ of that would be NaN.
+                  {d_name,
+                   b_name * b_name - 4 * a_name * c_name,
+                   {{d_name < 0, 0, Guard::Kind::unreachable, "discriminant.nonnegative"}}},
+                  {root_name,
+                   GiNaC::sqrt(d_name),
+                   {{s.v2n - s.v1n < 0, -GiNaC::sqrt(d_name), Guard::Kind::piecewise,
+                     "roots.quadratic_formula.relative_speed_negative"}}},
+                  {x1_name, (-b_name + root_name) / (2 * a_name)},
+                  {x2_name, x2n_solved.subs(s.x1n == x1_name)}},
+        .outputs = {x1_name - s.v1n, x2_name - s.v2n},
+        .equals = "kernel.elastic_normal_velocity_change",
+        .claims = {"quadratic.coefficient_a", "quadratic.coefficient_b", "quadratic.coefficient_c",
+                   "discriminant.paper_form", "roots.quadratic_formula.relative_speed_nonnegative",
+                   "quadratic.x2_from_momentum"},
+    });
+  }
   return kernels;
 }
 
@@ -229,11 +236,12 @@ Kernel time_of_impact_kernel(const TimeOfImpact& toi) {
   const lst in_kernel{qb == b_in_dots, qc == gap};  // the stable form c/(√D − b) has no a
   // The dot products in the claims' terms, inverting what was read off: b = pv, c = pp − r², a = vv,
   // D = a r² − |p × w|², and √D for the claims' s.
-  const GiNaC::exmap time_terms{{pv, qb},
-                                {pp, GiNaC::lsolve(c_in_dots == qc, pp)},
-                                {vv, GiNaC::lsolve(a_in_dots == qa, vv)},
-                                {cross_squared, GiNaC::lsolve(lagrange_in_dots.subs(vv == qa) == qd, cross_squared)},
-                                {root_of_d, GiNaC::sqrt(qd)}};
+  const GiNaC::exmap time_terms{
+      {pv, qb},
+      {pp, GiNaC::lsolve(c_in_dots == qc, pp)},
+      {vv, GiNaC::lsolve(a_in_dots == qa, vv)},
+      {cross_squared, GiNaC::lsolve(lagrange_in_dots.subs(vv == qa) == qd, cross_squared)},
+      {root_of_d, GiNaC::sqrt(qd)}};
   using Kind = Guard::Kind;
   return {
       .name = "time_of_impact",

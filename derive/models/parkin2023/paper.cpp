@@ -14,7 +14,8 @@ ModelInfo info() {
   model.scope = "frictionless, spinless balls in instantaneous contact (perfectly elastic)";
   model.notation =
       "Vectors in components are written $v_{1,x}$ as `v1_x`; $(v_1 \\cdot n)$ is the scalar $v_1 \\cdot n$; "
-      "$\\mathbf{v}_1$ names the vector itself. Where $n \\cdot n = 1$ is needed it is imposed by substituting "
+      "$\\mathbf{v}_1$ names the vector itself. Where $n \\cdot n = 1$ is needed it is imposed by "
+      "substituting "
       "$n_\\text{last}^2 \\to 1 - \\sum n_i^2$, never by choosing a numeric normal, and the claim says so "
       "(\"Under: n·n = 1\").";
   model.remarks = {

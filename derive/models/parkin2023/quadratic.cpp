@@ -135,9 +135,12 @@ Quadratic the_quadratic(Recorder& record, const Setting& setting) {
       });
     }
   }
-  return {GiNaC::ex_to<lst>(paper_shorthand), x2n_solved, quadratic, quadratic.coeff(s.x1n, 2), quadratic.coeff(s.x1n, 1),
+  return {GiNaC::ex_to<lst>(paper_shorthand),
+          x2n_solved,
+          quadratic,
+          quadratic.coeff(s.x1n, 2),
+          quadratic.coeff(s.x1n, 1),
           quadratic.coeff(s.x1n, 0)};
-
 }
 
 }  // namespace billiards::derive::parkin2023

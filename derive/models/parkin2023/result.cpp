@@ -96,7 +96,6 @@ void the_collision_formula(Recorder& record, const Setting& setting, const Discr
         .depends_on = {"result.x1_simplified_form", "result.x2_by_symmetry"},
     });
   }
-
 }
 
 }  // namespace billiards::derive::parkin2023

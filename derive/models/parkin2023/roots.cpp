@@ -72,7 +72,6 @@ Roots the_roots(Recorder& record, const Quadratic& quadratic, const Discriminant
     return GiNaC::normal(in_case(root, +1).subs(s.relative_normal_speed == relative));
   };
   return {without_abs(roots.op(0)), without_abs(roots.op(1))};
-
 }
 
 }  // namespace billiards::derive::parkin2023

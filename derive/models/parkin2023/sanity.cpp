@@ -88,7 +88,6 @@ void sanity_checks(Recorder& record, const Setting& setting, const Selection& se
         .depends_on = {"sanity.equal_masses_at_rest.x2"},
     });
   }
-
 }
 
 }  // namespace billiards::derive::parkin2023

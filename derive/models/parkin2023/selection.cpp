@@ -54,8 +54,7 @@ Selection choosing_the_root(Recorder& record, const Quadratic& quadratic, const 
   // The "+" root is the collision only for balls that approach: with n from ball 1 to ball 2 and
   // s = (v2 − v1)·n = −σ (σ > 0, approaching), the closing rate afterwards is (x2 − x1)·n = σ ≥ 0.
   const GiNaC::possymbol approach("sigma", "\\sigma");
-  const ex separation_after =
-      GiNaC::normal((x2n_selected - plus_root).subs(s.v2n == s.v1n - approach));
+  const ex separation_after = GiNaC::normal((x2n_selected - plus_root).subs(s.v2n == s.v1n - approach));
   record.add({
       .id = "selection.plus_root_separates_only_approaching_balls",
       .paper = "\"the case we care about must be the positive case\"",

@@ -175,7 +175,7 @@ KernelPieces what_the_emitter_prints(Recorder& record, const Selection& selectio
 
 // Beyond the paper.
 struct Restitution {
-  ex x1n, x2n;                           ///< the normal components for restitution e
+  ex x1n, x2n;                               ///< the normal components for restitution e
   ex first_coefficient, second_coefficient;  ///< (x_i·n − v_i·n)/((v2 − v1)·n)
 };
 Restitution restitution(Recorder& record, const Definitions& d);
@@ -187,9 +187,9 @@ struct MassRatios {
 MassRatios immovable_bodies(Recorder& record, const Restitution& restitution);
 
 struct Direction {
-  Vec d;              ///< a direction, not necessarily unit (3-D components)
-  ex dd;              ///< d·d
-  Vec unit;           ///< d/√(d·d)
+  Vec d;               ///< a direction, not necessarily unit (3-D components)
+  ex dd;               ///< d·d
+  Vec unit;            ///< d/√(d·d)
   lst from_unit_form;  ///< x1 with n = d/√(d·d)
 };
 Direction any_direction(Recorder& record, const Setting& setting, const Restitution& restitution);
@@ -216,13 +216,14 @@ TimeOfImpact time_of_impact_quadratic(Recorder& record);
 void time_of_impact_cases(Recorder& record, const TimeOfImpact& toi);
 
 void kernel_outputs(Recorder& record, const Setting& setting, const Selection& selection,
-                    const Restitution& restitution, const Direction& direction, const Approaching& approaching);
+                    const Restitution& restitution, const Direction& direction,
+                    const Approaching& approaching);
 
 // ---- The kernels ----------------------------------------------------------------------------------
 
-std::vector<Kernel> collision_kernels(const Setting& setting, const Selection& selection, const KernelPieces& pieces,
-                                      const Restitution& restitution, const MassRatios& ratios,
-                                      const Direction& direction);
+std::vector<Kernel> collision_kernels(const Setting& setting, const Selection& selection,
+                                      const KernelPieces& pieces, const Restitution& restitution,
+                                      const MassRatios& ratios, const Direction& direction);
 Kernel time_of_impact_kernel(const TimeOfImpact& toi);
 std::vector<Kernel> reference_kernels(const Quadratic& quadratic);
 

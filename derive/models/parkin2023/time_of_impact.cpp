@@ -93,9 +93,23 @@ TimeOfImpact time_of_impact_quadratic(Recorder& record) {
   const ex rationalized_numerator =
       reduce_modulo(((-qb - root_of_d) * (root_of_d - qb)).expand(), root_relation);
   const ex stable_root = GiNaC::normal(rationalized_numerator / (qa * (root_of_d - qb)));
-  return {p,     w,       contact_distance, coefficient_a, coefficient_b, coefficient_c, quarter_discriminant,
-          cross, qa,      root_of_d,        qb,            qc,            qd,            root_relation,
-          earlier_root, later_root, stable_root};
+  return {p,
+          w,
+          contact_distance,
+          coefficient_a,
+          coefficient_b,
+          coefficient_c,
+          quarter_discriminant,
+          cross,
+          qa,
+          root_of_d,
+          qb,
+          qc,
+          qd,
+          root_relation,
+          earlier_root,
+          later_root,
+          stable_root};
 }
 
 void time_of_impact_cases(Recorder& record, const TimeOfImpact& toi) {
@@ -133,7 +147,7 @@ void time_of_impact_cases(Recorder& record, const TimeOfImpact& toi) {
       .paper_display = lst{qc / qa, -2 * qb / qa},
       .derived_display = lst{earlier_root * later_root, earlier_root + later_root},
       .depends_on = {"beyond.time_of_impact.roots"},
-        .cases = {{lst{qb >= 0}, infinity()}},
+      .cases = {{lst{qb >= 0}, infinity()}},
   });
   record.add({
       .id = "beyond.time_of_impact.grazing",
@@ -148,7 +162,7 @@ void time_of_impact_cases(Recorder& record, const TimeOfImpact& toi) {
                                 GiNaC::normal(qb + qa * earlier_root).subs(root_of_d == 0)},
       .paper_display = lst{0, 0},
       .depends_on = {"beyond.time_of_impact.first_contact_approaches", "beyond.approaching.kernel_form"},
-        .cases = {{lst{qd <= 0, qb < 0}, infinity()}},
+      .cases = {{lst{qd <= 0, qb < 0}, infinity()}},
   });
   {
     const GiNaC::possymbol overlap("gamma", "\\gamma"), approach("beta", "\\beta");
@@ -165,10 +179,9 @@ void time_of_impact_cases(Recorder& record, const TimeOfImpact& toi) {
         .paper_display = 0,
         .derived_display = negated_time,
         .depends_on = {"beyond.time_of_impact.stable_form"},
-        .cases = {{lst{qc < 0, qd > 0, qb < 0}, 0}},
+        .cases = {{lst{qc<0, qd> 0, qb < 0}, 0}},
     });
   }
-
 }
 
 }  // namespace billiards::derive::parkin2023

@@ -56,8 +56,9 @@ constexpr void require_vectors() {
   (require_vector<Rest>(), ...);
   static_assert((std::is_same_v<typename First::Scalar, typename Rest::Scalar> && ...),
                 "billiards: all vectors must have the same scalar type (all float or all double)");
-  static_assert(((static_cast<int>(First::RowsAtCompileTime) == static_cast<int>(Rest::RowsAtCompileTime)) && ...),
-                "billiards: all vectors must have the same dimension");
+  static_assert(
+      ((static_cast<int>(First::RowsAtCompileTime) == static_cast<int>(Rest::RowsAtCompileTime)) && ...),
+      "billiards: all vectors must have the same dimension");
 }
 
 /// `d` scaled by the power of two that puts its largest component in [0.5, 1). The scaling is exact
