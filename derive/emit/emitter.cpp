@@ -158,7 +158,7 @@ std::string signature(const std::string& head, const std::vector<std::string>& p
 
 // Every kernel as a documented `template <typename Scalar>` function: its brief, the audit claims it
 // implements, its operation count and its body.
-std::string functions(const std::vector<Kernel>& kernels) {
+std::string functions(const std::vector<Kernel>& kernels, const std::string& pair_result) {
   std::ostringstream out;
   for (const Kernel& kernel : kernels) {
     const EmittedKernel emitted = emit_kernel(kernel);
@@ -170,7 +170,7 @@ std::string functions(const std::vector<Kernel>& kernels) {
     for (const ex& parameter : kernel.parameters) {
       parameters.push_back("Scalar " + GiNaC::ex_to<GiNaC::symbol>(parameter).get_name());
     }
-    const std::string result = kernel.outputs.size() == 1 ? "Scalar" : "NormalVelocityChange<Scalar>";
+    const std::string result = kernel.outputs.size() == 1 ? "Scalar" : pair_result + "<Scalar>";
     out << "\n"
         << doc_comment(kernel.brief) << "///\n"
         << doc_comment("Proven equal to the derived expression of the audit claim `" + kernel.equals +
@@ -313,6 +313,7 @@ std::string preamble(const std::string& description) {
 std::string kernels_header(const Derivation& derivation, const std::string& audit_text) {
   const bool runtime_math =
       std::any_of(derivation.kernels.begin(), derivation.kernels.end(), needs_runtime_math);
+  const ModelInfo::PairResult& pair = derivation.model.pair_result;
   std::ostringstream out;
   out << preamble("// The scalar kernels of " + derivation.model.citation +
                   ", printed from the\n"
@@ -339,13 +340,10 @@ std::string kernels_header(const Derivation& derivation, const std::string& audi
       << "#endif\n"
       << "#endif\n\n"
       << "namespace " << derivation.model.kernels_namespace << " {\n\n"
-      << doc_comment(
-             "The changes x1·n − v1·n and x2·n − v2·n of the two balls' velocities along the contact "
-             "normal n.")
-      << "template <typename Scalar>\n"
-      << "struct NormalVelocityChange {\n"
-      << "  Scalar first;   ///< x1·n − v1·n\n"
-      << "  Scalar second;  ///< x2·n − v2·n\n"
+      << doc_comment(pair.brief) << "template <typename Scalar>\n"
+      << "struct " << pair.name << " {\n"
+      << "  Scalar first;   ///< " << pair.first << "\n"
+      << "  Scalar second;  ///< " << pair.second << "\n"
       << "};\n\n"
       << "/// |x|, constexpr (std::abs is not before C++23).\n"
       << "template <typename Scalar>\n"
@@ -378,7 +376,7 @@ std::string kernels_header(const Derivation& derivation, const std::string& audi
       << "BILLIARDS_HOST_DEVICE constexpr double infinity<double>() noexcept {\n"
       << "  return __builtin_huge_val();\n"
       << "}\n";
-  out << functions(derivation.kernels) << "\n}  // namespace " << derivation.model.kernels_namespace << "\n";
+  out << functions(derivation.kernels, derivation.model.pair_result.name) << "\n}  // namespace " << derivation.model.kernels_namespace << "\n";
   return with_fingerprint(out.str(), audit_text);
 }
 
@@ -395,8 +393,8 @@ std::string reference_kernels_header(const Derivation& derivation, const std::st
       << "#include <" << derivation.model.kernels_path << ">\n\n"
       << "#include <cmath>\n\n"
       << "namespace " << derivation.model.reference_namespace << " {\n\n"
-      << "using kernels::NormalVelocityChange;\n"
-      << functions(derivation.reference_kernels) << "\n}  // namespace "
+      << "using " << derivation.model.kernels_namespace << "::" << derivation.model.pair_result.name << ";\n"
+      << functions(derivation.reference_kernels, derivation.model.pair_result.name) << "\n}  // namespace "
       << derivation.model.reference_namespace << "\n";
   return with_fingerprint(out.str(), audit_text);
 }

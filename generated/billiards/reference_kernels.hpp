@@ -4,7 +4,7 @@
 // derivation of S. T. Parkin, "Billiard Ball Physics", 2023 before simplification,
 // printed from the same derived expressions as billiards/kernels.hpp and proven the same way.
 //
-// Fingerprint: fnv1a64:1a03f7b76939059b (of this header and the audit)
+// Fingerprint: fnv1a64:c3a823bda7fadcf3 (of this header and the audit)
 #pragma once
 
 #include <billiards/kernels.hpp>
@@ -13,7 +13,7 @@
 
 namespace billiards::reference_kernels {
 
-using kernels::NormalVelocityChange;
+using billiards::kernels::NormalVelocityChange;
 
 /// For the benchmark only: the paper's derivation before simplification. The quadratic in x1·n with
 /// its coefficients as read off, D = B² − 4AC, the root (−B ± √D)/(2A) with the sign of (v2 −

@@ -1,11 +1,14 @@
 // The derivation of the paper: every claim verified, one assumption, and perturbed definitions caught.
 #include "audit/audit.hpp"
+#include "run.hpp"
 #include "models/parkin2023/paper.hpp"
 
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <filesystem>
+#include <iostream>
 #include <map>
 #include <regex>
 #include <set>
@@ -280,4 +283,37 @@ TEST_CASE("A slip that GiNaC cannot compare fails its claims and the run goes on
   }
   CHECK_NOTHROW(audit_markdown(derivation));
   CHECK_NOTHROW(audit_json(derivation));
+}
+
+TEST_CASE("A slip runs billiards-derive to the end: the audit written, every failed claim named, exit 1",
+          "[derive][perturbation]") {
+  namespace fs = std::filesystem;
+  parkin2023::Definitions half_dropped, plus_four_ac;
+  half_dropped.kinetic_coefficient_2 = 1;        // K(a, b) = ½ m1 a² + m2 b²
+  plus_four_ac.discriminant_ac_coefficient = 4;  // B² + 4AC
+  for (const parkin2023::Definitions& slip : {half_dropped, plus_four_ac}) {
+    const fs::path out = fs::temp_directory_path() / "billiards-slip";
+    fs::remove_all(out);
+    const std::vector<ModelEntry> models = {{"parkin2023", [slip] { return parkin2023::derive(slip); }}};
+    const std::string folder = out.string();
+    const char* argv[] = {"billiards-derive", "--out", folder.c_str()};
+    std::ostringstream out_text, err_text;
+    std::streambuf* const old_out = std::cout.rdbuf(out_text.rdbuf());
+    std::streambuf* const old_err = std::cerr.rdbuf(err_text.rdbuf());
+    const int status = derive_main(3, argv, models);
+    std::cout.rdbuf(old_out);
+    std::cerr.rdbuf(old_err);
+    CHECK(status == exit_claims_failed);
+    CHECK(fs::exists(out / "AUDIT.md"));
+    CHECK(fs::exists(out / "audit.json"));
+    CHECK_FALSE(fs::exists(out / "billiards" / "kernels.hpp"));
+    const Derivation derivation = parkin2023::derive(slip);
+    CHECK(summarize(derivation.claims).failed > 0);
+    for (const Claim& claim : derivation.claims) {
+      INFO(claim.id);
+      if (claim.verdict == Verdict::failed) CHECK(err_text.str().find("FAILED " + claim.id + ":") != std::string::npos);
+    }
+    CHECK(err_text.str().find("KERNEL NOT PROVEN") != std::string::npos);
+    fs::remove_all(out);
+  }
 }

@@ -40,6 +40,10 @@ ModelInfo info() {
       "(`selection.plus_root_separates_only_approaching_balls`); for separating balls nothing happens "
       "(`beyond.approaching.resolve_only_approaching`).",
   };
+  model.pair_result = {"NormalVelocityChange",
+                       "The changes x1·n − v1·n and x2·n − v2·n of the two balls' velocities along the contact "
+                       "normal n.",
+                       "x1·n − v1·n", "x2·n − v2·n"};
   model.reference_path = "billiards/reference_kernels.hpp";
   model.kernel_list_path = "billiards/kernel_list.hpp";
   return model;
