@@ -1,0 +1,116 @@
+// The kernel validation on small kernels: each rule proven able to fail, and to pass.
+#include "core/claim.hpp"
+#include "core/named_constants.hpp"
+#include "emit/validate.hpp"
+
+#include <catch2/catch.hpp>
+
+using namespace billiards::derive;
+using GiNaC::ex;
+using GiNaC::lst;
+
+namespace {
+
+const GiNaC::possymbol a("a"), b("b");
+const GiNaC::realsymbol x("x");
+
+Claim verified(const std::string& id, const ex& derived, std::vector<Case> cases = {}) {
+  Claim claim;
+  claim.id = id;
+  claim.comparison = Comparison::identity;
+  claim.paper_expression = derived;
+  claim.derived_expression = derived;
+  claim.cases = std::move(cases);
+  check(claim);
+  REQUIRE(claim.verdict == Verdict::verified);
+  return claim;
+}
+
+// A kernel computing a/(a + b) · x, with a guarded step.
+Kernel share_kernel() {
+  const GiNaC::symbol total("total"), share("share");
+  Kernel kernel;
+  kernel.name = "share";
+  kernel.parameters = {a, b, x};
+  kernel.steps = {{total, a + b}, {share, a / total}};
+  kernel.outputs = {share * x};
+  kernel.equals = "test.share";
+  return kernel;
+}
+
+bool mentions(const std::vector<KernelProblem>& problems, const std::string& text) {
+  for (const KernelProblem& problem : problems) {
+    if ((problem.kernel + " " + problem.claim + " " + problem.reason).find(text) != std::string::npos) return true;
+  }
+  return false;
+}
+
+}  // namespace
+
+TEST_CASE("A kernel is validated against the claims", "[derive][validate]") {
+  std::vector<Claim> claims = {verified("test.share", a * x / (a + b))};
+  Kernel kernel = share_kernel();
+
+  SECTION("outputs equal to the claim's derived expression: proven") { CHECK(validate_kernel(kernel, claims).empty()); }
+  SECTION("an output that differs is named with the claim and the residual") {
+    kernel.outputs = {-kernel.outputs[0]};
+    const auto problems = validate_kernel(kernel, claims);
+    REQUIRE(problems.size() == 1);
+    CHECK(problems[0].kernel == "share");
+    CHECK(problems[0].claim == "test.share");
+  }
+  SECTION("a symbol that is no parameter, earlier step or named constant") {
+    kernel.steps[1].expression = a / GiNaC::symbol("later");
+    CHECK(mentions(validate_kernel(kernel, claims), "reads later"));
+  }
+  SECTION("a claim that is missing or not verified") {
+    kernel.claims = {"test.missing"};
+    CHECK(mentions(validate_kernel(kernel, claims), "does not record"));
+    Claim failed = verified("test.failed", 0);
+    failed.verdict = Verdict::failed;
+    claims.push_back(failed);
+    kernel.claims = {"test.failed"};
+    CHECK(mentions(validate_kernel(kernel, claims), "failed, not verified"));
+  }
+  SECTION("a same-value guard: its alternative must keep the outputs equal") {
+    claims.push_back(verified("test.other_form", 0));
+    const GiNaC::symbol share = kernel.steps[1].name;
+    kernel.steps[1].guards = {{share < smallest_normal(), 1 - b / (a + b), Guard::Kind::same_value, "test.other_form"}};
+    CHECK(validate_kernel(kernel, claims).empty());
+    kernel.steps[1].guards[0].alternative = 1 - a / (a + b);
+    CHECK(mentions(validate_kernel(kernel, claims), "under its guard"));
+  }
+  SECTION("a piecewise guard must be a case its claim states") {
+    claims.push_back(verified("test.no_share", 0, {{lst{x < 0}, 0}}));
+    const GiNaC::symbol share = kernel.steps[1].name;
+    kernel.steps[1].guards = {{x < 0, 0, Guard::Kind::piecewise, "test.no_share"}};
+    CHECK(validate_kernel(kernel, claims).empty());
+    kernel.steps[1].guards[0].condition = x <= 0;
+    CHECK(mentions(validate_kernel(kernel, claims), "no case the claim states"));
+    kernel.steps[1].guards[0].condition = 0 > x;  // the same condition, mirrored
+    CHECK(validate_kernel(kernel, claims).empty());
+    kernel.steps[1].guards[0].alternative = 1;
+    CHECK(mentions(validate_kernel(kernel, claims), "no case the claim states"));
+  }
+  SECTION("an unreachable guard must read x < 0 for the x a sign claim shows to be ≥ 0") {
+    Claim sign;
+    sign.id = "test.sign";
+    sign.comparison = Comparison::nonnegative;
+    sign.paper_expression = 0;
+    sign.derived_expression = a + b;
+    check(sign);
+    REQUIRE(sign.verdict == Verdict::verified);
+    claims.push_back(sign);
+    const GiNaC::symbol total = kernel.steps[0].name;
+    kernel.steps[0].guards = {{total < 0, 1, Guard::Kind::unreachable, "test.sign"}};
+    CHECK(validate_kernel(kernel, claims).empty());
+    kernel.steps[0].guards[0].condition = total - 1 < 0;
+    CHECK(mentions(validate_kernel(kernel, claims), "x < 0"));
+  }
+  SECTION("the kernel's parameters in the claim's terms") {
+    const GiNaC::realsymbol y("y");
+    claims = {verified("test.share", a * (y + 1) / (a + b))};
+    kernel.in_claim_terms = {{x, y + 1}};
+    CHECK(validate_kernel(kernel, claims).empty());
+  }
+}
