@@ -101,17 +101,7 @@ std::string print_condition(const ex& condition) {
     throw std::invalid_argument("a guard's condition must be a relational, not " +
                                 print(condition, Notation::text));
   }
-  static const std::pair<unsigned, const char*> operators[] = {
-      {GiNaC::info_flags::relation_equal, " == "},  {GiNaC::info_flags::relation_not_equal, " != "},
-      {GiNaC::info_flags::relation_less, " < "},    {GiNaC::info_flags::relation_less_or_equal, " <= "},
-      {GiNaC::info_flags::relation_greater, " > "}, {GiNaC::info_flags::relation_greater_or_equal, " >= "},
-  };
-  for (const auto& [flag, op] : operators) {
-    if (condition.info(flag)) {
-      return print(condition.lhs(), Notation::cpp) + op + print(condition.rhs(), Notation::cpp);
-    }
-  }
-  throw std::logic_error("unknown relational operator");
+  return print(condition, Notation::cpp);
 }
 
 // True when the kernel calls a function that is not constexpr (std::sqrt).
@@ -376,7 +366,8 @@ std::string kernels_header(const Derivation& derivation, const std::string& audi
       << "BILLIARDS_HOST_DEVICE constexpr double infinity<double>() noexcept {\n"
       << "  return __builtin_huge_val();\n"
       << "}\n";
-  out << functions(derivation.kernels, derivation.model.pair_result.name) << "\n}  // namespace " << derivation.model.kernels_namespace << "\n";
+  out << functions(derivation.kernels, derivation.model.pair_result.name) << "\n}  // namespace "
+      << derivation.model.kernels_namespace << "\n";
   return with_fingerprint(out.str(), audit_text);
 }
 

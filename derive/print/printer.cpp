@@ -331,9 +331,7 @@ std::string print_cpp_leaf(const ex& e) {
 std::string print_any(const ex& e, Notation notation) {
   if (GiNaC::is_a<GiNaC::add>(e)) return print_sum(e, notation);
   if (GiNaC::is_a<GiNaC::mul>(e) || GiNaC::is_a<GiNaC::power>(e)) return print_signed_product(e, notation);
-  if (notation == Notation::cpp) return print_cpp_leaf(e);
-  if (GiNaC::is_a<numeric>(e)) return ginac_print(e, notation);
-  if (GiNaC::is_a<GiNaC::lst>(e)) return print_list(e, notation);
+  // A relation, in C++ a condition: lhs op rhs.
   if (GiNaC::is_a<GiNaC::relational>(e)) {
     const bool latex = notation == Notation::latex;
     const char* op = latex ? " = " : " == ";
@@ -344,6 +342,9 @@ std::string print_any(const ex& e, Notation notation) {
     if (e.info(GiNaC::info_flags::relation_greater_or_equal)) op = latex ? " \\geq " : " >= ";
     return print_any(e.lhs(), notation) + op + print_any(e.rhs(), notation);
   }
+  if (notation == Notation::cpp) return print_cpp_leaf(e);
+  if (GiNaC::is_a<numeric>(e)) return ginac_print(e, notation);
+  if (GiNaC::is_a<GiNaC::lst>(e)) return print_list(e, notation);
   if (GiNaC::is_a<GiNaC::function>(e)) {
     const std::string name = GiNaC::ex_to<GiNaC::function>(e).get_name();
     std::string arguments;

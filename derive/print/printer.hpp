@@ -15,8 +15,9 @@ namespace billiards::derive {
 enum class Notation {
   text,   ///< plain, one line: m1*(v1n-v2n)^2/(m1+m2)
   latex,  ///< LaTeX math from GiNaC's TeX names: \frac{m_{1} \left(…\right)^{2}}{m_{1} + m_{2}}
-  /// C++ for a `template <typename Scalar>` body: Scalar(2) * m2 / total_mass. No pow (integer powers
-  /// are products), no floating literals (every number is Scalar(integer)); anything else throws.
+  /// C++ for a `template <typename Scalar>` body: Scalar(2) * m2 / total_mass, and conditions a < b. No pow
+  /// (integer powers are products), no floating literals (every number is Scalar(integer)); anything else
+  /// throws.
   cpp,
 };
 

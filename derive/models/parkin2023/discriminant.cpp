@@ -5,7 +5,7 @@ namespace billiards::derive::parkin2023 {
 Discriminant the_discriminant(Recorder& record, const Definitions& d, const Quadratic& quadratic) {
   const Symbols& s = symbols();
   const ex &A = quadratic.A, &B = quadratic.B, &C = quadratic.C;
-  const lst& paper_shorthand = quadratic.paper_shorthand;
+  const GiNaC::exmap& paper_shorthand = quadratic.paper_shorthand;
   record.section("discriminant", "The discriminant", "D = B² − 4AC from the coefficients read off.");
   const ex D = GiNaC::normal(B * B + d.discriminant_ac_coefficient * A * C);
   const ex relative = s.v2n - s.v1n;  // (v2 − v1)·n
@@ -28,7 +28,7 @@ Discriminant the_discriminant(Recorder& record, const Definitions& d, const Quad
         .derived_expression = D,
         .paper_display = paper_first,
         .derived_display = factored_form(D),
-        .display_definitions = shorthand(d),
+        .display_definitions = paper_shorthand,
         .depends_on = from_coefficients,
     });
     record.add({

@@ -6,7 +6,7 @@ void putting_it_together(Recorder& record, const Setting& setting, const Quadrat
                          const Discriminant& discriminant, const Roots& roots) {
   const Symbols& s = symbols();
   const ex& relative = discriminant.relative;
-  const lst& paper_shorthand = quadratic.paper_shorthand;
+  const GiNaC::exmap& paper_shorthand = quadratic.paper_shorthand;
   const ex &plus_root = roots.plus_root, &minus_root = roots.minus_root;
   const Space& space = setting.space;
   record.section("general", "Putting it together", "x1 = v1⊥ + (x1·n) n with either root (3-D components).");
@@ -34,7 +34,7 @@ void putting_it_together(Recorder& record, const Setting& setting, const Quadrat
         .paper_display = lst{s.v1 + printed_coefficient_plus * s.n, s.v1 + printed_coefficient_minus * s.n},
         .derived_display = lst{s.v1 + factored_form(plus_root - s.v1n) * s.n,
                                s.v1 + factored_form(minus_root - s.v1n) * s.n},
-        .display_definitions = merged({shorthand(setting.definitions), space.normal_components()}),
+        .display_definitions = merged({paper_shorthand, space.normal_components()}),
         .display_components = space.vector_components(),
         .depends_on = {"roots.absolute_value_dropped.relative_speed_nonnegative",
                        "roots.absolute_value_dropped.relative_speed_negative",

@@ -16,12 +16,17 @@ void kernel_outputs(Recorder& record, const Setting& setting, const Selection& s
   const lst& from_unit_form = direction.from_unit_form;
   const Vec& n_of_d = direction.unit;
   const ex& approach_speed = approaching.approach_speed;
+  // The two changes as printed: (1 + r) m2/(m1 + m2) times the speed for ball 1, −(1 + r) m1/(m1 + m2) for
+  // ball 2, with restitution r.
+  const auto printed_pair = [&](const ex& r, const ex& by) {
+    return lst{(1 + r) * s.m2 / (s.m1 + s.m2) * by, -(1 + r) * s.m1 / (s.m1 + s.m2) * by};
+  };
   const Space& space = setting.space;
   const ex direction_speed_in_components =
       (dot(space.v2, direction.d) - dot(space.v1, direction.d)) / dd;  // ((v2 − v1)·d)/(d·d)
   {
     const lst changes{GiNaC::normal(plus_root - s.v1n), GiNaC::normal(x2n_selected - s.v2n)};
-    const lst printed{2 * s.m2 / (s.m1 + s.m2) * relative, -2 * s.m1 / (s.m1 + s.m2) * relative};
+    const lst printed = printed_pair(1, relative);
     record.add({
         .id = "kernel.elastic_normal_velocity_change",
         .paper = "\"This form makes it easier to see the impulse magnitude\"",
@@ -38,8 +43,7 @@ void kernel_outputs(Recorder& record, const Setting& setting, const Selection& s
                        "result.x2_by_symmetry"},
     });
     const lst changes_e{GiNaC::normal(x1n_e - s.v1n), GiNaC::normal(x2n_e - s.v2n)};
-    const lst printed_e{(1 + e) * s.m2 / (s.m1 + s.m2) * relative,
-                        -(1 + e) * s.m1 / (s.m1 + s.m2) * relative};
+    const lst printed_e = printed_pair(e, relative);
     record.add({
         .id = "kernel.normal_velocity_change",
         .statement = "With restitution e: x1·n − v1·n = (1 + e) m2/(m1 + m2) (v2 − v1)·n and x2·n − v2·n = "
@@ -58,8 +62,7 @@ void kernel_outputs(Recorder& record, const Setting& setting, const Selection& s
         add(space.v2, scale(second_coefficient_e * dot(subtract(space.v2, space.v1), n_of_d), n_of_d));
     const lst multiples{GiNaC::normal((from_unit_form.op(0) - space.v1[0]) / direction.d[0]),
                         GiNaC::normal((x2_unit[0] - space.v2[0]) / direction.d[0])};
-    const lst printed_multiples{(1 + e) * s.m2 / (s.m1 + s.m2) * direction_speed_in_components,
-                                -(1 + e) * s.m1 / (s.m1 + s.m2) * direction_speed_in_components};
+    const lst printed_multiples = printed_pair(e, direction_speed_in_components);
     record.add({
         .id = "kernel.direction_velocity_change",
         .statement = "Along a direction d (not necessarily unit) the velocities change by λ1 d and λ2 d with "
@@ -71,8 +74,7 @@ void kernel_outputs(Recorder& record, const Setting& setting, const Selection& s
         .comparison = Comparison::identity,
         .paper_expression = printed_multiples,
         .derived_expression = multiples,
-        .paper_display = lst{(1 + e) * s.m2 / (s.m1 + s.m2) * s.relative_direction_speed,
-                             -(1 + e) * s.m1 / (s.m1 + s.m2) * s.relative_direction_speed},
+        .paper_display = printed_pair(e, s.relative_direction_speed),
         .display_definitions = {{s.relative_direction_speed, direction_speed_in_components}},
         .depends_on = {"beyond.any_normal.direction_form", "beyond.restitution.impulse_coefficients"},
     });
@@ -81,8 +83,7 @@ void kernel_outputs(Recorder& record, const Setting& setting, const Selection& s
     const lst approaching{GiNaC::normal(multiples.op(0) / direction_speed_in_components) * clamped,
                           GiNaC::normal(multiples.op(1) / direction_speed_in_components) * clamped};
     const ex printed_clamp = (direction_speed_in_components - GiNaC::abs(direction_speed_in_components)) / 2;
-    const lst printed_approaching{(1 + e) * s.m2 / (s.m1 + s.m2) * printed_clamp,
-                                  -(1 + e) * s.m1 / (s.m1 + s.m2) * printed_clamp};
+    const lst printed_approaching = printed_pair(e, printed_clamp);
     record.add({
         .id = "kernel.approaching_direction_velocity_change",
         .statement =
@@ -94,8 +95,7 @@ void kernel_outputs(Recorder& record, const Setting& setting, const Selection& s
         .comparison = Comparison::identity,
         .paper_expression = printed_approaching,
         .derived_expression = approaching,
-        .paper_display = lst{(1 + e) * s.m2 / (s.m1 + s.m2) * s.approach_direction_speed,
-                             -(1 + e) * s.m1 / (s.m1 + s.m2) * s.approach_direction_speed},
+        .paper_display = printed_pair(e, s.approach_direction_speed),
         .display_definitions = {{s.approach_direction_speed, printed_clamp}},
         .depends_on = {"kernel.direction_velocity_change", "beyond.approaching.kernel_form"},
     });

@@ -80,9 +80,8 @@ std::vector<KernelStep> change_steps(const ChangeNames& names, const MassRatios&
 
 }  // namespace
 
-std::vector<Kernel> collision_kernels(const Setting& setting, const Selection&, const KernelPieces& pieces,
-                                      const Restitution&, const MassRatios& ratios,
-                                      const Direction& direction) {
+std::vector<Kernel> collision_kernels(const Setting& setting, const KernelPieces& pieces,
+                                      const MassRatios& ratios, const Direction& direction) {
   const Symbols& s = symbols();
   const Space& space = setting.space;
   const ex e = s.restitution;

@@ -40,10 +40,11 @@ ModelInfo info() {
       "(`selection.plus_root_separates_only_approaching_balls`); for separating balls nothing happens "
       "(`beyond.approaching.resolve_only_approaching`).",
   };
-  model.pair_result = {"NormalVelocityChange",
-                       "The changes x1·n − v1·n and x2·n − v2·n of the two balls' velocities along the contact "
-                       "normal n.",
-                       "x1·n − v1·n", "x2·n − v2·n"};
+  model.pair_result = {
+      "NormalVelocityChange",
+      "The changes x1·n − v1·n and x2·n − v2·n of the two balls' velocities along the contact "
+      "normal n.",
+      "x1·n − v1·n", "x2·n − v2·n"};
   model.reference_path = "billiards/reference_kernels.hpp";
   model.kernel_list_path = "billiards/kernel_list.hpp";
   return model;
@@ -90,7 +91,7 @@ Derivation derive(const Definitions& definitions) {
                  "compared with the formula the source prints. Every kernel is proven equal to the derived "
                  "side of its claim before it is printed (see \"The emitted kernels\" below).");
   kernel_outputs(record, setting, selection, with_restitution, direction, approaching);
-  derivation.kernels = collision_kernels(setting, selection, pieces, with_restitution, ratios, direction);
+  derivation.kernels = collision_kernels(setting, pieces, ratios, direction);
   derivation.kernels.push_back(time_of_impact_kernel(toi));
   derivation.reference_kernels = reference_kernels(quadratic);
   return derivation;

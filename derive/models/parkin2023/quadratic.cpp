@@ -28,8 +28,7 @@ Quadratic the_quadratic(Recorder& record, const Setting& setting) {
                  "Solve momentum conservation along n for x2·n, substitute into energy conservation "
                  "and read the coefficients off with coeff().");
   // The paper's shorthand P·n and K∥, replaced by their definitions before any comparison.
-  const ex paper_shorthand =
-      lst{s.Pn == scalar_momentum(d, s.v1n, s.v2n), s.K_parallel == scalar_kinetic(d, s.v1n, s.v2n)};
+  const GiNaC::exmap paper_shorthand = shorthand(d);
   const ex x2n_solved =
       GiNaC::lsolve(scalar_momentum(d, s.x1n, s.x2n) == scalar_momentum(d, s.v1n, s.v2n), s.x2n);
   record.add({
@@ -41,7 +40,7 @@ Quadratic the_quadratic(Recorder& record, const Setting& setting) {
       .paper_expression = ((s.Pn - s.m1 * s.x1n) / s.m2).subs(paper_shorthand),
       .derived_expression = x2n_solved,
       .paper_display = (s.Pn - s.m1 * s.x1n) / s.m2,
-      .display_definitions = shorthand(d),
+      .display_definitions = paper_shorthand,
       .note = "The paper states this step in words only; it is the vector equation "
               "x2∥ = (P∥ − m1 x1∥)/m2 along n.",
       .depends_on = {"along_n.momentum", "along_n.momentum_is_along_n"},
@@ -102,7 +101,7 @@ Quadratic the_quadratic(Recorder& record, const Setting& setting) {
         .derived_expression = quadratic,
         .paper_display = paper_scalar_form,
         .derived_display = factored_form(quadratic),
-        .display_definitions = shorthand(d),
+        .display_definitions = paper_shorthand,
         .depends_on = {"quadratic.vector_form"},
     });
     struct Coefficient {
@@ -130,17 +129,14 @@ Quadratic the_quadratic(Recorder& record, const Setting& setting) {
           .derived_expression = quadratic.coeff(s.x1n, c.power),
           .paper_display = c.printed,
           .derived_display = factored_form(quadratic.coeff(s.x1n, c.power)),
-          .display_definitions = shorthand(d),
+          .display_definitions = paper_shorthand,
           .depends_on = {"quadratic.in_normal_component"},
       });
     }
   }
-  return {GiNaC::ex_to<lst>(paper_shorthand),
-          x2n_solved,
-          quadratic,
-          quadratic.coeff(s.x1n, 2),
-          quadratic.coeff(s.x1n, 1),
-          quadratic.coeff(s.x1n, 0)};
+  return {
+      paper_shorthand,          x2n_solved, quadratic, quadratic.coeff(s.x1n, 2), quadratic.coeff(s.x1n, 1),
+      quadratic.coeff(s.x1n, 0)};
 }
 
 }  // namespace billiards::derive::parkin2023

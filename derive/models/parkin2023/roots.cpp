@@ -5,7 +5,7 @@ namespace billiards::derive::parkin2023 {
 Roots the_roots(Recorder& record, const Quadratic& quadratic, const Discriminant& discriminant) {
   const Symbols& s = symbols();
   const ex &A = quadratic.A, &B = quadratic.B, &D = discriminant.D, &relative = discriminant.relative;
-  const lst& paper_shorthand = quadratic.paper_shorthand;
+  const GiNaC::exmap& paper_shorthand = quadratic.paper_shorthand;
   record.section("roots", "The roots",
                  "The quadratic formula (−B ± √D)/(2A), with √D = m1 |(v2 − v1)·n| for m1 > 0.");
   const ex root_of_D = square_root_of_perfect_square(D);

@@ -135,10 +135,10 @@ void frictionless_contact(Recorder& record);
 void conservation_along_n(Recorder& record, const Setting& setting);
 
 struct Quadratic {
-  lst paper_shorthand;  ///< P·n and K∥ as the paper writes them, replaced by their definitions
-  ex x2n_solved;        ///< x2·n from momentum, in x1·n
-  ex quadratic;         ///< K(x1·n, x2·n) − K∥, a polynomial in x1·n
-  ex A, B, C;           ///< its coefficients, read off with coeff()
+  GiNaC::exmap paper_shorthand;  ///< P·n and K∥ by their definitions (shorthand())
+  ex x2n_solved;                 ///< x2·n from momentum, in x1·n
+  ex quadratic;                  ///< K(x1·n, x2·n) − K∥, a polynomial in x1·n
+  ex A, B, C;                    ///< its coefficients, read off with coeff()
 };
 Quadratic the_quadratic(Recorder& record, const Setting& setting);
 
@@ -221,8 +221,7 @@ void kernel_outputs(Recorder& record, const Setting& setting, const Selection& s
 
 // ---- The kernels ----------------------------------------------------------------------------------
 
-std::vector<Kernel> collision_kernels(const Setting& setting, const Selection& selection,
-                                      const KernelPieces& pieces, const Restitution& restitution,
+std::vector<Kernel> collision_kernels(const Setting& setting, const KernelPieces& pieces,
                                       const MassRatios& ratios, const Direction& direction);
 Kernel time_of_impact_kernel(const TimeOfImpact& toi);
 std::vector<Kernel> reference_kernels(const Quadratic& quadratic);
