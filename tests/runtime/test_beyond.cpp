@@ -9,6 +9,7 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <random>
 
@@ -212,5 +213,43 @@ TEMPLATE_TEST_CASE("Beyond the paper", "[runtime][beyond]", (Config<float, 2>), 
     }
     CHECK(approaching > 1000);
     CHECK(separating > 1000);
+  }
+}
+
+TEMPLATE_TEST_CASE("Unchanged means every bit: negative zeros are kept", "[runtime][beyond]", (Config<float, 2>),
+                   (Config<float, 3>), (Config<double, 2>), (Config<double, 3>)) {
+  using Scalar = typename TestType::Scalar;
+  using Vector = typename TestType::Vector;
+  const auto bits_equal = [](const Vector& a, const Vector& b) {
+    return std::memcmp(a.data(), b.data(), sizeof(Scalar) * std::size_t(a.size())) == 0;
+  };
+  Vector negative_zero = Vector::Constant(Scalar(-0.0)), p1 = Vector::Zero(), p2 = Vector::Zero();
+  p2[0] = 1;
+  Vector moving_away = negative_zero;
+  moving_away[0] = Scalar(2);  // (2, −0, …): ball 2 moves away from ball 1
+  SECTION("a separating pair comes back unchanged, −0 included") {
+    const auto [x1, x2] = billiards::collide_if_approaching(Scalar(1), p1, negative_zero, Scalar(3), p2, moving_away);
+    CHECK(bits_equal(x1, negative_zero));
+    CHECK(bits_equal(x2, moving_away));
+    CHECK(std::signbit(x1[1]));
+  }
+  SECTION("a wall (infinite mass) keeps its velocity's bits") {
+    Vector n = Vector::Zero();
+    n[0] = 1;
+    Vector v = Vector::Zero();
+    v[0] = Scalar(-1);
+    const auto [x1, x2] =
+        billiards::collide(Scalar(1), v, std::numeric_limits<Scalar>::infinity(), negative_zero, n);
+    CHECK(bits_equal(x2, negative_zero));
+    CHECK(x1[0] == Scalar(1));
+    const auto [y1, y2] =
+        billiards::collide(Scalar(1), v, std::numeric_limits<Scalar>::infinity(), negative_zero, n, Scalar(0.5));
+    CHECK(bits_equal(y2, negative_zero));
+  }
+  SECTION("reflect leaves the tangential −0 alone") {
+    Vector n = Vector::Zero();
+    n[0] = 1;
+    const Vector r = billiards::reflect(negative_zero, n);
+    CHECK(bits_equal(r, negative_zero));
   }
 }

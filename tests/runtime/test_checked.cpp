@@ -131,6 +131,18 @@ TEST_CASE("checked::time_of_impact", "[runtime][checked][time_of_impact]") {
     rejects([&] { (void)billiards::checked::time_of_impact(origin, v1, p2, approaching, not_a_number); },
             "contact_distance", "nan");
   }
+  SECTION("a contact distance too small beside the distance to decide a hit is rejected, not missed") {
+    const double limit = billiards::relative_contact_distance_limit<double>();
+    CHECK(limit == Approx(6.0e-154).epsilon(0.01));
+    rejects([&] { (void)billiards::checked::time_of_impact(origin, origin, p2, approaching, 1e-160); },
+            "contact_distance", "e-16");
+    // Just above it: a head-on hit, at (10 − r)/3.
+    CHECK(billiards::checked::time_of_impact(origin, origin, p2, approaching, 1e-152) == Approx(10.0 / 3));
+    // The cases: a crawl at 1e-161 over a gap, overlapping specks of radius 2e-170.
+    CHECK(billiards::checked::time_of_impact(origin, origin, Vector(1.4, 0, 0), Vector(-1e-161, 0, 0), 0.057) ==
+          Approx((1.4 - 0.057) / 1e-161));
+    CHECK(billiards::checked::time_of_impact(origin, Vector(1, 0, 0), Vector(2e-170, 0, 0), origin, 4e-170) == 0);
+  }
   SECTION("positions and velocities: finite and within the component limit") {
     rejects(
         [&] { (void)billiards::checked::time_of_impact(Vector(infinity, 0, 0), v1, p2, approaching, 2.0); },

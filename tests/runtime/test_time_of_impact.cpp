@@ -133,3 +133,82 @@ TEMPLATE_TEST_CASE("time_of_impact agrees with the textbook quadratic formula", 
   CHECK(contacts > 1000);
   CHECK(no_contacts > 1000);
 }
+
+TEMPLATE_TEST_CASE("time_of_impact is right at every scale: no miss by underflow or overflow",
+                   "[runtime][time_of_impact]", (Config<float, 2>), (Config<double, 2>), (Config<float, 3>),
+                   (Config<double, 3>)) {
+  using Scalar = typename TestType::Scalar;
+  using Vector = typename TestType::Vector;
+  constexpr int N = TestType::dimension;
+  using limits = std::numeric_limits<Scalar>;
+  const Scalar infinity = limits::infinity();
+  const Vector origin = Vector::Zero();
+  SECTION("the issue's cases: a crawl over a gap, overlapping specks") {
+    // A relative speed of 1e-161 (1e-20 in float) over a gap of 1.4 − 0.057: a hit, after about 1.3e161.
+    const Scalar crawl = std::is_same_v<Scalar, double> ? Scalar(1e-161) : Scalar(1e-20);
+    const Scalar t = billiards::time_of_impact(origin, origin, from<Vector>(1.4, 0), from<Vector>(-crawl, 0),
+                                               Scalar(0.057));
+    const long double expected = (1.4L - static_cast<long double>(Scalar(0.057))) / crawl;
+    CHECK(std::fabs(t - expected) <= 4 * limits::epsilon() * expected);
+    // Overlapping spheres of radius 2e-170 (2e-25 in float), approaching: they touch now.
+    const Scalar speck = std::is_same_v<Scalar, double> ? Scalar(2e-170) : Scalar(2e-25);
+    CHECK(billiards::time_of_impact(origin, from<Vector>(1, 0), from<Vector>(speck, 0), origin, 2 * speck) ==
+          Scalar(0));
+    // A speck crossing a gap of a hundred radii head on at a tiny speed: (100 − 2) r / s.
+    const Scalar t2 =
+        billiards::time_of_impact(origin, origin, from<Vector>(100 * speck, 0), from<Vector>(-crawl, 0), 2 * speck);
+    const long double expected2 = 98.0L * speck / crawl;
+    CHECK(std::fabs(t2 - expected2) <= 4 * limits::epsilon() * expected2);
+    // A time beyond the largest finite number is +infinity; so is a miss at any scale.
+    CHECK(billiards::time_of_impact(origin, origin, from<Vector>(1e30, 0), from<Vector>(-limits::min(), 0),
+                                    Scalar(1)) == infinity);
+    CHECK(billiards::time_of_impact(origin, origin, from<Vector>(10 * speck, 3 * speck), from<Vector>(-crawl, 0),
+                                    2 * speck) == infinity);
+  }
+  SECTION("random contacts with lengths and speeds scaled over the whole exponent range") {
+    std::mt19937_64 random(20261125);
+    std::uniform_real_distribution<double> coordinate(-10, 10), radius(0.25, 3);
+    // Exponents for lengths and speeds that keep components normal and within the checked API's limit.
+    std::uniform_int_distribution<int> exponent(limits::min_exponent + limits::digits + 8,
+                                                limits::max_exponent / 2 - 12);
+    const auto random_vector = [&] {
+      Vector v;
+      for (int i = 0; i < N; ++i) v[i] = static_cast<Scalar>(coordinate(random));
+      return v;
+    };
+    const long double epsilon = limits::epsilon();
+    int hits = 0, misses = 0;
+    for (int sample = 0; sample < 20000; ++sample) {
+      const Vector p2 = random_vector(), v1 = random_vector();
+      const Vector v2 = sample % 2 == 0 ? random_vector() : Vector(v1 - p2 / 2 + random_vector() / 10);
+      Scalar r = static_cast<Scalar>(radius(random));
+      const int a = exponent(random), b = exponent(random);
+      // Scaled by powers of two, exactly: the true contact time scales by 2^(a − b).
+      const Vector q = p2 * std::ldexp(Scalar(1), a), u1 = v1 * std::ldexp(Scalar(1), b),
+                   u2 = v2 * std::ldexp(Scalar(1), b);
+      r = std::ldexp(r, a);
+      const paper::Vector<N> p = exact(q), w = exact(u2) - exact(u1);
+      const long double rr = static_cast<long double>(r) * r, aa = w.dot(w), bb = p.dot(w);
+      const long double discriminant = bb * bb - aa * (p.dot(p) - rr);
+      const long double scale = bb * bb + aa * (p.dot(p) + rr);
+      // Near a graze or a standstill the decision is ill-conditioned: skip those.
+      if (std::fabs(discriminant) < 1e-3L * scale || std::fabs(bb) < 1e-3L * std::sqrt(aa * p.dot(p))) continue;
+      const long double reference = paper::time_of_impact<N>(exact(origin), exact(u1), p, exact(u2), r);
+      const Scalar t = billiards::time_of_impact(origin, u1, q, u2, r);
+      INFO("sample " << sample << ", lengths 2^" << a << ", speeds 2^" << b << ": reference "
+                     << static_cast<double>(reference) << ", computed " << t);
+      if (std::isinf(reference) || reference > static_cast<long double>(limits::max())) {
+        CHECK(std::isinf(t));
+        ++misses;
+        continue;
+      }
+      REQUIRE(std::isfinite(t));
+      const long double speed = std::sqrt(aa);
+      CHECK(std::fabs(t - reference) <=
+            64 * epsilon * (std::sqrt(p.dot(p)) / speed + reference) + limits::denorm_min());
+      ++hits;
+    }
+    CHECK(hits > 1000);
+    CHECK(misses > 1000);
+  }
+}

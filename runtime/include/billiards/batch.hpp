@@ -3,6 +3,7 @@
 // select between two computed values).
 #pragma once
 
+#include <billiards/detail/arithmetic.hpp>
 #include <billiards/kernels.hpp>
 
 #include <array>
@@ -21,7 +22,9 @@ using Components = std::array<std::span<Scalar>, Dimension>;
 ///
 /// Pair i has masses m1[i], m2[i], velocities (v1[0][i], …, v1[D−1][i]) and likewise v2, and unit
 /// contact normal (n[0][i], …); afterwards v1 and v2 hold x1 and x2 exactly as billiards::collide
-/// would compute them (the same generated kernel, kernels::elastic_normal_velocity_change). A mass
+/// would compute them under the same compiler flags, bit for bit (the same generated kernel,
+/// kernels::elastic_normal_velocity_change, and the same dot product and update,
+/// detail/arithmetic.hpp; tested on random data with and without -march=native). A mass
 /// may be +∞. No allocation. The arrays must not overlap one another.
 /// \throws std::invalid_argument when a span's length differs from m1's (checked once, before any
 ///         update, so nothing is half-updated).
@@ -68,15 +71,15 @@ void collide_batch(std::span<const Scalar> m1, const Components<Scalar, Dimensio
 #pragma GCC ivdep
 #endif
   for (std::size_t i = 0; i < count; ++i) {  // the batch loop: vectorised (see README, Performance)
-    Scalar v1n = 0, v2n = 0;
-    for (std::size_t k = 0; k < Dimension; ++k) {
-      v1n += x1[k][i] * normal[k][i];
-      v2n += x2[k][i] * normal[k][i];
-    }
+    // The same dot product and the same update as billiards::collide (detail/arithmetic.hpp), so the
+    // bits agree under the same flags.
+    const auto normal_at = [&](std::size_t k) { return normal[k][i]; };
+    const Scalar v1n = detail::dot<Dimension>([&](std::size_t k) { return x1[k][i]; }, normal_at);
+    const Scalar v2n = detail::dot<Dimension>([&](std::size_t k) { return x2[k][i]; }, normal_at);
     const auto change = kernels::elastic_normal_velocity_change(mass1[i], mass2[i], v1n, v2n);
     for (std::size_t k = 0; k < Dimension; ++k) {
-      x1[k][i] += change.first * normal[k][i];
-      x2[k][i] += change.second * normal[k][i];
+      x1[k][i] = detail::plus_multiple(x1[k][i], change.first, normal[k][i]);
+      x2[k][i] = detail::plus_multiple(x2[k][i], change.second, normal[k][i]);
     }
   }
 }

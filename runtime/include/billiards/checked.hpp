@@ -7,6 +7,9 @@
 #include <billiards/collision.hpp>
 
 #include <algorithm>
+#include <bit>
+#include <cstdint>
+#include <type_traits>
 #include <cmath>
 #include <limits>
 #include <sstream>
@@ -46,6 +49,34 @@ template <typename Scalar>
   return std::sqrt(std::numeric_limits<Scalar>::max()) / Scalar(64);
 }
 
+/// The smallest contact distance checked::time_of_impact accepts, relative to |p2 − p1|:
+/// 4 √(smallest normal), 6.0e-154 in double and 4.3e-19 in float. Below it r² underflows beside
+/// |p2 − p1|², and whether the spheres hit is decided by far less than rounding (the miss distance
+/// is known only to about ε |p2 − p1|).
+template <typename Scalar>
+[[nodiscard]] Scalar relative_contact_distance_limit() noexcept {
+  return Scalar(4) * std::sqrt(std::numeric_limits<Scalar>::min());
+}
+
+/// True when this program may flush subnormal numbers to zero: compiled with fast-math
+/// (BILLIARDS_RELAXED_MATH; linking with -ffast-math adds crtfastmath, which sets the FTZ and DAZ
+/// flags at start-up), or running with FTZ or DAZ set by other means (probed at run time, for the
+/// calling thread). The checked calls then reject masses, contact distances and directions that would
+/// read as zero.
+template <typename Scalar>
+[[nodiscard]] bool subnormals_flushed() noexcept {
+#if BILLIARDS_RELAXED_MATH
+  return true;
+#else
+  // volatile: the probe must run on the floating-point unit, not be folded by the compiler.
+  volatile Scalar smallest_normal = std::numeric_limits<Scalar>::min();
+  volatile Scalar smallest_subnormal = std::numeric_limits<Scalar>::denorm_min();
+  const Scalar half = smallest_normal / Scalar(2);  // 0 under FTZ
+  const Scalar subnormal = smallest_subnormal;      // read as 0 under DAZ
+  return !(half > 0) || !(subnormal > 0);
+#endif
+}
+
 namespace detail {
 
 template <typename Scalar>
@@ -63,12 +94,38 @@ std::string to_text(const Eigen::MatrixBase<Derived>& v) {
   return text + ")";
 }
 
+/// What "expected" adds where subnormals are flushed: that a subnormal value reads as zero.
+template <typename Scalar>
+std::string flushed_note() {
+  return " of at least the smallest normal number " + to_text(std::numeric_limits<Scalar>::min()) +
+         " (subnormal numbers are flushed to zero in this program: -ffast-math, or the FTZ/DAZ flags)";
+}
+
+/// True for a subnormal number, read from its bits (under DAZ a comparison would see zero).
+template <typename Scalar>
+[[nodiscard]] bool is_subnormal(Scalar x) noexcept {
+  using Bits = std::conditional_t<sizeof(Scalar) == 4, std::uint32_t, std::uint64_t>;
+  constexpr int stored_digits = std::numeric_limits<Scalar>::digits - 1;
+  constexpr Bits fraction = (Bits(1) << stored_digits) - 1;
+  constexpr Bits exponent = ((Bits(1) << (sizeof(Scalar) * 8 - 1)) - 1) & ~fraction;
+  const Bits bits = std::bit_cast<Bits>(x);
+  return (bits & exponent) == 0 && (bits & fraction) != 0;
+}
+
+/// Where subnormals are flushed, false for a value that would read as zero (a subnormal, or what
+/// compares below the smallest normal); true otherwise.
+template <typename Scalar>
+[[nodiscard]] bool survives_flushing(Scalar x) noexcept {
+  return !subnormals_flushed<Scalar>() || !(is_subnormal(x) || std::fabs(x) < std::numeric_limits<Scalar>::min());
+}
+
 template <typename Scalar>
 void check_mass(const char* function, const char* name, Scalar m) {
-  if (!is_mass(m)) {
-    throw invalid_argument(function, name, to_text(m),
-                           "a positive mass (finite, or +infinity for an immovable body)");
+  const std::string expected = "a positive mass (finite, or +infinity for an immovable body)";
+  if (!std::signbit(m) && !survives_flushing(m)) {
+    throw invalid_argument(function, name, to_text(m), expected + flushed_note<Scalar>());
   }
+  if (!is_mass(m)) throw invalid_argument(function, name, to_text(m), expected);
 }
 
 template <typename Scalar>
@@ -97,8 +154,12 @@ void check_components(const char* function, const char* name, const Eigen::Matri
 
 template <typename Derived>
 void check_direction(const char* function, const char* name, const Eigen::MatrixBase<Derived>& d) {
+  using Scalar = typename Derived::Scalar;
   check_components(function, name, d, "a direction");
   if (d.isZero(0)) throw invalid_argument(function, name, to_text(d), "a non-zero direction");
+  if (!survives_flushing(d.cwiseAbs().maxCoeff())) {
+    throw invalid_argument(function, name, to_text(d), "a direction with a component" + flushed_note<Scalar>());
+  }
 }
 
 template <typename Derived>
@@ -175,17 +236,22 @@ template <typename DP1, typename D1, typename DP2, typename D2>
   detail::check_collision(function, m1, v1, m2, v2, restitution);
   detail::check_components(function, "p1", p1, "a position");
   detail::check_components(function, "p2", p2, "a position");
-  if ((p2 - p1).isZero(0)) {
+  if ((p2 - p1).isZero(0) || !detail::survives_flushing((p2 - p1).cwiseAbs().maxCoeff())) {
     throw invalid_argument(function, "p2", detail::to_text(p2),
-                           "a centre distinct from p1 = " + detail::to_text(p1));
+                           "a centre distinct from p1 = " + detail::to_text(p1) +
+                               (subnormals_flushed<typename D1::Scalar>() ? ", by a difference" +
+                                                                                 detail::flushed_note<typename D1::Scalar>()
+                                                                           : std::string()));
   }
   return billiards::collide_if_approaching(m1, p1, v1, m2, p2, v2, restitution);
 }
 
 /// billiards::time_of_impact, validated: positions and velocities finite with components of magnitude
-/// at most component_limit(), the contact distance positive and at most component_limit(), and
-/// max(|p2 − p1|, contact distance) · |v2 − v1| at most √(largest finite)/8, so that no square the
-/// kernel forms overflows. The result is never NaN: a time ≥ 0, or +∞ when the spheres never touch
+/// at most component_limit(), the contact distance positive, at most component_limit() and at least
+/// relative_contact_distance_limit() · |p2 − p1|, and
+/// max(|p2 − p1|, contact distance) · |v2 − v1| at most √(largest finite)/8 (the domain of 0.1; the
+/// call scales lengths and speeds by powers of two, so no square it forms overflows or underflows
+/// anyway). Within it the time is right at every scale. The result is never NaN: a time ≥ 0, or +∞ when the spheres never touch
 /// (or would touch only after more than the largest finite time).
 /// \throws billiards::invalid_argument naming the first argument out of its domain ("v2 − v1" for a
 ///         relative speed too large for the distances involved)
@@ -202,12 +268,21 @@ template <typename DP1, typename D1, typename DP2, typename D2>
   detail::check_components(function, "v1", v1, "a velocity");
   detail::check_components(function, "p2", p2, "a position");
   detail::check_components(function, "v2", v2, "a velocity");
-  if (!(contact_distance > 0 && contact_distance <= component_limit<Scalar>())) {  // also rejects NaN
+  if (!(contact_distance > 0 && contact_distance <= component_limit<Scalar>()) ||
+      !detail::survives_flushing(contact_distance)) {  // also rejects NaN
     throw invalid_argument(function, "contact_distance", detail::to_text(contact_distance),
                            "a positive contact distance (the sum of the radii) of at most " +
-                               detail::to_text(component_limit<Scalar>()));
+                               detail::to_text(component_limit<Scalar>()) +
+                               (subnormals_flushed<Scalar>() ? " and" + detail::flushed_note<Scalar>() : ""));
   }
-  const Scalar reach = std::max((p2 - p1).norm(), contact_distance), speed = (v2 - v1).norm();
+  const Scalar distance = (p2 - p1).norm();
+  if (!(contact_distance >= relative_contact_distance_limit<Scalar>() * distance)) {
+    throw invalid_argument(function, "contact_distance", detail::to_text(contact_distance),
+                           "a contact distance of at least relative_contact_distance_limit() · |p2 − p1| = " +
+                               detail::to_text(relative_contact_distance_limit<Scalar>() * distance) +
+                               " (below it whether the spheres hit is decided by less than rounding)");
+  }
+  const Scalar reach = std::max(distance, contact_distance), speed = (v2 - v1).norm();
   const Scalar largest_product = std::sqrt(std::numeric_limits<Scalar>::max()) / Scalar(8);
   if (!(reach * speed <= largest_product)) {
     const detail::PlainVector<D1> relative = v2 - v1;

@@ -2,15 +2,31 @@
 // dimension, float or double, on top of the generated scalar kernels.
 #pragma once
 
+#include <billiards/detail/arithmetic.hpp>
 #include <billiards/kernels.hpp>
 #include <billiards/version.hpp>
 
 #include <Eigen/Core>
 
+#include <algorithm>
 #include <cassert>
 #include <cmath>
+#include <cstddef>
 #include <limits>
 #include <type_traits>
+
+/// 1 when the compiler may rewrite floating-point expressions: -ffast-math (`__FAST_MATH__`), or its
+/// parts -fassociative-math and -freciprocal-math, which g++ announces (`__ASSOCIATIVE_MATH__`,
+/// `__RECIPROCAL_MATH__`) also under -ffast-math -fno-finite-math-only; otherwise 0. Then the
+/// bit-level promises (collide_batch equal to collide, bit-for-bit symmetry) and the accuracy bounds do
+/// not hold, and billiards::checked treats subnormal numbers as flushed to zero. clang++ announces
+/// only the full -ffast-math (which the kernels header rejects); the checked calls' run-time probe
+/// catches the flushing its -ffast-math link sets up.
+#if defined(__FAST_MATH__) || defined(__ASSOCIATIVE_MATH__) || defined(__RECIPROCAL_MATH__)
+#define BILLIARDS_RELAXED_MATH 1
+#else
+#define BILLIARDS_RELAXED_MATH 0
+#endif
 
 namespace billiards {
 
@@ -61,20 +77,58 @@ constexpr void require_vectors() {
       "billiards: all vectors must have the same dimension");
 }
 
+/// a·b, summed in component order by detail::dot (the one definition collide_batch shares).
+template <typename DA, typename DB>
+[[nodiscard]] typename DA::Scalar dot(const Eigen::MatrixBase<DA>& a, const Eigen::MatrixBase<DB>& b) noexcept {
+  return dot<static_cast<std::size_t>(DA::RowsAtCompileTime)>([&](std::size_t k) { return a[Eigen::Index(k)]; },
+                                                              [&](std::size_t k) { return b[Eigen::Index(k)]; });
+}
+
+/// v + c d component by component through detail::plus_multiple: where c is 0, v's bits unchanged.
+template <typename DV, typename DD>
+[[nodiscard]] PlainVector<DV> plus_multiple(const Eigen::MatrixBase<DV>& v, typename DV::Scalar c,
+                                            const Eigen::MatrixBase<DD>& d) noexcept {
+  PlainVector<DV> result;
+  for (Eigen::Index k = 0; k < result.size(); ++k) result[k] = plus_multiple(v[k], c, d[k]);
+  return result;
+}
+
+/// The exponent e with 2^(e−1) ≤ x < 2^e (std::frexp's) for a finite x > 0; 0 for zero, for what is
+/// not finite and for what compares as zero (a subnormal where subnormals are flushed).
+template <typename Scalar>
+[[nodiscard]] int binary_exponent(Scalar x) noexcept {
+  if (!(x > 0) || !std::isfinite(x)) return 0;
+  int exponent = 0;
+  static_cast<void>(std::frexp(x, &exponent));
+  return exponent;
+}
+
+/// The binary exponent of v's largest component magnitude (0 for a zero vector).
+template <typename Derived>
+[[nodiscard]] int largest_component_exponent(const Eigen::MatrixBase<Derived>& v) noexcept {
+  return binary_exponent(v.cwiseAbs().maxCoeff());
+}
+
+/// v · 2^exponent, each component correctly rounded (exact unless it falls into the subnormal range):
+/// one multiplication where 2^exponent is a normal number, std::ldexp per component otherwise.
+template <typename Derived>
+[[nodiscard]] PlainVector<Derived> times_power_of_two(const Eigen::MatrixBase<Derived>& v, int exponent) noexcept {
+  using Scalar = typename Derived::Scalar;
+  constexpr int largest = std::numeric_limits<Scalar>::max_exponent - 1;  // 2^largest is finite
+  constexpr int smallest = std::numeric_limits<Scalar>::min_exponent - 1;  // 2^smallest is normal
+  if (exponent >= smallest && exponent <= largest) return v * std::ldexp(Scalar(1), exponent);
+  PlainVector<Derived> scaled;
+  for (Eigen::Index k = 0; k < scaled.size(); ++k) scaled[k] = std::ldexp(v[k], exponent);
+  return scaled;
+}
+
 /// `d` scaled by the power of two that puts its largest component in [0.5, 1). The scaling is exact
 /// (short of components 2^p times smaller than the largest, which change by less than rounding) and a
 /// collision along d does not depend on |d| (audit claim `beyond.any_normal.scale_invariant`); it keeps
 /// the multiple of d that a kernel returns from underflowing or overflowing because |d| is extreme.
 template <typename Derived>
-PlainVector<Derived> power_of_two_scaled(const Eigen::MatrixBase<Derived>& d) noexcept {
-  using Scalar = typename Derived::Scalar;
-  PlainVector<Derived> scaled = d;
-  const Scalar largest = scaled.cwiseAbs().maxCoeff();
-  if (!(largest > 0) || !std::isfinite(largest)) return scaled;  // zero or not finite: the caller's contract
-  int exponent = 0;
-  static_cast<void>(std::frexp(largest, &exponent));
-  for (Eigen::Index i = 0; i < scaled.size(); ++i) scaled[i] = std::ldexp(scaled[i], -exponent);
-  return scaled;
+[[nodiscard]] PlainVector<Derived> power_of_two_scaled(const Eigen::MatrixBase<Derived>& d) noexcept {
+  return times_power_of_two(d, -largest_component_exponent(d));
 }
 
 /// |p × w|² in any dimension: the sum over i < j of (p_i w_j − p_j w_i)² (Lagrange's identity makes
@@ -164,8 +218,9 @@ template <typename D1, typename D2, typename DN>
   detail::require_vectors<D1, D2, DN>();
   detail::assert_masses(m1, m2);
   detail::assert_unit(n);
-  const auto change = kernels::elastic_normal_velocity_change(m1, m2, v1.dot(n), v2.dot(n));
-  return {v1 + change.first * n, v2 + change.second * n};
+  const auto change =
+      kernels::elastic_normal_velocity_change(m1, m2, detail::dot(v1, n), detail::dot(v2, n));
+  return {detail::plus_multiple(v1, change.first, n), detail::plus_multiple(v2, change.second, n)};
 }
 
 /// \brief A collision with a coefficient of restitution \f$e\f$ (beyond the paper).
@@ -192,8 +247,9 @@ template <typename D1, typename D2, typename DN>
   detail::assert_masses(m1, m2);
   detail::assert_unit(n);
   detail::assert_restitution(restitution);
-  const auto change = kernels::normal_velocity_change(m1, m2, v1.dot(n), v2.dot(n), restitution);
-  return {v1 + change.first * n, v2 + change.second * n};
+  const auto change =
+      kernels::normal_velocity_change(m1, m2, detail::dot(v1, n), detail::dot(v2, n), restitution);
+  return {detail::plus_multiple(v1, change.first, n), detail::plus_multiple(v2, change.second, n)};
 }
 
 /// \brief The collision along a direction \f$d\f$ that need not be a unit vector (beyond the paper).
@@ -214,9 +270,11 @@ template <typename D1, typename D2, typename DD>
   detail::assert_masses(m1, m2);
   detail::assert_restitution(restitution);
   const detail::PlainVector<D1> direction = detail::power_of_two_scaled(d);
-  const auto change = kernels::direction_velocity_change(m1, m2, v1.dot(direction), v2.dot(direction),
-                                                         direction.squaredNorm(), restitution);
-  return {v1 + change.first * direction, v2 + change.second * direction};
+  const auto change =
+      kernels::direction_velocity_change(m1, m2, detail::dot(v1, direction), detail::dot(v2, direction),
+                                         detail::dot(direction, direction), restitution);
+  return {detail::plus_multiple(v1, change.first, direction),
+          detail::plus_multiple(v2, change.second, direction)};
 }
 
 /// \brief Resolves the contact of two balls centred at \f$p_1, p_2\f$ only if they approach (beyond
@@ -237,9 +295,9 @@ template <typename DP1, typename D1, typename DP2, typename D2>
   detail::assert_masses(m1, m2);
   detail::assert_restitution(restitution);
   const detail::PlainVector<D1> d = detail::power_of_two_scaled(p2 - p1);
-  const auto change = kernels::approaching_direction_velocity_change(m1, m2, v1.dot(d), v2.dot(d),
-                                                                     d.squaredNorm(), restitution);
-  return {v1 + change.first * d, v2 + change.second * d};
+  const auto change = kernels::approaching_direction_velocity_change(
+      m1, m2, detail::dot(v1, d), detail::dot(v2, d), detail::dot(d, d), restitution);
+  return {detail::plus_multiple(v1, change.first, d), detail::plus_multiple(v2, change.second, d)};
 }
 
 /// \brief When two spheres moving in straight lines first touch (beyond the paper).
@@ -251,13 +309,24 @@ template <typename DP1, typename D1, typename DP2, typename D2>
 /// \f$a\f$), with \f$D = b^2 - a c\f$ computed as \f$(w\cdot w) r^2 - |p \times w|^2\f$ (no cancellation when
 /// the spheres are far apart). Audit claims `beyond.time_of_impact.*`; kernel kernels::time_of_impact.
 ///
+/// Positions are scaled by the power of two of max(|p|∞, r) and velocities by that of |w|∞ first
+/// (exact; the time scales back by their ratio), so the answer does not depend on the units: a
+/// relative speed of 1e-161, spheres of radius 1e-170 or a gap of 1e150 give the right time, never a
+/// miss by underflow or overflow.
+///
 /// \return the earliest \f$t \ge 0\f$ at which the spheres touch while approaching; 0 when they already
 ///         touch (or overlap by rounding) and approach; \f$+\infty\f$ when they never touch: separating
 ///         (\f$b \ge 0\f$), no relative motion, a miss (\f$D < 0\f$) or a graze (\f$D = 0\f$, no closing
-///         speed at the contact, so nothing to resolve).
+///         speed at the contact, so nothing to resolve), or when the time exceeds the largest finite
+///         number. Hit or miss is decided by the computed \f$D\f$: the miss distance
+///         \f$|p \times w|/|w|\f$ against \f$r\f$, to within rounding of order \f$\varepsilon |p|\f$, so a
+///         pair that passes within a few ulps of \f$|p|\f$ of grazing may go either way.
 ///
-/// Preconditions (not checked): \f$r > 0\f$ and finite; every component finite and
-/// \f$|p|^2 |w|^2\f$ below the type's largest finite value (else \f$b^2\f$ overflows).
+/// Preconditions (not checked; billiards::checked::time_of_impact validates them): every component
+/// finite, \f$v_2 - v_1\f$ and \f$p_2 - p_1\f$ finite, \f$r > 0\f$ and finite (asserted in debug
+/// builds), and \f$r \ge 4\sqrt{\text{smallest normal}}\,|p_2 - p_1|\f$ (6e-154 |p2 − p1| in double, 4e-19
+/// in float): below it \f$r^2\f$ underflows beside \f$|p|^2\f$ and the hit is decided far below
+/// rounding.
 template <typename DP1, typename D1, typename DP2, typename D2>
 [[nodiscard]] typename D1::Scalar time_of_impact(const Eigen::MatrixBase<DP1>& p1,
                                                  const Eigen::MatrixBase<D1>& v1,
@@ -267,9 +336,21 @@ template <typename DP1, typename D1, typename DP2, typename D2>
   detail::require_vectors<D1, D2, DP1, DP2>();
   assert(contact_distance > 0 && std::isfinite(contact_distance) &&
          "billiards: the contact distance must be positive and finite");
+  using Scalar = typename D1::Scalar;
   const detail::PlainVector<D1> p = p2 - p1, w = v2 - v1;
-  return kernels::time_of_impact(p.squaredNorm(), p.dot(w), w.squaredNorm(), detail::cross_squared(p, w),
-                                 contact_distance);
+  // Lengths scaled by 2^−e (e the exponent of max(|p|∞, r)) and speeds by 2^−f (f that of |w|∞)
+  // describe the same contact, at the time t · 2^(f − e). Scaled, the largest length and the largest
+  // speed component lie in [1/2, 1): no square the kernel forms overflows, and r² w·w underflows only
+  // when r is below the precondition's 4 √(smallest normal) |p2 − p1|, however small or large the
+  // inputs. The scalings are exact but for components that fall into the subnormal range.
+  const int length_exponent = detail::binary_exponent(std::max(p.cwiseAbs().maxCoeff(), contact_distance));
+  const int speed_exponent = detail::largest_component_exponent(w);
+  const detail::PlainVector<D1> q = detail::times_power_of_two(p, -length_exponent),
+                                u = detail::times_power_of_two(w, -speed_exponent);
+  const Scalar r = std::ldexp(contact_distance, -length_exponent);
+  const Scalar scaled_time = kernels::time_of_impact(detail::dot(q, q), detail::dot(q, u), detail::dot(u, u),
+                                                     detail::cross_squared(q, u), r);
+  return std::ldexp(scaled_time, length_exponent - speed_exponent);
 }
 
 /// \brief A ball bouncing off an immovable cushion: the reflection \f$v - 2 (v\cdot n)\,n = -n v n\f$.
@@ -283,7 +364,7 @@ template <typename DV, typename DN>
                                               const Eigen::MatrixBase<DN>& n) noexcept {
   detail::require_vectors<DV, DN>();
   detail::assert_unit(n);
-  return v + kernels::cushion_normal_velocity_change(v.dot(n)) * n;
+  return detail::plus_multiple(v, kernels::cushion_normal_velocity_change(detail::dot(v, n)), n);
 }
 
 }  // namespace billiards

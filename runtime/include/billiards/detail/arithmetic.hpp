@@ -1,0 +1,29 @@
+// The two vector operations the runtime computes around the generated kernels, written once for every
+// caller: the dot product and "v plus a multiple of d". billiards::collide and friends (Eigen vectors)
+// and billiards::collide_batch (structure-of-arrays spans) both use these, so that they round alike
+// under the same compiler flags, -march=native's fused multiply-adds included (the same expression
+// tree contracts the same way). No Eigen here.
+#pragma once
+
+#include <cstddef>
+
+namespace billiards::detail {
+
+/// Σ a(k) b(k) for k = 0 … Dimension − 1, summed in that order: ((a0 b0 + a1 b1) + a2 b2) + …
+/// `a` and `b` map a component index to a value.
+template <std::size_t Dimension, typename A, typename B>
+[[nodiscard]] constexpr auto dot(const A& a, const B& b) noexcept {
+  static_assert(Dimension > 0, "billiards: vectors have at least one component");
+  auto sum = a(0) * b(0);
+  for (std::size_t k = 1; k < Dimension; ++k) sum += a(k) * b(k);
+  return sum;
+}
+
+/// v + c d, and v itself (every bit, the sign of a zero included) when c is zero: an unchanged
+/// velocity stays unchanged, −0 is not turned into +0. A select, so loops of it still vectorise.
+template <typename Scalar>
+[[nodiscard]] constexpr Scalar plus_multiple(Scalar v, Scalar c, Scalar d) noexcept {
+  return c == Scalar(0) ? v : v + c * d;
+}
+
+}  // namespace billiards::detail
