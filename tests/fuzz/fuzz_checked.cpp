@@ -1,9 +1,15 @@
-// libFuzzer harness for the checked API. Arbitrary bytes are shaped into arguments so that most
-// inputs are valid (masses over the whole range, finite velocities, unit normals, restitution in
-// [0, 1]) and a few are not (NaN, infinities, zero or negative masses, non-unit normals). For every
-// accepted input: no crash, no sanitizer report, no NaN or infinity in the result, and for elastic
+// libFuzzer harness for the checked API: every checked call (collide with and without restitution,
+// collide_along_direction, collide_if_approaching, reflect, time_of_impact). Arbitrary bytes are
+// shaped into arguments so that most inputs are valid (masses over the whole range, finite velocities,
+// unit normals, restitution in [0, 1], lengths and speeds scaled by powers of two over the type's
+// exponent range for time_of_impact) and a few are not (NaN, infinities, zero or negative masses,
+// non-unit normals). For every accepted input: no crash, no sanitizer report, a finite result (a time
+// ≥ 0 or +∞), and the result within rounding of the same physics computed independently in long
+// double (reference.hpp: the formulas as printed in the README, not the kernels); for elastic
 // collisions of finite masses, momentum conserved to rounding. A rejected input must throw
 // billiards::invalid_argument and nothing else.
+#include "reference.hpp"
+
 #include <billiards/checked.hpp>
 
 #include <cmath>
@@ -81,6 +87,14 @@ class Shaper {
     if (byte() != 0xA5 && std::isfinite(norm) && norm > 0) v /= norm;  // 0xA5: leave it unnormalised
     return v;
   }
+  /// 2^k for k anywhere in the type's exponent range (subnormal powers included).
+  template <typename Scalar>
+  Scalar power_of_two() {
+    using limits = std::numeric_limits<Scalar>;
+    const int span = limits::max_exponent - (limits::min_exponent - limits::digits);
+    const int k = static_cast<int>((static_cast<unsigned>(byte()) << 8 | byte()) % unsigned(span));
+    return std::ldexp(Scalar(1), limits::min_exponent - limits::digits + k);
+  }
   template <typename Scalar>
   Scalar restitution() {
     return special_or(Scalar(byte()) / Scalar(255));
@@ -97,8 +111,8 @@ template <typename Vector>
 [[noreturn]] void fail(const char* property, const billiards::Collision<Vector>& result) {
   std::fprintf(stderr, "billiards fuzz: %s violated\n", property);
   for (int i = 0; i < result.first.size(); ++i) {
-    std::fprintf(stderr, "  x1[%d] = %.17Lg  x2[%d] = %.17Lg\n", i, static_cast<long double>(result.first[i]),
-                 i, static_cast<long double>(result.second[i]));
+    std::fprintf(stderr, "  x1[%d] = %a  x2[%d] = %a\n", i, static_cast<double>(result.first[i]), i,
+                 static_cast<double>(result.second[i]));
   }
   std::abort();
 }
@@ -134,34 +148,104 @@ void require_momentum(typename Vector::Scalar m1, const Vector& v1, typename Vec
 }
 
 template <typename Vector>
+void require_reference(const char* call, const billiards::Collision<Vector>& result,
+                       const billiards_fuzz::Expected<Vector>& expected) {
+  if (const char* broken = billiards_fuzz::compare(result, expected)) {
+    std::fprintf(stderr, "billiards fuzz: %s: %s\n", call, broken);
+    for (int i = 0; i < expected.v1.size(); ++i) {
+      std::fprintf(stderr, "  v1[%d] = %a  v2[%d] = %a  n or d %a  reference %.17Lg ± %.3Lg, %.17Lg ± %.3Lg\n",
+                   i, static_cast<double>(expected.v1[i]), i, static_cast<double>(expected.v2[i]),
+                   static_cast<double>(expected.direction[i]),
+                   expected.first[i], expected.first_bound[i], expected.second[i], expected.second_bound[i]);
+    }
+    fail("agreement with the long-double reference", result);
+  }
+}
+
+template <typename Vector>
+void exercise_time_of_impact(Shaper& shape) {
+  using Scalar = typename Vector::Scalar;
+  // Lengths and speeds each scaled by a power of two anywhere in the exponent range: the contact is
+  // the same, at a scaled time, and must not be missed by underflow or overflow.
+  const Scalar length = shape.power_of_two<Scalar>(), speed = shape.power_of_two<Scalar>();
+  const Vector p1 = shape.vector<Vector>() * length, p2 = shape.vector<Vector>() * length;
+  const Vector v1 = shape.vector<Vector>() * speed;
+  // Half the inputs aimed at the other ball, so that hits are common.
+  const Vector v2 = shape.byte() % 2 ? Vector(shape.vector<Vector>() * speed)
+                                     : Vector(v1 - (p2 - p1) * (speed / length) + shape.vector<Vector>() * speed / 64);
+  const Scalar r = shape.special_or(std::fabs(shape.component<Scalar>()) * length);
+  ++all_inputs;
+  try {
+    const Scalar t = billiards::checked::time_of_impact(p1, v1, p2, v2, r);
+    if (const char* broken = billiards_fuzz::compare_time(t, p1, v1, p2, v2, r)) {
+      std::fprintf(stderr, "billiards fuzz: time_of_impact: %s\n  t = %.17Lg, r = %.17Lg\n", broken,
+                   static_cast<long double>(t), static_cast<long double>(r));
+      for (int i = 0; i < p1.size(); ++i) {
+        std::fprintf(stderr, "  p1[%d] = %.17Lg v1[%d] = %.17Lg p2[%d] = %.17Lg v2[%d] = %.17Lg\n", i,
+                     static_cast<long double>(p1[i]), i, static_cast<long double>(v1[i]), i,
+                     static_cast<long double>(p2[i]), i, static_cast<long double>(v2[i]));
+      }
+      std::abort();
+    }
+    ++accepted_inputs;
+  } catch (const billiards::invalid_argument& error) {
+    ++rejected_by_argument[error.argument()];
+  }
+}
+
+template <typename Vector>
 void exercise(Shaper& shape) {
   using Scalar = typename Vector::Scalar;
+  using billiards_fuzz::expected_collision;
+  const std::uint8_t call = shape.byte() % 6;
+  if (call == 5) return exercise_time_of_impact<Vector>(shape);
   const Scalar m1 = shape.mass<Scalar>(), m2 = shape.mass<Scalar>();
   const Vector v1 = shape.vector<Vector>(), v2 = shape.vector<Vector>();
   ++all_inputs;
   try {
-    // One of the checked calls, chosen and shaped by the input; the properties are checked once below.
-    const auto result = [&] {
-      switch (shape.byte() % 4) {
-        case 0: return billiards::checked::collide(m1, v1, m2, v2, shape.unit<Vector>());
-        case 1: {
-          const Vector n = shape.unit<Vector>();
-          return billiards::checked::collide(m1, v1, m2, v2, n, shape.restitution<Scalar>());
-        }
-        case 2: {
-          const Vector d = shape.vector<Vector>();
-          return billiards::checked::collide_along_direction(m1, v1, m2, v2, d, shape.restitution<Scalar>());
-        }
-        default: {
-          const Vector p1 = shape.vector<Vector>(), p2 = shape.vector<Vector>();
-          return billiards::checked::collide_if_approaching(m1, p1, v1, m2, p2, v2,
-                                                            shape.restitution<Scalar>());
-        }
+    switch (call) {
+      case 0: {
+        const Vector n = shape.unit<Vector>();
+        const auto result = billiards::checked::collide(m1, v1, m2, v2, n);
+        require_finite(result);
+        require_momentum(m1, v1, m2, v2, result);
+        require_reference("collide", result, expected_collision(m1, v1, m2, v2, n, Scalar(1), /*unit=*/true));
+        break;
       }
-    }();
-    require_finite(result);
-    require_momentum(m1, v1, m2, v2, result);
-    if (!billiards::checked::reflect(v1, Vector::Unit(0)).allFinite()) fail("finite reflection", result);
+      case 1: {
+        const Vector n = shape.unit<Vector>();
+        const Scalar e = shape.restitution<Scalar>();
+        const auto result = billiards::checked::collide(m1, v1, m2, v2, n, e);
+        require_finite(result);
+        require_reference("collide with restitution", result, expected_collision(m1, v1, m2, v2, n, e, /*unit=*/true));
+        break;
+      }
+      case 2: {
+        const Vector d = shape.vector<Vector>();
+        const Scalar e = shape.restitution<Scalar>();
+        const auto result = billiards::checked::collide_along_direction(m1, v1, m2, v2, d, e);
+        require_finite(result);
+        require_reference("collide_along_direction", result, expected_collision(m1, v1, m2, v2, d, e, /*unit=*/false));
+        break;
+      }
+      case 3: {
+        const Vector p1 = shape.vector<Vector>(), p2 = shape.vector<Vector>();
+        const Scalar e = shape.restitution<Scalar>();
+        const auto result = billiards::checked::collide_if_approaching(m1, p1, v1, m2, p2, v2, e);
+        require_finite(result);
+        require_reference("collide_if_approaching", result,
+                          billiards_fuzz::expected_if_approaching(m1, p1, v1, m2, p2, v2, e));
+        break;
+      }
+      default: {
+        const Vector n = shape.unit<Vector>();
+        const Vector x = billiards::checked::reflect(v1, n);
+        const billiards::Collision<Vector> result{x, v1};  // v1, validated, beside its reflection
+        require_finite(result);
+        require_reference("reflect", result, billiards_fuzz::expected_reflection(v1, n, v1));
+        break;
+      }
+    }
     ++accepted_inputs;
   } catch (const billiards::invalid_argument& error) {
     ++rejected_by_argument[error.argument()];

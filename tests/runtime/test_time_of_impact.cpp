@@ -1,6 +1,7 @@
 // billiards::time_of_impact: the first contact of two moving spheres, against the textbook quadratic
 // formula (paper_formula.hpp) in long double, and the cases the audit names: a head-on approach, a
 // miss, a graze, separating, at rest relative to each other, touching now.
+#include <billiards/checked.hpp>
 #include <billiards/collision.hpp>
 
 #include "paper_formula.hpp"
@@ -211,4 +212,19 @@ TEMPLATE_TEST_CASE("time_of_impact is right at every scale: no miss by underflow
     CHECK(hits > 1000);
     CHECK(misses > 1000);
   }
+}
+
+TEMPLATE_TEST_CASE("time_of_impact: centres closer than rounding of the contact distance", "[runtime][time_of_impact]",
+                   (Config<float, 3>), (Config<double, 3>)) {
+  using Scalar = typename TestType::Scalar;
+  using Vector = typename TestType::Vector;
+  // Found by the fuzzer: centres 1.2e-34 apart inside spheres of contact distance 2^47, approaching
+  // at 8.8e-21. p·w underflows at the contact distance's scale; they overlap and approach: touching now.
+  const Vector origin = Vector::Zero(), p2(0, Scalar(1.2461900045309303e-34), 0);
+  const Vector v1(0, Scalar(-4.110002118727082e-16), Scalar(9.3132257461547852e-10)),
+      v2(0, Scalar(-4.1100897336975636e-16), Scalar(9.3132257461547852e-10));
+  const Scalar r = Scalar(140737479966720.0);
+  CHECK(billiards::time_of_impact(origin, v1, p2, v2, r) == 0);
+  CHECK(billiards::time_of_impact(origin, v2, p2, v1, r) == std::numeric_limits<Scalar>::infinity());  // separating
+  CHECK(billiards::checked::time_of_impact(origin, v1, p2, v2, r) == 0);
 }

@@ -345,7 +345,15 @@ template <typename DP1, typename D1, typename DP2, typename D2>
   // inputs. The scalings are exact but for components that fall into the subnormal range.
   const int length_exponent = detail::binary_exponent(std::max(p.cwiseAbs().maxCoeff(), contact_distance));
   const int speed_exponent = detail::largest_component_exponent(w);
-  const detail::PlainVector<D1> q = detail::times_power_of_two(p, -length_exponent),
+  // Spheres whose centres are closer than 2^−(digits + 2) r overlap by all but rounding: p·p − r² is
+  // −r² to the last bit and the answer depends only on the sign of p·w (0 if approaching, else +∞).
+  // p is then lifted to about 2^−(digits + 2) r, which keeps both and keeps p·w from underflowing.
+  constexpr int negligible = std::numeric_limits<Scalar>::digits + 2;
+  const Scalar centre_distance = p.cwiseAbs().maxCoeff();
+  const int centre_exponent = detail::binary_exponent(centre_distance);
+  const bool centres_negligible = centre_distance > 0 && centre_exponent < length_exponent - negligible;
+  const int position_exponent = centres_negligible ? centre_exponent + negligible : length_exponent;
+  const detail::PlainVector<D1> q = detail::times_power_of_two(p, -position_exponent),
                                 u = detail::times_power_of_two(w, -speed_exponent);
   const Scalar r = std::ldexp(contact_distance, -length_exponent);
   const Scalar scaled_time = kernels::time_of_impact(detail::dot(q, q), detail::dot(q, u), detail::dot(u, u),
