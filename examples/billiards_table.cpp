@@ -4,18 +4,24 @@
 //
 //   billiards-table [--balls N] [--width W] [--height H] [--radius R] [--seed S] [--collisions C]
 //                   [--setup FILE | --break] [--svg FILE] [--max-drift X] [--check-every-pair true|false]
+//                   [--max-events-without-collision K]
 //
-// Exit status: 0 on success; 1 when the drift exceeds --max-drift or two balls overlapped; 2 on a bad
-// command line or setup (one line on stderr naming what and why); 3 when the SVG cannot be written.
+// Exit status: 0 on success; 1 when the drift exceeds --max-drift (or is NaN) or two balls overlapped;
+// 2 on a bad command line or setup (one line on stderr naming what and why); 3 when the SVG cannot be
+// written; 4 when the run stops because no ball–ball collision can happen (fewer than two balls, every
+// ball at rest, or K events in a row without one).
 #include "table.hpp"
 #include "table_io.hpp"
 
 #include <CLI/CLI.hpp>
 
+#include <charconv>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
-#include <fstream>
+#include <filesystem>
 #include <iostream>
+#include <optional>
 #include <string>
 
 int main(int argc, char** argv) {
@@ -30,26 +36,60 @@ int main(int argc, char** argv) {
   std::uint64_t collisions = 1000000;
   std::string setup_file, svg_file;
   bool break_shot = false, check_every_pair = true;
-  double max_drift = -1;
+  std::optional<double> max_drift;
   std::uint64_t svg_events = 120;
-  app.add_option("--balls", balls, "Number of balls placed at random (default 16)")
-      ->check(CLI::PositiveNumber);
-  app.add_option("--width", table.width, "Table width in metres (default 2.54)")->check(CLI::PositiveNumber);
+  std::uint64_t max_quiet_events = 1000000;
+  // Counts are checked as text before conversion: "-1" must not wrap to 2^64 − 1.
+  const auto count = [](std::uint64_t smallest) {
+    return CLI::Validator(
+        [smallest](std::string& text) -> std::string {
+          std::uint64_t value = 0;
+          const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+          const std::string quoted = "'" + text.substr(0, 40) + (text.size() > 40 ? "…'" : "'");
+          if (text.empty() || end != text.data() + text.size() || error == std::errc::invalid_argument) {
+            return quoted + " is not a whole number, expected one of at least " + std::to_string(smallest);
+          }
+          if (error == std::errc::result_out_of_range) return quoted + " is larger than 2^64 - 1";
+          if (value < smallest) return quoted + " is less than " + std::to_string(smallest);
+          return {};
+        },
+        "COUNT");
+  };
+  const CLI::Validator whole_number = count(0), positive_count = count(1);
+  // A finite number, positive or at least zero: NaN and infinities are rejected by name.
+  const auto number = [](bool positive) {
+    return CLI::Validator(
+        [positive](std::string& text) -> std::string {
+          char* end = nullptr;
+          const double value = std::strtod(text.c_str(), &end);
+          const bool in_range = positive ? value > 0 : value >= 0;
+          if (text.empty() || end != text.c_str() + text.size() || !std::isfinite(value) || !in_range) {
+            return "'" + text.substr(0, 40) + (text.size() > 40 ? "…'" : "'") + " is not a " +
+                   (positive ? "positive" : "non-negative") + " finite number";
+          }
+          return {};
+        },
+        positive ? "NUMBER > 0" : "NUMBER >= 0");
+  };
+  app.add_option("--balls", balls, "Number of balls placed at random (default 16)")->check(positive_count);
+  app.add_option("--width", table.width, "Table width in metres (default 2.54)")->check(number(true));
   app.add_option("--height", table.height, "Table height in metres (default 1.27)")
-      ->check(CLI::PositiveNumber);
+      ->check(number(true));
   app.add_option("--radius", table.radius, "Ball radius in metres (default 0.028575)")
-      ->check(CLI::PositiveNumber);
-  app.add_option("--seed", seed, "Seed of the random placement (default 1)");
-  app.add_option("--collisions", collisions, "Ball-ball collisions to run (default 1000000)");
+      ->check(number(true));
+  app.add_option("--seed", seed, "Seed of the random placement (default 1)")->check(whole_number);
+  app.add_option("--collisions", collisions, "Ball-ball collisions to run (default 1000000)")->check(whole_number);
   auto* setup_option =
-      app.add_option("--setup", setup_file, "Read the table and balls from FILE (format: examples/README.md)")
-          ->check(CLI::ExistingFile);
+      app.add_option("--setup", setup_file, "Read the table and balls from FILE (format: examples/README.md)");
   app.add_flag("--break", break_shot, "Rack 15 balls and strike the cue ball at the apex")
       ->excludes(setup_option);
   app.add_option("--svg", svg_file, "Write the trajectories of the first --svg-events events to FILE");
-  app.add_option("--svg-events", svg_events, "Events drawn in the SVG (default 120)")
-      ->check(CLI::PositiveNumber);
-  app.add_option("--max-drift", max_drift, "Exit 1 if the relative drift of the kinetic energy exceeds this");
+  app.add_option("--svg-events", svg_events, "Events drawn in the SVG (default 120)")->check(positive_count);
+  app.add_option("--max-drift", max_drift, "Exit 1 if the relative drift of the kinetic energy exceeds this (or is NaN)")
+      ->check(number(false));
+  app.add_option("--max-events-without-collision", max_quiet_events,
+                 "Stop (exit 4) after this many events in a row without a ball-ball collision (default 1000000)")
+      ->check(positive_count);
   app.add_option("--check-every-pair", check_every_pair,
                  "Check every pair for overlap at each event (default true; false: the event's balls only)");
   try {
@@ -61,11 +101,16 @@ int main(int argc, char** argv) {
     return 2;
   }
 
+  std::error_code folder_error;
+  if (!svg_file.empty() && std::filesystem::is_directory(svg_file, folder_error)) {
+    std::cerr << "billiards-table: --svg: '" << svg_file << "' is a folder, expected a file name\n";
+    return 2;
+  }
+
   Setup setup;
   try {
     if (!setup_file.empty()) {
-      std::ifstream in(setup_file);
-      setup = read_setup(in, setup_file);
+      setup = read_setup_file(setup_file);
     } else if (break_shot) {
       setup = break_setup(table);
     } else {
@@ -77,18 +122,36 @@ int main(int argc, char** argv) {
     return 2;
   }
 
+  if (setup.balls.size() < 2 && collisions > 0) {
+    std::cerr << "billiards-table: no ball-ball collision can happen with " << setup.balls.size()
+              << " ball; --collisions " << collisions << " needs at least two\n";
+    return 4;
+  }
+
   Simulation simulation(setup, check_every_pair);
   Trajectories trajectories(setup);
   const long double initial_energy = simulation.kinetic_energy();
   const auto start = std::chrono::steady_clock::now();
   try {
-    while (simulation.ball_collisions() < collisions) {
+    for (std::uint64_t quiet = 0; simulation.ball_collisions() < collisions;) {
+      const std::uint64_t before = simulation.ball_collisions();
       const Event event = simulation.step();
+      quiet = simulation.ball_collisions() == before ? quiet + 1 : 0;
+      if (quiet >= max_quiet_events) {
+        std::cerr << "billiards-table: stopped after " << quiet << " events in a row without a ball-ball collision ("
+                  << simulation.ball_collisions() << " of " << collisions
+                  << " done): the balls' paths do not meet (--max-events-without-collision)\n";
+        return 4;
+      }
       if (!svg_file.empty() && simulation.events() <= svg_events) {
         trajectories.record(event, simulation.balls());
         if (simulation.events() == svg_events) trajectories.finish(simulation.balls());
       }
     }
+  } catch (const NoEvent& error) {
+    std::cerr << "billiards-table: stopped after " << simulation.ball_collisions() << " of " << collisions
+              << " ball-ball collisions: " << error.what() << "\n";
+    return 4;
   } catch (const std::logic_error& error) {
     std::cerr << "billiards-table: " << error.what() << "\n";
     return 1;
@@ -121,9 +184,8 @@ int main(int argc, char** argv) {
       return 3;
     }
   }
-  if (max_drift >= 0 && drift > max_drift) {
-    std::cerr << "billiards-table: the relative drift " << drift << " exceeds --max-drift " << max_drift
-              << "\n";
+  if (max_drift && !(drift <= *max_drift)) {  // a NaN drift fails any bound
+    std::cerr << "billiards-table: the relative drift " << drift << " exceeds --max-drift " << *max_drift << "\n";
     return 1;
   }
   return 0;

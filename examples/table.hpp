@@ -25,6 +25,12 @@
 
 namespace billiards_example {
 
+/// Thrown by Simulation::step when no event can ever happen again (every ball at rest).
+class NoEvent : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
 /// What an event was.
 struct Event {
   enum class Kind { ball, cushion } kind = Kind::ball;
@@ -52,10 +58,11 @@ class Simulation {
   static constexpr double overlap_tolerance = 1e-9;
 
   /// Moves every ball to the next event and resolves it. Throws std::logic_error if, after it, two
-  /// balls overlap by more than overlap_tolerance of a radius or a ball has left the table.
+  /// balls overlap by more than overlap_tolerance of a radius or a ball has left the table, and
+  /// NoEvent when no event can happen any more.
   Event step() {
     for (;;) {
-      if (queue_.empty()) throw std::logic_error("no event will ever happen: every ball is at rest");
+      if (queue_.empty()) throw NoEvent("no event will ever happen: every ball is at rest");
       std::pop_heap(queue_.begin(), queue_.end(), std::greater<>());
       const Prediction next = queue_.back();
       queue_.pop_back();

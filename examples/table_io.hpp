@@ -12,8 +12,12 @@
 
 #include "table.hpp"
 
+#include <billiards_support/atomic_file.hpp>
+
 #include <cerrno>
+#include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -26,35 +30,77 @@
 
 namespace billiards_example {
 
+/// Limits on what a setup file may hold, so that a hostile file (/dev/zero, a endless stream) is
+/// rejected promptly instead of growing memory: a line of at most 4096 characters, at most 256 MiB in
+/// all (a million balls take about 40 MB).
+inline constexpr std::size_t longest_setup_line = 4096;
+inline constexpr std::size_t largest_setup_file = std::size_t(256) << 20;
+
+/// `text` for a message: at most 40 characters, the rest elided.
+inline std::string excerpt(const std::string& text) {
+  constexpr std::size_t shown = 40;
+  return text.size() <= shown ? text : text.substr(0, shown) + "… (" + std::to_string(text.size()) + " characters)";
+}
+
+/// A number in a setup file: a finite double, the whole word (strtod, so subnormal values such as
+/// 1e-310 are read as what they are). Throws std::invalid_argument with `where` and an excerpt.
+inline double parse_number(const std::string& word, const std::string& where, const char* expected) {
+  errno = 0;
+  char* end = nullptr;
+  const double value = std::strtod(word.c_str(), &end);
+  const bool whole = end != nullptr && *end == '\0' && !word.empty();
+  if (!whole || !std::isfinite(value)) {
+    throw std::invalid_argument(where + "'" + excerpt(word) + "' is not a finite number, expected " + expected);
+  }
+  if (errno == ERANGE && value == 0) {
+    throw std::invalid_argument(where + "'" + excerpt(word) +
+                                "' is below the smallest subnormal number (it would read as 0), expected " + expected);
+  }
+  return value;
+}
+
 /// Parses a setup (the format above) and validates it. Throws std::invalid_argument naming
-/// `source:line`, the directive and what was expected.
+/// `source:line`, the directive and what was expected; a file that cannot be read says why.
 inline Setup read_setup(std::istream& in, const std::string& source) {
   Setup setup;
   setup.balls.clear();
+  setup.origin.file = source + ": ";
   std::string line;
-  for (int number = 1; std::getline(in, line); ++number) {
+  std::size_t total = 0;
+  for (int number = 1;; ++number) {
     const std::string where = source + ":" + std::to_string(number) + ": ";
+    // One line, at most longest_setup_line characters: never more is held in memory.
+    line.clear();
+    bool ended = false;
+    for (int c; (c = in.get()) != std::char_traits<char>::eof();) {
+      if (c == '\n') {
+        ended = true;
+        break;
+      }
+      if (line.size() == longest_setup_line) {
+        throw std::invalid_argument(where + "the line is longer than " + std::to_string(longest_setup_line) +
+                                    " characters ('" + excerpt(line) + "'), expected one directive per line");
+      }
+      line.push_back(static_cast<char>(c));
+    }
+    if (in.bad()) throw std::invalid_argument(where + "cannot read the file: " + std::strerror(errno));
+    total += line.size() + 1;
+    if (total > largest_setup_file) {
+      throw std::invalid_argument(where + "the file is larger than " + std::to_string(largest_setup_file >> 20) +
+                                  " MiB, expected a setup (one line per ball)");
+    }
+    if (!ended && line.empty()) break;  // the end of the file
     if (const auto hash = line.find('#'); hash != std::string::npos) line.erase(hash);
     std::istringstream words(line);
     std::string directive;
-    if (!(words >> directive)) continue;
+    if (!(words >> directive)) {
+      if (!ended) break;
+      continue;
+    }
     const auto numbers = [&](std::size_t count, const char* expected) {
       std::vector<double> values;
       std::string word;
-      while (words >> word) {
-        std::size_t used = 0;
-        double value = 0;
-        try {
-          value = std::stod(word, &used);
-        } catch (const std::exception&) {
-          used = 0;
-        }
-        if (used != word.size() || !std::isfinite(value)) {
-          throw std::invalid_argument(where + directive + ": '" + word +
-                                      "' is not a finite number, expected " + expected);
-        }
-        values.push_back(value);
-      }
+      while (words >> word) values.push_back(parse_number(word, where + directive + ": ", expected));
       if (values.size() != count) {
         throw std::invalid_argument(where + directive + ": " + std::to_string(values.size()) +
                                     " numbers, expected " + expected);
@@ -65,24 +111,40 @@ inline Setup read_setup(std::istream& in, const std::string& source) {
       const auto v = numbers(2, "2 numbers: width height");
       setup.width = v[0];
       setup.height = v[1];
+      setup.origin.table = where;
     } else if (directive == "radius") {
       setup.radius = numbers(1, "1 number: the radius")[0];
+      setup.origin.radius = where;
     } else if (directive == "mass") {
       setup.mass = numbers(1, "1 number: the mass")[0];
+      setup.origin.mass = where;
     } else if (directive == "ball") {
       const auto v = numbers(4, "4 numbers: x y vx vy");
       setup.balls.push_back({Vector(v[0], v[1]), Vector(v[2], v[3])});
+      setup.origin.balls.push_back(where);
     } else {
-      throw std::invalid_argument(where + "unknown directive '" + directive +
+      throw std::invalid_argument(where + "unknown directive '" + excerpt(directive) +
                                   "', expected table, radius, mass or ball");
     }
+    if (!ended) break;
   }
-  try {
-    validate(setup);
-  } catch (const std::invalid_argument& error) {
-    throw std::invalid_argument(source + ": " + error.what());
-  }
+  validate(setup);
   return setup;
+}
+
+/// Opens and reads a setup file: read_setup, with an error that says why a file cannot be opened.
+inline Setup read_setup_file(const std::string& path) {
+  errno = 0;
+  std::ifstream in(path, std::ios::binary);
+  if (!in.is_open()) {
+    throw std::invalid_argument(path + ": cannot open the setup file: " +
+                                (errno != 0 ? std::strerror(errno) : "unknown reason"));
+  }
+  std::error_code error;
+  if (std::filesystem::is_directory(path, error)) {
+    throw std::invalid_argument(path + ": is a folder, expected a setup file");
+  }
+  return read_setup(in, path);
 }
 
 /// Each ball's path: its position at the start and at every event, and at the end.
@@ -149,32 +211,6 @@ class Trajectories {
   std::vector<Ball> final_;
 };
 
-/// Writes `contents` to `path` through a temporary file beside it, renamed into place, so that an
-/// interrupted run never leaves a half-written file. Throws std::runtime_error naming the path.
-inline void write_file_atomically(const std::filesystem::path& path, const std::string& contents) {
-  const std::filesystem::path temporary = path.string() + ".tmp";
-  {
-    errno = 0;
-    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-    if (!out.is_open()) {
-      throw std::runtime_error("cannot write " + path.string() + ": cannot create " + temporary.string() +
-                               " (" + std::strerror(errno) + ")");
-    }
-    out << contents;
-    out.flush();
-    if (!out) {
-      std::error_code ignored;
-      std::filesystem::remove(temporary, ignored);
-      throw std::runtime_error("cannot write " + path.string() + ": writing " + temporary.string() +
-                               " failed");
-    }
-  }
-  std::error_code error;
-  std::filesystem::rename(temporary, path, error);
-  if (error) {
-    std::filesystem::remove(temporary, error);
-    throw std::runtime_error("cannot write " + path.string() + ": " + error.message());
-  }
-}
+using billiards_support::write_file_atomically;
 
 }  // namespace billiards_example

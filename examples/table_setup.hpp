@@ -15,6 +15,7 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 namespace billiards_example {
@@ -26,6 +27,14 @@ struct Ball {
   Vector velocity;
 };
 
+/// Where a setup's values were read, for messages: "FILE:LINE: " prefixes (empty for a setup built in
+/// code, or for a value left at its default).
+struct Origin {
+  std::string file;                ///< "FILE: ", for what has no line of its own
+  std::string table, radius, mass;  ///< the line of each directive
+  std::vector<std::string> balls;  ///< the line of each ball
+};
+
 /// A table and the balls on it. All balls have the same radius and mass.
 struct Setup {
   double width = 2.54;       ///< metres, the playing area of a 9-ft table
@@ -33,7 +42,16 @@ struct Setup {
   double radius = 0.028575;  ///< metres (57.15 mm balls)
   double mass = 0.17;        ///< kilograms
   std::vector<Ball> balls;
+  Origin origin;
 };
+
+/// The smallest radius a run can resolve on a table of this size: 16 ε max(width, height) /
+/// overlap tolerance (1e-9 of a radius, see Simulation). Positions on the table round by about
+/// ε max(width, height); below this radius that rounding alone would exceed the overlap the run
+/// allows. 9.0e-6 m for the default 2.54 × 1.27 m table.
+inline double smallest_radius(double width, double height) {
+  return 16 * std::numeric_limits<double>::epsilon() * std::max(width, height) / 1e-9;
+}
 
 /// How far balls i and j overlap: two radii minus the distance of their centres (negative when apart).
 inline double overlap(const Setup& setup, std::size_t i, std::size_t j) {
@@ -47,45 +65,90 @@ inline bool on_table(const Setup& setup, const Vector& p, double slack = 0) {
   return p.x() >= low && p.x() <= setup.width - low && p.y() >= low && p.y() <= setup.height - low;
 }
 
-/// Rejects a setup that is not a valid table: a clear message naming the ball, the value and what was
-/// expected. Throws std::invalid_argument.
-inline void validate(const Setup& setup) {
-  const auto fail = [](const std::string& message) { throw std::invalid_argument(message); };
-  const auto positive = [&](const char* name, double value) {
+/// Rejects a setup that is not a valid table: a clear message naming where (FILE:LINE: for a setup
+/// read from a file), the ball, the value and what was expected. Throws std::invalid_argument.
+/// O(N) expected time: the overlap check hashes the balls into cells of one diameter. Returns how many
+/// pairs of balls it compared (a handful per ball; the tests hold it to that).
+inline std::size_t validate(const Setup& setup) {
+  const Origin& origin = setup.origin;
+  const auto ball_origin = [&](std::size_t i) { return i < origin.balls.size() ? origin.balls[i] : origin.file; };
+  const auto fail = [](const std::string& where, const std::string& message) {
+    throw std::invalid_argument(where + message);
+  };
+  const auto positive = [&](const std::string& where, const char* name, double value) {
     if (!(value > 0) || !std::isfinite(value)) {
       std::ostringstream text;
       text << name << " is " << value << ", expected a positive finite number";
-      fail(text.str());
+      fail(where, text.str());
     }
   };
-  positive("width", setup.width);
-  positive("height", setup.height);
-  positive("radius", setup.radius);
-  positive("mass", setup.mass);
-  if (setup.balls.empty()) fail("no balls: expected at least one");
+  positive(origin.table, "width", setup.width);
+  positive(origin.table, "height", setup.height);
+  positive(origin.radius, "radius", setup.radius);
+  positive(origin.mass, "mass", setup.mass);
   const double r = setup.radius;
+  // The radius against the table: the radius's line, or the table's where the radius is the default.
+  const std::string& radius_origin = origin.radius.empty() ? origin.table : origin.radius;
+  if (const double smallest = smallest_radius(setup.width, setup.height); r < smallest) {
+    std::ostringstream text;
+    text << "radius is " << r << ", expected at least " << smallest << " on a " << setup.width << " x "
+         << setup.height << " table (positions on it round by about "
+         << std::numeric_limits<double>::epsilon() * std::max(setup.width, setup.height)
+         << ", and the run allows overlaps of 1e-9 of a radius)";
+    fail(radius_origin, text.str());
+  }
+  if (!(2 * r < setup.width && 2 * r < setup.height)) {
+    std::ostringstream text;
+    text << "radius is " << r << ", expected less than half the table's " << setup.width << " x " << setup.height;
+    fail(radius_origin, text.str());
+  }
+  if (setup.balls.empty()) fail(origin.file, "no balls: expected at least one");
   for (std::size_t i = 0; i < setup.balls.size(); ++i) {
     const Ball& ball = setup.balls[i];
     std::ostringstream text;
     if (!ball.position.allFinite() || !ball.velocity.allFinite()) {
       text << "ball " << i << " has a position or velocity that is not finite";
-      fail(text.str());
+      fail(ball_origin(i), text.str());
     }
     const Vector& p = ball.position;
     if (!on_table(setup, p)) {
       text << "ball " << i << " at (" << p.x() << ", " << p.y() << ") is outside the table: expected its "
            << "centre within [" << r << ", " << setup.width - r << "] x [" << r << ", " << setup.height - r
            << "] (a radius from every cushion)";
-      fail(text.str());
-    }
-    for (std::size_t j = 0; j < i; ++j) {
-      if (overlap(setup, j, i) > 0) {
-        text << "balls " << j << " and " << i << " overlap: their centres are "
-             << 2 * r - overlap(setup, j, i) << " apart, expected at least two radii (" << 2 * r << ")";
-        fail(text.str());
-      }
+      fail(ball_origin(i), text.str());
     }
   }
+  // Overlaps: balls hashed into square cells of side 2r; two balls that overlap lie in the same or in
+  // neighbouring cells. Balls that do not overlap fill a cell with at most a few, so each ball is
+  // compared with a bounded number of others. The cell indices are small: the radius is at least
+  // smallest_radius(), so a side has at most about 10^8 cells.
+  const double cell = 2 * r;
+  const auto key = [](std::int64_t x, std::int64_t y) { return (static_cast<std::uint64_t>(x) << 32) ^ static_cast<std::uint64_t>(y); };
+  std::unordered_map<std::uint64_t, std::vector<std::size_t>> cells;
+  std::size_t compared = 0;
+  cells.reserve(setup.balls.size());
+  for (std::size_t i = 0; i < setup.balls.size(); ++i) {
+    const Vector& p = setup.balls[i].position;
+    const auto cx = static_cast<std::int64_t>(std::floor(p.x() / cell)),
+               cy = static_cast<std::int64_t>(std::floor(p.y() / cell));
+    for (std::int64_t dx = -1; dx <= 1; ++dx) {
+      for (std::int64_t dy = -1; dy <= 1; ++dy) {
+        const auto found = cells.find(key(cx + dx, cy + dy));
+        if (found == cells.end()) continue;
+        for (const std::size_t j : found->second) {
+          ++compared;
+          if (overlap(setup, j, i) > 0) {
+            std::ostringstream text;
+            text << "balls " << j << " and " << i << " overlap: their centres are " << 2 * r - overlap(setup, j, i)
+                 << " apart, expected at least two radii (" << 2 * r << ")";
+            fail(ball_origin(i), text.str());
+          }
+        }
+      }
+    }
+    cells[key(cx, cy)].push_back(i);
+  }
+  return compared;
 }
 
 /// `count` balls at random, non-overlapping positions with speeds in [0.5, 1.5] × `speed` in random

@@ -114,6 +114,10 @@ TEST_CASE("Bad setups are rejected with a clear error", "[examples][table]") {
     CHECK_THROWS_WITH(validate(setup), Catch::Contains("radius is 0, expected a positive finite number"));
   }
   SECTION("no balls") { CHECK_THROWS_WITH(validate(setup), Catch::Contains("no balls")); }
+  SECTION("a validation message without a file has no prefix") {
+    setup.balls = {{Vector(3, 0.5), Vector(0, 0)}};
+    CHECK_THROWS_WITH(validate(setup), Catch::StartsWith("ball 0 at (3, 0.5)"));
+  }
   SECTION("more balls than fit") {
     CHECK_THROWS_WITH(random_setup(Setup{}, 100000, 1), Catch::Contains("balls is 100000: cannot place"));
   }
@@ -150,10 +154,94 @@ TEST_CASE("Setup files", "[examples][table]") {
     std::istringstream in("radius big\n");
     CHECK_THROWS_WITH(read_setup(in, "bad.setup"), Catch::Contains("'big' is not a finite number"));
   }
-  SECTION("an invalid table names the file") {
+  SECTION("an invalid table names the file and the line") {
     std::istringstream in("ball 1 0.5 0 0\nball 1.01 0.5 0 0\n");
-    CHECK_THROWS_WITH(read_setup(in, "bad.setup"), Catch::Contains("bad.setup: balls 0 and 1 overlap"));
+    CHECK_THROWS_WITH(read_setup(in, "bad.setup"), Catch::Contains("bad.setup:2: balls 0 and 1 overlap"));
   }
+  SECTION("every validation error names the line it comes from") {
+    std::istringstream off("# a comment\nball 1 0.5 0 0\n\nball 3 0.5 0 0\n");
+    CHECK_THROWS_WITH(read_setup(off, "bad.setup"), Catch::StartsWith("bad.setup:4: ball 1 at (3, 0.5) is outside"));
+    std::istringstream radius("ball 1 0.5 0 0\nradius -1\n");
+    CHECK_THROWS_WITH(read_setup(radius, "bad.setup"), Catch::StartsWith("bad.setup:2: radius is -1"));
+    std::istringstream mass("mass 0\nball 1 0.5 0 0\n");
+    CHECK_THROWS_WITH(read_setup(mass, "bad.setup"), Catch::StartsWith("bad.setup:1: mass is 0"));
+    std::istringstream table("table 0.01 1\nball 1 0.5 0 0\n");
+    CHECK_THROWS_WITH(read_setup(table, "bad.setup"), Catch::StartsWith("bad.setup:1: radius is"));
+    std::istringstream none("# nothing\n");
+    CHECK_THROWS_WITH(read_setup(none, "bad.setup"), Catch::StartsWith("bad.setup: no balls"));
+  }
+  SECTION("numbers: subnormal values are numbers, underflow and overflow are named") {
+    std::istringstream tiny("ball 1 0.5 1e-310 0\n");
+    CHECK(read_setup(tiny, "tiny.setup").balls[0].velocity.x() == 1e-310);
+    std::istringstream zero("ball 1 0.5 1e-400 0\n");
+    CHECK_THROWS_WITH(read_setup(zero, "bad.setup"), Catch::Contains("'1e-400' is below the smallest subnormal"));
+    std::istringstream huge("ball 1 0.5 1e400 0\n");
+    CHECK_THROWS_WITH(read_setup(huge, "bad.setup"), Catch::Contains("'1e400' is not a finite number"));
+  }
+  SECTION("a hostile file: an endless line is cut short, and so is its quote") {
+    std::istringstream endless("ball " + std::string(1 << 20, '7') + "\n");
+    try {
+      (void)read_setup(endless, "zero.setup");
+      FAIL("accepted");
+    } catch (const std::invalid_argument& error) {
+      const std::string message = error.what();
+      CHECK_THAT(message, Catch::StartsWith("zero.setup:1: the line is longer than 4096 characters"));
+      CHECK(message.size() < 300);
+    }
+    std::istringstream word("radius " + std::string(3000, 'x') + "\n");
+    try {
+      (void)read_setup(word, "word.setup");
+      FAIL("accepted");
+    } catch (const std::invalid_argument& error) {
+      CHECK(std::string(error.what()).size() < 300);
+    }
+  }
+  SECTION("a file that cannot be opened says why") {
+    CHECK_THROWS_WITH(read_setup_file("/nonexistent/table.setup"),
+                      Catch::Contains("/nonexistent/table.setup: cannot open the setup file: No such file or directory"));
+    CHECK_THROWS_WITH(read_setup_file("/tmp"), Catch::Contains("is a folder"));
+  }
+}
+
+TEST_CASE("Validation compares each ball with a handful of neighbours, not with every ball", "[examples][table]") {
+  // 40 000 balls in a square lattice of spacing 2.2 r, every one of them near others: the all-pairs
+  // check compared 8·10^8 pairs; the cell grid compares each ball with those in its 3 x 3 cells.
+  Setup setup = empty_table();
+  setup.radius = 0.001;
+  const int side = 200;
+  setup.width = setup.height = (side + 1) * 2.2 * setup.radius;
+  for (int i = 0; i < side; ++i) {
+    for (int j = 0; j < side; ++j) {
+      setup.balls.push_back({Vector((i + 1) * 2.2 * setup.radius, (j + 1) * 2.2 * setup.radius), Vector(0, 0)});
+    }
+  }
+  const std::size_t compared = validate(setup);
+  CHECK(compared <= 8 * setup.balls.size());
+  // And it still finds an overlap anywhere in it.
+  setup.balls.back().position = setup.balls.front().position + Vector(setup.radius, 0);
+  CHECK_THROWS_WITH(validate(setup), Catch::Contains("balls 0 and 39999 overlap"));
+}
+
+TEST_CASE("Radii too small for the table's rounding are rejected up front", "[examples][table]") {
+  Setup setup = empty_table();
+  setup.radius = 1e-6;
+  setup.balls = {{Vector(1, 0.5), Vector(1, 0)}};
+  CHECK_THROWS_WITH(validate(setup), Catch::Contains("radius is 1e-06, expected at least 9.0") ||
+                                         Catch::Contains("radius is 1e-06, expected at least 9.02"));
+  setup.radius = 1e-4;
+  CHECK_NOTHROW(validate(setup));
+}
+
+TEST_CASE("A ball crawling at 1e-300 hits the ball in its way", "[examples][table]") {
+  Setup setup = empty_table();
+  setup.balls = {{Vector(1, 0.6), Vector(1e-300, 0)}, {Vector(1.5, 0.6), Vector(0, 0)}};
+  Simulation simulation(setup);
+  const Event event = simulation.step();
+  CHECK(event.kind == Event::Kind::ball);
+  CHECK(event.resolved);
+  CHECK(event.time == Approx((0.5 - 2 * setup.radius) / 1e-300));
+  CHECK(simulation.ball_collisions() == 1);
+  CHECK(simulation.largest_overlap() <= Simulation::overlap_tolerance);
 }
 
 TEST_CASE("Trajectories as SVG", "[examples][table]") {

@@ -1,0 +1,135 @@
+// Writing a file so that nothing is ever half-written, shared by billiards-derive and the examples
+// (internal: not installed). The contents go to a temporary file created in the destination folder
+// with mkstemp (a unique name, O_CREAT | O_EXCL: it never opens an existing file or follows a link
+// planted there), are flushed to disk, and the file is renamed over the destination (rename replaces a
+// link at the destination itself, never what it points to). Every failure removes the temporary file;
+// so do SIGINT, SIGTERM and SIGHUP while one is open. A run killed outright (SIGKILL) leaves its
+// temporary behind: its name carries the writer's process id, and the next write to the same
+// destination removes the temporaries of processes that no longer exist.
+#pragma once
+
+#include <cerrno>
+#include <csignal>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <stdexcept>
+#include <string>
+#include <system_error>
+#include <vector>
+
+#include <fcntl.h>
+#include <signal.h>
+#include <sys/stat.h>
+#include <sys/types.h>
+#include <unistd.h>
+
+namespace billiards_support {
+
+namespace detail {
+
+// The temporary file being written, for the signal handler: a fixed buffer (no allocation in the
+// handler), marked valid by `pending`.
+inline char pending_path[4096];
+inline volatile std::sig_atomic_t pending = 0;
+
+extern "C" inline void remove_pending_and_reraise(int signal_number) {
+  if (pending) ::unlink(pending_path);
+  std::signal(signal_number, SIG_DFL);
+  std::raise(signal_number);
+}
+
+// Installs the handler for SIGINT, SIGTERM and SIGHUP where the program has not set its own.
+inline void install_signal_cleanup() {
+  static const bool installed = [] {
+    for (const int signal_number : {SIGINT, SIGTERM, SIGHUP}) {
+      struct sigaction current {};
+      if (::sigaction(signal_number, nullptr, &current) == 0 && current.sa_handler == SIG_DFL) {
+        struct sigaction cleanup {};
+        cleanup.sa_handler = remove_pending_and_reraise;
+        sigemptyset(&cleanup.sa_mask);
+        ::sigaction(signal_number, &cleanup, nullptr);
+      }
+    }
+    return true;
+  }();
+  static_cast<void>(installed);
+}
+
+/// The prefix of every temporary file for `path`: ".NAME.tmp-".
+inline std::string temporary_prefix(const std::filesystem::path& path) {
+  return "." + path.filename().string() + ".tmp-";
+}
+
+}  // namespace detail
+
+/// Removes the temporary files that earlier writes to `path` left behind when they were killed:
+/// regular files (never links) named ".NAME.tmp-PID-XXXXXX" in path's folder whose process PID no
+/// longer exists. Errors are ignored: this is housekeeping.
+inline void remove_stale_temporaries(const std::filesystem::path& path) {
+  namespace fs = std::filesystem;
+  const fs::path folder = path.has_parent_path() ? path.parent_path() : fs::path(".");
+  const std::string prefix = detail::temporary_prefix(path);
+  std::error_code error;
+  for (fs::directory_iterator entry(folder, error), end; !error && entry != end; entry.increment(error)) {
+    const std::string name = entry->path().filename().string();
+    if (name.compare(0, prefix.size(), prefix) != 0) continue;
+    char* after = nullptr;
+    const long pid = std::strtol(name.c_str() + prefix.size(), &after, 10);
+    if (pid <= 0 || after == nullptr || *after != '-') continue;
+    if (::kill(static_cast<pid_t>(pid), 0) == 0 || errno != ESRCH) continue;  // alive, or not ours to judge
+    std::error_code ignored;
+    if (fs::is_regular_file(fs::symlink_status(entry->path(), ignored))) fs::remove(entry->path(), ignored);
+  }
+}
+
+/// Writes `contents` to `path` atomically (see the top of this file). Throws std::runtime_error
+/// naming the path and the reason (the system's, never a stale errno) on any failure, leaving `path`
+/// as it was and no temporary file behind.
+inline void write_file_atomically(const std::filesystem::path& path, const std::string& contents) {
+  namespace fs = std::filesystem;
+  const auto failure = [&](const std::string& what, int code) {
+    return std::runtime_error("cannot write '" + path.string() + "': " + what +
+                              (code != 0 ? std::string(": ") + std::strerror(code) : std::string()));
+  };
+  if (path.filename().empty()) throw failure("expected a file name, not a folder", 0);
+  std::error_code status_error;
+  if (fs::is_directory(fs::status(path, status_error))) throw failure("it is a folder, expected a file", 0);
+  const fs::path folder = path.has_parent_path() ? path.parent_path() : fs::path(".");
+  remove_stale_temporaries(path);
+  detail::install_signal_cleanup();
+  const std::string pattern =
+      (folder / (detail::temporary_prefix(path) + std::to_string(::getpid()) + "-XXXXXX")).string();
+  if (pattern.size() >= sizeof(detail::pending_path)) throw failure("the path is too long", ENAMETOOLONG);
+  std::vector<char> name(pattern.begin(), pattern.end());
+  name.push_back('\0');
+  const int descriptor = ::mkstemp(name.data());  // O_CREAT | O_EXCL, mode 0600
+  if (descriptor < 0) throw failure("cannot create a temporary file in '" + folder.string() + "'", errno);
+  const std::string temporary(name.data());
+  std::memcpy(detail::pending_path, temporary.c_str(), temporary.size() + 1);
+  detail::pending = 1;
+  const auto give_up = [&](const std::string& what, int code, bool close_it) {
+    if (close_it) ::close(descriptor);
+    ::unlink(temporary.c_str());
+    detail::pending = 0;
+    return failure(what, code);
+  };
+  std::size_t written = 0;
+  while (written < contents.size()) {
+    const ssize_t n = ::write(descriptor, contents.data() + written, contents.size() - written);
+    if (n < 0) {
+      if (errno == EINTR) continue;
+      throw give_up("writing '" + temporary + "' failed", errno, true);
+    }
+    written += static_cast<std::size_t>(n);
+  }
+  // mkstemp creates 0600; the outputs are ordinary files, readable like any other.
+  if (::fchmod(descriptor, 0644) != 0) throw give_up("chmod failed", errno, true);
+  if (::fsync(descriptor) != 0) throw give_up("fsync failed", errno, true);
+  if (::close(descriptor) != 0) throw give_up("close failed", errno, false);
+  if (std::rename(temporary.c_str(), path.c_str()) != 0) throw give_up("rename failed", errno, false);
+  detail::pending = 0;
+}
+
+}  // namespace billiards_support
