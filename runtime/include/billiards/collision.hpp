@@ -89,7 +89,7 @@ template <typename DV, typename DD>
 [[nodiscard]] PlainVector<DV> plus_multiple(const Eigen::MatrixBase<DV>& v, typename DV::Scalar c,
                                             const Eigen::MatrixBase<DD>& d) noexcept {
   PlainVector<DV> result;
-  for (Eigen::Index k = 0; k < result.size(); ++k) result[k] = plus_multiple(v[k], c, d[k]);
+  for (Eigen::Index k = 0; k < v.size(); ++k) result[k] = plus_multiple(v[k], c, d[k]);
   return result;
 }
 

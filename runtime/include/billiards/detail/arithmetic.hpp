@@ -19,11 +19,15 @@ template <std::size_t Dimension, typename A, typename B>
   return sum;
 }
 
-/// v + c d, and v itself (every bit, the sign of a zero included) when c is zero: an unchanged
-/// velocity stays unchanged, −0 is not turned into +0. A select, so loops of it still vectorise.
+/// v + c d, and v itself (every bit, the sign of a zero included) when c d is zero: an unchanged
+/// velocity stays unchanged, −0 is not turned into +0. Computed as v − (0 − c d): 0 − c d is
+/// −(c d) exactly, and +0 for either zero, and v − (+0) = v for every v (±0 included), whereas
+/// v + (+0) turns −0 into +0. No select, so loops of it vectorise at any target (GCC does not if-convert
+/// a floating-point comparison under -ftrapping-math without masking). Needs signed zeros (not
+/// -fno-signed-zeros, which -ffast-math implies and which may fold it into v + c d).
 template <typename Scalar>
 [[nodiscard]] constexpr Scalar plus_multiple(Scalar v, Scalar c, Scalar d) noexcept {
-  return c == Scalar(0) ? v : v + c * d;
+  return v - (Scalar(0) - c * d);
 }
 
 }  // namespace billiards::detail
