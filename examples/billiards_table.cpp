@@ -21,6 +21,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <limits>
 #include <optional>
 #include <string>
 
@@ -158,7 +159,10 @@ int main(int argc, char** argv) {
   }
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const long double final_energy = simulation.kinetic_energy();
-  const double drift = static_cast<double>(std::fabs(final_energy - initial_energy) / initial_energy);
+  // Relative to the initial energy; NaN (which fails any --max-drift) when there was none.
+  const double drift = initial_energy > 0
+                           ? static_cast<double>(std::fabs(final_energy - initial_energy) / initial_energy)
+                           : std::numeric_limits<double>::quiet_NaN();
 
   std::printf("billiards-table: %zu balls on a %g x %g table (radius %g)\n", setup.balls.size(), setup.width,
               setup.height, setup.radius);
