@@ -74,22 +74,23 @@ int main(int argc, char** argv) {
   };
   app.add_option("--balls", balls, "Number of balls placed at random (default 16)")->check(positive_count);
   app.add_option("--width", table.width, "Table width in metres (default 2.54)")->check(number(true));
-  app.add_option("--height", table.height, "Table height in metres (default 1.27)")
-      ->check(number(true));
-  app.add_option("--radius", table.radius, "Ball radius in metres (default 0.028575)")
-      ->check(number(true));
+  app.add_option("--height", table.height, "Table height in metres (default 1.27)")->check(number(true));
+  app.add_option("--radius", table.radius, "Ball radius in metres (default 0.028575)")->check(number(true));
   app.add_option("--seed", seed, "Seed of the random placement (default 1)")->check(whole_number);
-  app.add_option("--collisions", collisions, "Ball-ball collisions to run (default 1000000)")->check(whole_number);
-  auto* setup_option =
-      app.add_option("--setup", setup_file, "Read the table and balls from FILE (format: examples/README.md)");
+  app.add_option("--collisions", collisions, "Ball-ball collisions to run (default 1000000)")
+      ->check(whole_number);
+  auto* setup_option = app.add_option("--setup", setup_file,
+                                      "Read the table and balls from FILE (format: examples/README.md)");
   app.add_flag("--break", break_shot, "Rack 15 balls and strike the cue ball at the apex")
       ->excludes(setup_option);
   app.add_option("--svg", svg_file, "Write the trajectories of the first --svg-events events to FILE");
   app.add_option("--svg-events", svg_events, "Events drawn in the SVG (default 120)")->check(positive_count);
-  app.add_option("--max-drift", max_drift, "Exit 1 if the relative drift of the kinetic energy exceeds this (or is NaN)")
+  app.add_option("--max-drift", max_drift,
+                 "Exit 1 if the relative drift of the kinetic energy exceeds this (or is NaN)")
       ->check(number(false));
-  app.add_option("--max-events-without-collision", max_quiet_events,
-                 "Stop (exit 4) after this many events in a row without a ball-ball collision (default 1000000)")
+  app.add_option(
+         "--max-events-without-collision", max_quiet_events,
+         "Stop (exit 4) after this many events in a row without a ball-ball collision (default 1000000)")
       ->check(positive_count);
   app.add_option("--check-every-pair", check_every_pair,
                  "Check every pair for overlap at each event (default true; false: the event's balls only)");
@@ -139,8 +140,9 @@ int main(int argc, char** argv) {
       const Event event = simulation.step();
       quiet = simulation.ball_collisions() == before ? quiet + 1 : 0;
       if (quiet >= max_quiet_events) {
-        std::cerr << "billiards-table: stopped after " << quiet << " events in a row without a ball-ball collision ("
-                  << simulation.ball_collisions() << " of " << collisions
+        std::cerr << "billiards-table: stopped after " << quiet
+                  << " events in a row without a ball-ball collision (" << simulation.ball_collisions()
+                  << " of " << collisions
                   << " done): the balls' paths do not meet (--max-events-without-collision)\n";
         return 4;
       }
@@ -189,7 +191,8 @@ int main(int argc, char** argv) {
     }
   }
   if (max_drift && !(drift <= *max_drift)) {  // a NaN drift fails any bound
-    std::cerr << "billiards-table: the relative drift " << drift << " exceeds --max-drift " << *max_drift << "\n";
+    std::cerr << "billiards-table: the relative drift " << drift << " exceeds --max-drift " << *max_drift
+              << "\n";
     return 1;
   }
   return 0;

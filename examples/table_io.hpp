@@ -39,7 +39,8 @@ inline constexpr std::size_t largest_setup_file = std::size_t(256) << 20;
 /// `text` for a message: at most 40 characters, the rest elided.
 inline std::string excerpt(const std::string& text) {
   constexpr std::size_t shown = 40;
-  return text.size() <= shown ? text : text.substr(0, shown) + "… (" + std::to_string(text.size()) + " characters)";
+  return text.size() <= shown ? text
+                              : text.substr(0, shown) + "… (" + std::to_string(text.size()) + " characters)";
 }
 
 /// A number in a setup file: a finite double, the whole word (strtod, so subnormal values such as
@@ -50,11 +51,13 @@ inline double parse_number(const std::string& word, const std::string& where, co
   const double value = std::strtod(word.c_str(), &end);
   const bool whole = end != nullptr && *end == '\0' && !word.empty();
   if (!whole || !std::isfinite(value)) {
-    throw std::invalid_argument(where + "'" + excerpt(word) + "' is not a finite number, expected " + expected);
+    throw std::invalid_argument(where + "'" + excerpt(word) + "' is not a finite number, expected " +
+                                expected);
   }
   if (errno == ERANGE && value == 0) {
     throw std::invalid_argument(where + "'" + excerpt(word) +
-                                "' is below the smallest subnormal number (it would read as 0), expected " + expected);
+                                "' is below the smallest subnormal number (it would read as 0), expected " +
+                                expected);
   }
   return value;
 }
@@ -86,7 +89,8 @@ inline Setup read_setup(std::istream& in, const std::string& source) {
     if (in.bad()) throw std::invalid_argument(where + "cannot read the file: " + std::strerror(errno));
     total += line.size() + 1;
     if (total > largest_setup_file) {
-      throw std::invalid_argument(where + "the file is larger than " + std::to_string(largest_setup_file >> 20) +
+      throw std::invalid_argument(where + "the file is larger than " +
+                                  std::to_string(largest_setup_file >> 20) +
                                   " MiB, expected a setup (one line per ball)");
     }
     if (!ended && line.empty()) break;  // the end of the file
@@ -137,8 +141,8 @@ inline Setup read_setup_file(const std::string& path) {
   errno = 0;
   std::ifstream in(path, std::ios::binary);
   if (!in.is_open()) {
-    throw std::invalid_argument(path + ": cannot open the setup file: " +
-                                (errno != 0 ? std::strerror(errno) : "unknown reason"));
+    throw std::invalid_argument(
+        path + ": cannot open the setup file: " + (errno != 0 ? std::strerror(errno) : "unknown reason"));
   }
   std::error_code error;
   if (std::filesystem::is_directory(path, error)) {

@@ -30,9 +30,9 @@ struct Ball {
 /// Where a setup's values were read, for messages: "FILE:LINE: " prefixes (empty for a setup built in
 /// code, or for a value left at its default).
 struct Origin {
-  std::string file;                ///< "FILE: ", for what has no line of its own
+  std::string file;                 ///< "FILE: ", for what has no line of its own
   std::string table, radius, mass;  ///< the line of each directive
-  std::vector<std::string> balls;  ///< the line of each ball
+  std::vector<std::string> balls;   ///< the line of each ball
 };
 
 /// A table and the balls on it. All balls have the same radius and mass.
@@ -71,7 +71,9 @@ inline bool on_table(const Setup& setup, const Vector& p, double slack = 0) {
 /// pairs of balls it compared (a handful per ball; the tests hold it to that).
 inline std::size_t validate(const Setup& setup) {
   const Origin& origin = setup.origin;
-  const auto ball_origin = [&](std::size_t i) { return i < origin.balls.size() ? origin.balls[i] : origin.file; };
+  const auto ball_origin = [&](std::size_t i) {
+    return i < origin.balls.size() ? origin.balls[i] : origin.file;
+  };
   const auto fail = [](const std::string& where, const std::string& message) {
     throw std::invalid_argument(where + message);
   };
@@ -99,7 +101,8 @@ inline std::size_t validate(const Setup& setup) {
   }
   if (!(2 * r < setup.width && 2 * r < setup.height)) {
     std::ostringstream text;
-    text << "radius is " << r << ", expected less than half the table's " << setup.width << " x " << setup.height;
+    text << "radius is " << r << ", expected less than half the table's " << setup.width << " x "
+         << setup.height;
     fail(radius_origin, text.str());
   }
   if (setup.balls.empty()) fail(origin.file, "no balls: expected at least one");
@@ -123,7 +126,9 @@ inline std::size_t validate(const Setup& setup) {
   // compared with a bounded number of others. The cell indices are small: the radius is at least
   // smallest_radius(), so a side has at most about 10^8 cells.
   const double cell = 2 * r;
-  const auto key = [](std::int64_t x, std::int64_t y) { return (static_cast<std::uint64_t>(x) << 32) ^ static_cast<std::uint64_t>(y); };
+  const auto key = [](std::int64_t x, std::int64_t y) {
+    return (static_cast<std::uint64_t>(x) << 32) ^ static_cast<std::uint64_t>(y);
+  };
   std::unordered_map<std::uint64_t, std::vector<std::size_t>> cells;
   std::size_t compared = 0;
   cells.reserve(setup.balls.size());
@@ -139,8 +144,8 @@ inline std::size_t validate(const Setup& setup) {
           ++compared;
           if (overlap(setup, j, i) > 0) {
             std::ostringstream text;
-            text << "balls " << j << " and " << i << " overlap: their centres are " << 2 * r - overlap(setup, j, i)
-                 << " apart, expected at least two radii (" << 2 * r << ")";
+            text << "balls " << j << " and " << i << " overlap: their centres are "
+                 << 2 * r - overlap(setup, j, i) << " apart, expected at least two radii (" << 2 * r << ")";
             fail(ball_origin(i), text.str());
           }
         }

@@ -160,7 +160,8 @@ TEST_CASE("Setup files", "[examples][table]") {
   }
   SECTION("every validation error names the line it comes from") {
     std::istringstream off("# a comment\nball 1 0.5 0 0\n\nball 3 0.5 0 0\n");
-    CHECK_THROWS_WITH(read_setup(off, "bad.setup"), Catch::StartsWith("bad.setup:4: ball 1 at (3, 0.5) is outside"));
+    CHECK_THROWS_WITH(read_setup(off, "bad.setup"),
+                      Catch::StartsWith("bad.setup:4: ball 1 at (3, 0.5) is outside"));
     std::istringstream radius("ball 1 0.5 0 0\nradius -1\n");
     CHECK_THROWS_WITH(read_setup(radius, "bad.setup"), Catch::StartsWith("bad.setup:2: radius is -1"));
     std::istringstream mass("mass 0\nball 1 0.5 0 0\n");
@@ -174,7 +175,8 @@ TEST_CASE("Setup files", "[examples][table]") {
     std::istringstream tiny("ball 1 0.5 1e-310 0\n");
     CHECK(read_setup(tiny, "tiny.setup").balls[0].velocity.x() == 1e-310);
     std::istringstream zero("ball 1 0.5 1e-400 0\n");
-    CHECK_THROWS_WITH(read_setup(zero, "bad.setup"), Catch::Contains("'1e-400' is below the smallest subnormal"));
+    CHECK_THROWS_WITH(read_setup(zero, "bad.setup"),
+                      Catch::Contains("'1e-400' is below the smallest subnormal"));
     std::istringstream huge("ball 1 0.5 1e400 0\n");
     CHECK_THROWS_WITH(read_setup(huge, "bad.setup"), Catch::Contains("'1e400' is not a finite number"));
   }
@@ -197,13 +199,15 @@ TEST_CASE("Setup files", "[examples][table]") {
     }
   }
   SECTION("a file that cannot be opened says why") {
-    CHECK_THROWS_WITH(read_setup_file("/nonexistent/table.setup"),
-                      Catch::Contains("/nonexistent/table.setup: cannot open the setup file: No such file or directory"));
+    CHECK_THROWS_WITH(
+        read_setup_file("/nonexistent/table.setup"),
+        Catch::Contains("/nonexistent/table.setup: cannot open the setup file: No such file or directory"));
     CHECK_THROWS_WITH(read_setup_file("/tmp"), Catch::Contains("is a folder"));
   }
 }
 
-TEST_CASE("Validation compares each ball with a handful of neighbours, not with every ball", "[examples][table]") {
+TEST_CASE("Validation compares each ball with a handful of neighbours, not with every ball",
+          "[examples][table]") {
   // 40 000 balls in a square lattice of spacing 2.2 r, every one of them near others: the all-pairs
   // check compared 8·10^8 pairs; the cell grid compares each ball with those in its 3 x 3 cells.
   Setup setup = empty_table();
@@ -212,7 +216,8 @@ TEST_CASE("Validation compares each ball with a handful of neighbours, not with 
   setup.width = setup.height = (side + 1) * 2.2 * setup.radius;
   for (int i = 0; i < side; ++i) {
     for (int j = 0; j < side; ++j) {
-      setup.balls.push_back({Vector((i + 1) * 2.2 * setup.radius, (j + 1) * 2.2 * setup.radius), Vector(0, 0)});
+      setup.balls.push_back(
+          {Vector((i + 1) * 2.2 * setup.radius, (j + 1) * 2.2 * setup.radius), Vector(0, 0)});
     }
   }
   const std::size_t compared = validate(setup);

@@ -153,10 +153,11 @@ void require_reference(const char* call, const billiards::Collision<Vector>& res
   if (const char* broken = billiards_fuzz::compare(result, expected)) {
     std::fprintf(stderr, "billiards fuzz: %s: %s\n", call, broken);
     for (int i = 0; i < expected.v1.size(); ++i) {
-      std::fprintf(stderr, "  v1[%d] = %a  v2[%d] = %a  n or d %a  reference %.17Lg ± %.3Lg, %.17Lg ± %.3Lg\n",
-                   i, static_cast<double>(expected.v1[i]), i, static_cast<double>(expected.v2[i]),
-                   static_cast<double>(expected.direction[i]),
-                   expected.first[i], expected.first_bound[i], expected.second[i], expected.second_bound[i]);
+      std::fprintf(stderr,
+                   "  v1[%d] = %a  v2[%d] = %a  n or d %a  reference %.17Lg ± %.3Lg, %.17Lg ± %.3Lg\n", i,
+                   static_cast<double>(expected.v1[i]), i, static_cast<double>(expected.v2[i]),
+                   static_cast<double>(expected.direction[i]), expected.first[i], expected.first_bound[i],
+                   expected.second[i], expected.second_bound[i]);
     }
     fail("agreement with the long-double reference", result);
   }
@@ -171,8 +172,9 @@ void exercise_time_of_impact(Shaper& shape) {
   const Vector p1 = shape.vector<Vector>() * length, p2 = shape.vector<Vector>() * length;
   const Vector v1 = shape.vector<Vector>() * speed;
   // Half the inputs aimed at the other ball, so that hits are common.
-  const Vector v2 = shape.byte() % 2 ? Vector(shape.vector<Vector>() * speed)
-                                     : Vector(v1 - (p2 - p1) * (speed / length) + shape.vector<Vector>() * speed / 64);
+  const Vector v2 = shape.byte() % 2
+                        ? Vector(shape.vector<Vector>() * speed)
+                        : Vector(v1 - (p2 - p1) * (speed / length) + shape.vector<Vector>() * speed / 64);
   const Scalar r = shape.special_or(std::fabs(shape.component<Scalar>()) * length);
   ++all_inputs;
   try {
@@ -217,7 +219,8 @@ void exercise(Shaper& shape) {
         const Scalar e = shape.restitution<Scalar>();
         const auto result = billiards::checked::collide(m1, v1, m2, v2, n, e);
         require_finite(result);
-        require_reference("collide with restitution", result, expected_collision(m1, v1, m2, v2, n, e, /*unit=*/true));
+        require_reference("collide with restitution", result,
+                          expected_collision(m1, v1, m2, v2, n, e, /*unit=*/true));
         break;
       }
       case 2: {
@@ -225,7 +228,8 @@ void exercise(Shaper& shape) {
         const Scalar e = shape.restitution<Scalar>();
         const auto result = billiards::checked::collide_along_direction(m1, v1, m2, v2, d, e);
         require_finite(result);
-        require_reference("collide_along_direction", result, expected_collision(m1, v1, m2, v2, d, e, /*unit=*/false));
+        require_reference("collide_along_direction", result,
+                          expected_collision(m1, v1, m2, v2, d, e, /*unit=*/false));
         break;
       }
       case 3: {

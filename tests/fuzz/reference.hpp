@@ -58,7 +58,8 @@ Expected<Vector> expected_collision(typename Vector::Scalar m1, const Vector& v1
   const Long s = (b - a).dot(n) / dd;
   const Long spread = (a.cwiseAbs() + b.cwiseAbs()).dot(n.cwiseAbs()) / dd;  // bounds the rounding of s
   const Long c1 = coefficient(m1, m2, e), c2 = coefficient(m2, m1, e);
-  const Long epsilon = std::numeric_limits<Scalar>::epsilon(), tiny = std::numeric_limits<Scalar>::denorm_min();
+  const Long epsilon = std::numeric_limits<Scalar>::epsilon(),
+             tiny = std::numeric_limits<Scalar>::denorm_min();
   Expected<Vector> expected;
   expected.first = a + c1 * s * n;
   expected.second = b - c2 * s * n;
@@ -105,11 +106,13 @@ template <typename Vector>
 Expected<Vector> expected_reflection(const Vector& v, const Vector& n, const Vector& v2) {
   using Scalar = typename Vector::Scalar;
   const LongVector<Vector> a = to_long(v), u = to_long(n);
-  const Long epsilon = std::numeric_limits<Scalar>::epsilon(), tiny = std::numeric_limits<Scalar>::denorm_min();
+  const Long epsilon = std::numeric_limits<Scalar>::epsilon(),
+             tiny = std::numeric_limits<Scalar>::denorm_min();
   Expected<Vector> expected;
   expected.first = a - 2 * a.dot(u) * u;
-  expected.first_bound = tolerance * epsilon * (a.cwiseAbs() + 2 * a.cwiseAbs().dot(u.cwiseAbs()) * u.cwiseAbs()) +
-                         LongVector<Vector>::Constant(4 * tiny);
+  expected.first_bound =
+      tolerance * epsilon * (a.cwiseAbs() + 2 * a.cwiseAbs().dot(u.cwiseAbs()) * u.cwiseAbs()) +
+      LongVector<Vector>::Constant(4 * tiny);
   expected.second = to_long(v2);
   expected.second_bound = LongVector<Vector>::Zero();
   expected.v1 = v;
@@ -129,11 +132,9 @@ const char* compare(const billiards::Collision<Vector>& result, const Expected<V
     return nullptr;
   }
   if (!expected.collision) return "a separating pair was not returned unchanged (bit for bit)";
-  const bool close = ((to_long(result.first) - expected.first).cwiseAbs().array() <= expected.first_bound.array())
-                         .all() &&
-                     ((to_long(result.second) - expected.second).cwiseAbs().array() <=
-                      expected.second_bound.array())
-                         .all();
+  const bool close =
+      ((to_long(result.first) - expected.first).cwiseAbs().array() <= expected.first_bound.array()).all() &&
+      ((to_long(result.second) - expected.second).cwiseAbs().array() <= expected.second_bound.array()).all();
   return close ? nullptr : "the result is farther from the reference than rounding allows";
 }
 
@@ -155,7 +156,7 @@ const char* compare_time(typename Vector::Scalar t, const Vector& p1, const Vect
   const Long discriminant = a * rr - cross;
   const Long epsilon = std::numeric_limits<Scalar>::epsilon(), K = tolerance;
   const Long length = std::sqrt(pp), speed = std::sqrt(a);
-  const bool approaching = b < -K * epsilon * length * speed, separating = b > K * epsilon * length * speed;
+  const bool approaching = b<-K * epsilon * length * speed, separating = b> K * epsilon * length * speed;
   const Long discriminant_error = K * epsilon * (a * rr + length * speed * std::sqrt(cross));
   const bool hit = discriminant > discriminant_error, miss = discriminant < -discriminant_error;
   if (a == 0 || separating || miss) {
@@ -169,8 +170,10 @@ const char* compare_time(typename Vector::Scalar t, const Vector& p1, const Vect
     const Long bound = K * epsilon * ((pp + rr) / denominator + root * length * speed / denominator) +
                        root * discriminant_error / (2 * std::sqrt(discriminant)) / denominator +
                        std::numeric_limits<Scalar>::denorm_min();
-    if (std::isinf(t)) return root + bound >= largest ? nullptr : "+infinity (no contact) where the spheres surely hit";
-    return std::fabs(Long(t) - root) <= bound ? nullptr : "a time farther from the reference root than rounding allows";
+    if (std::isinf(t))
+      return root + bound >= largest ? nullptr : "+infinity (no contact) where the spheres surely hit";
+    return std::fabs(Long(t) - root) <= bound ? nullptr
+                                              : "a time farther from the reference root than rounding allows";
   }
   // Within rounding of a graze or of standing still: +∞; 0 for spheres that touch or overlap (to
   // rounding); or a time that solves the inputs to rounding.

@@ -10,7 +10,6 @@
 #include <limits>
 #include <random>
 
-
 namespace {
 
 template <typename Scalar>
@@ -26,8 +25,8 @@ bool finite(const billiards::Collision<Vector>& result) {
 
 }  // namespace
 
-TEMPLATE_TEST_CASE("Under -ffast-math the checked calls accept only what they can compute", "[runtime][fast_math]",
-                   float, double) {
+TEMPLATE_TEST_CASE("Under -ffast-math the checked calls accept only what they can compute",
+                   "[runtime][fast_math]", float, double) {
   using Scalar = TestType;
   using Vector = Eigen::Matrix<Scalar, 3, 1>;
   using limits = std::numeric_limits<Scalar>;
@@ -67,39 +66,62 @@ TEMPLATE_TEST_CASE("Under -ffast-math the checked calls accept only what they ca
       const Vector v1 = random_vector(), v2 = random_vector();
       run([&] { return billiards::checked::collide(opaque(m1), v1, opaque(m2), v2, n); }, collision_finite);
       run([&] { return billiards::checked::collide(m1, v1, m2, v2, n, Scalar(0.5)); }, collision_finite);
-      run([&] { return billiards::checked::collide_along_direction(opaque(m1), v1, m2, v2, random_vector()); },
+      run(
+          [&] {
+            return billiards::checked::collide_along_direction(opaque(m1), v1, m2, v2, random_vector());
+          },
           collision_finite);
-      run([&] {
-        return billiards::checked::collide_if_approaching(m1, Vector::Zero().eval(), v1, opaque(m2), n, v2);
-      },
+      run(
+          [&] {
+            return billiards::checked::collide_if_approaching(m1, Vector::Zero().eval(), v1, opaque(m2), n,
+                                                              v2);
+          },
           collision_finite);
     }
   }
   // A subnormal mass is rejected, and the message says why; also written as a constant the compiler
   // could fold.
   const Scalar subnormal = limits::denorm_min() * 8;
-  CHECK_THROWS_WITH(billiards::checked::collide(opaque(subnormal), Vector(1, 0, 0), Scalar(1), Vector(-1, 0, 0), n),
-                    Catch::Contains("m1 is") && Catch::Contains("flushed to zero"));
+  CHECK_THROWS_WITH(
+      billiards::checked::collide(opaque(subnormal), Vector(1, 0, 0), Scalar(1), Vector(-1, 0, 0), n),
+      Catch::Contains("m1 is") && Catch::Contains("flushed to zero"));
   CHECK_THROWS_WITH(billiards::checked::collide(Scalar(1), Vector(1, 0, 0), subnormal, Vector(-1, 0, 0), n),
                     Catch::Contains("m2 is") && Catch::Contains("flushed to zero"));
-  run([&] { return billiards::checked::collide(Scalar(1e-41f), Vector(1, 0, 0), Scalar(1e-41f), Vector(-1, 0, 0), n); },
+  run(
+      [&] {
+        return billiards::checked::collide(Scalar(1e-41f), Vector(1, 0, 0), Scalar(1e-41f), Vector(-1, 0, 0),
+                                           n);
+      },
       collision_finite);
   // Directions, separations and contact distances down to the smallest subnormal.
   for (int k = limits::min_exponent - limits::digits; k < limits::max_exponent / 2 - 8; k += 5) {
     const Scalar tiny = std::ldexp(Scalar(1), k);
     const Vector small = random_vector() * tiny;
-    run([&] { return billiards::checked::collide_along_direction(Scalar(1), random_vector(), Scalar(2), random_vector(), small); },
+    run(
+        [&] {
+          return billiards::checked::collide_along_direction(Scalar(1), random_vector(), Scalar(2),
+                                                             random_vector(), small);
+        },
         collision_finite);
-    run([&] {
-      return billiards::checked::collide_if_approaching(Scalar(1), Vector::Zero().eval(), random_vector(),
-                                                        Scalar(2), small, random_vector());
-    },
+    run(
+        [&] {
+          return billiards::checked::collide_if_approaching(Scalar(1), Vector::Zero().eval(), random_vector(),
+                                                            Scalar(2), small, random_vector());
+        },
         collision_finite);
     run([&] { return billiards::checked::reflect(small, n); }, [](const Vector& v) { return v.allFinite(); });
     const auto time_finite_or_infinite = [](Scalar t) { return !std::isnan(t) && t >= 0; };
-    run([&] { return billiards::checked::time_of_impact(Vector::Zero().eval(), small, small, -small, opaque(tiny)); },
+    run(
+        [&] {
+          return billiards::checked::time_of_impact(Vector::Zero().eval(), small, small, -small,
+                                                    opaque(tiny));
+        },
         time_finite_or_infinite);
-    run([&] { return billiards::checked::time_of_impact(Vector::Zero().eval(), random_vector(), Vector(1, 0, 0), small, Scalar(0.1)); },
+    run(
+        [&] {
+          return billiards::checked::time_of_impact(Vector::Zero().eval(), random_vector(), Vector(1, 0, 0),
+                                                    small, Scalar(0.1));
+        },
         time_finite_or_infinite);
   }
   INFO(accepted << " accepted, " << rejected << " rejected");

@@ -25,9 +25,9 @@ bool same_bits(Scalar a, Scalar b) {
 
 }  // namespace
 
-TEMPLATE_TEST_CASE("collide_batch gives collide's results bit for bit", "[runtime][batch]", (Config<float, 1>),
-                   (Config<float, 2>), (Config<float, 3>), (Config<float, 4>), (Config<double, 1>),
-                   (Config<double, 2>), (Config<double, 3>), (Config<double, 4>)) {
+TEMPLATE_TEST_CASE("collide_batch gives collide's results bit for bit", "[runtime][batch]",
+                   (Config<float, 1>), (Config<float, 2>), (Config<float, 3>), (Config<float, 4>),
+                   (Config<double, 1>), (Config<double, 2>), (Config<double, 3>), (Config<double, 4>)) {
   using Scalar = typename TestType::Scalar;
   using Vector = typename TestType::Vector;
   constexpr std::size_t dimension = TestType::dimension;
@@ -42,7 +42,8 @@ TEMPLATE_TEST_CASE("collide_batch gives collide's results bit for bit", "[runtim
     m2[i] = i % 10 == 0 ? std::numeric_limits<Scalar>::infinity()
                         : static_cast<Scalar>(std::pow(10.0, decade(random)));
     Vector direction;
-    for (std::size_t k = 0; k < dimension; ++k) direction[Eigen::Index(k)] = static_cast<Scalar>(component(random));
+    for (std::size_t k = 0; k < dimension; ++k)
+      direction[Eigen::Index(k)] = static_cast<Scalar>(component(random));
     direction.normalize();
     for (std::size_t k = 0; k < dimension; ++k) {
       // Every 7th pair has a ball at rest with negative zeros: the wall's ball must keep them.
@@ -69,7 +70,8 @@ TEMPLATE_TEST_CASE("collide_batch gives collide's results bit for bit", "[runtim
       }
       const auto [y1, y2] = billiards::collide(m1[i], a, m2[i], b, unit);
       for (std::size_t k = 0; k < dimension; ++k) {
-        const bool same = same_bits(v1[k][i], y1[Eigen::Index(k)]) && same_bits(v2[k][i], y2[Eigen::Index(k)]);
+        const bool same =
+            same_bits(v1[k][i], y1[Eigen::Index(k)]) && same_bits(v2[k][i], y2[Eigen::Index(k)]);
         if (!same) {
           ++differing;
           UNSCOPED_INFO("pair " << i << " component " << k << ": batch " << v1[k][i] << ", " << v2[k][i]

@@ -216,8 +216,8 @@ TEMPLATE_TEST_CASE("Beyond the paper", "[runtime][beyond]", (Config<float, 2>), 
   }
 }
 
-TEMPLATE_TEST_CASE("Unchanged means every bit: negative zeros are kept", "[runtime][beyond]", (Config<float, 2>),
-                   (Config<float, 3>), (Config<double, 2>), (Config<double, 3>)) {
+TEMPLATE_TEST_CASE("Unchanged means every bit: negative zeros are kept", "[runtime][beyond]",
+                   (Config<float, 2>), (Config<float, 3>), (Config<double, 2>), (Config<double, 3>)) {
   using Scalar = typename TestType::Scalar;
   using Vector = typename TestType::Vector;
   const auto bits_equal = [](const Vector& a, const Vector& b) {
@@ -228,7 +228,8 @@ TEMPLATE_TEST_CASE("Unchanged means every bit: negative zeros are kept", "[runti
   Vector moving_away = negative_zero;
   moving_away[0] = Scalar(2);  // (2, −0, …): ball 2 moves away from ball 1
   SECTION("a separating pair comes back unchanged, −0 included") {
-    const auto [x1, x2] = billiards::collide_if_approaching(Scalar(1), p1, negative_zero, Scalar(3), p2, moving_away);
+    const auto [x1, x2] =
+        billiards::collide_if_approaching(Scalar(1), p1, negative_zero, Scalar(3), p2, moving_away);
     CHECK(bits_equal(x1, negative_zero));
     CHECK(bits_equal(x2, moving_away));
     CHECK(std::signbit(x1[1]));
@@ -242,8 +243,8 @@ TEMPLATE_TEST_CASE("Unchanged means every bit: negative zeros are kept", "[runti
         billiards::collide(Scalar(1), v, std::numeric_limits<Scalar>::infinity(), negative_zero, n);
     CHECK(bits_equal(x2, negative_zero));
     CHECK(x1[0] == Scalar(1));
-    const auto [y1, y2] =
-        billiards::collide(Scalar(1), v, std::numeric_limits<Scalar>::infinity(), negative_zero, n, Scalar(0.5));
+    const auto [y1, y2] = billiards::collide(Scalar(1), v, std::numeric_limits<Scalar>::infinity(),
+                                             negative_zero, n, Scalar(0.5));
     CHECK(bits_equal(y2, negative_zero));
   }
   SECTION("reflect leaves the tangential −0 alone") {

@@ -156,15 +156,15 @@ TEMPLATE_TEST_CASE("time_of_impact is right at every scale: no miss by underflow
     CHECK(billiards::time_of_impact(origin, from<Vector>(1, 0), from<Vector>(speck, 0), origin, 2 * speck) ==
           Scalar(0));
     // A speck crossing a gap of a hundred radii head on at a tiny speed: (100 − 2) r / s.
-    const Scalar t2 =
-        billiards::time_of_impact(origin, origin, from<Vector>(100 * speck, 0), from<Vector>(-crawl, 0), 2 * speck);
+    const Scalar t2 = billiards::time_of_impact(origin, origin, from<Vector>(100 * speck, 0),
+                                                from<Vector>(-crawl, 0), 2 * speck);
     const long double expected2 = 98.0L * speck / crawl;
     CHECK(std::fabs(t2 - expected2) <= 4 * limits::epsilon() * expected2);
     // A time beyond the largest finite number is +infinity; so is a miss at any scale.
     CHECK(billiards::time_of_impact(origin, origin, from<Vector>(1e30, 0), from<Vector>(-limits::min(), 0),
                                     Scalar(1)) == infinity);
-    CHECK(billiards::time_of_impact(origin, origin, from<Vector>(10 * speck, 3 * speck), from<Vector>(-crawl, 0),
-                                    2 * speck) == infinity);
+    CHECK(billiards::time_of_impact(origin, origin, from<Vector>(10 * speck, 3 * speck),
+                                    from<Vector>(-crawl, 0), 2 * speck) == infinity);
   }
   SECTION("random contacts with lengths and speeds scaled over the whole exponent range") {
     std::mt19937_64 random(20261125);
@@ -193,7 +193,8 @@ TEMPLATE_TEST_CASE("time_of_impact is right at every scale: no miss by underflow
       const long double discriminant = bb * bb - aa * (p.dot(p) - rr);
       const long double scale = bb * bb + aa * (p.dot(p) + rr);
       // Near a graze or a standstill the decision is ill-conditioned: skip those.
-      if (std::fabs(discriminant) < 1e-3L * scale || std::fabs(bb) < 1e-3L * std::sqrt(aa * p.dot(p))) continue;
+      if (std::fabs(discriminant) < 1e-3L * scale || std::fabs(bb) < 1e-3L * std::sqrt(aa * p.dot(p)))
+        continue;
       const long double reference = paper::time_of_impact<N>(exact(origin), exact(u1), p, exact(u2), r);
       const Scalar t = billiards::time_of_impact(origin, u1, q, u2, r);
       INFO("sample " << sample << ", lengths 2^" << a << ", speeds 2^" << b << ": reference "
@@ -214,8 +215,8 @@ TEMPLATE_TEST_CASE("time_of_impact is right at every scale: no miss by underflow
   }
 }
 
-TEMPLATE_TEST_CASE("time_of_impact: centres closer than rounding of the contact distance", "[runtime][time_of_impact]",
-                   (Config<float, 3>), (Config<double, 3>)) {
+TEMPLATE_TEST_CASE("time_of_impact: centres closer than rounding of the contact distance",
+                   "[runtime][time_of_impact]", (Config<float, 3>), (Config<double, 3>)) {
   using Scalar = typename TestType::Scalar;
   using Vector = typename TestType::Vector;
   // Found by the fuzzer: centres 1.2e-34 apart inside spheres of contact distance 2^47, approaching
@@ -225,6 +226,7 @@ TEMPLATE_TEST_CASE("time_of_impact: centres closer than rounding of the contact 
       v2(0, Scalar(-4.1100897336975636e-16), Scalar(9.3132257461547852e-10));
   const Scalar r = Scalar(140737479966720.0);
   CHECK(billiards::time_of_impact(origin, v1, p2, v2, r) == 0);
-  CHECK(billiards::time_of_impact(origin, v2, p2, v1, r) == std::numeric_limits<Scalar>::infinity());  // separating
+  CHECK(billiards::time_of_impact(origin, v2, p2, v1, r) ==
+        std::numeric_limits<Scalar>::infinity());  // separating
   CHECK(billiards::checked::time_of_impact(origin, v1, p2, v2, r) == 0);
 }

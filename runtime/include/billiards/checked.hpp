@@ -8,13 +8,13 @@
 
 #include <algorithm>
 #include <bit>
-#include <cstdint>
-#include <type_traits>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 #include <utility>
 
 namespace billiards {
@@ -116,7 +116,8 @@ template <typename Scalar>
 /// compares below the smallest normal); true otherwise.
 template <typename Scalar>
 [[nodiscard]] bool survives_flushing(Scalar x) noexcept {
-  return !subnormals_flushed<Scalar>() || !(is_subnormal(x) || std::fabs(x) < std::numeric_limits<Scalar>::min());
+  return !subnormals_flushed<Scalar>() ||
+         !(is_subnormal(x) || std::fabs(x) < std::numeric_limits<Scalar>::min());
 }
 
 template <typename Scalar>
@@ -158,7 +159,8 @@ void check_direction(const char* function, const char* name, const Eigen::Matrix
   check_components(function, name, d, "a direction");
   if (d.isZero(0)) throw invalid_argument(function, name, to_text(d), "a non-zero direction");
   if (!survives_flushing(d.cwiseAbs().maxCoeff())) {
-    throw invalid_argument(function, name, to_text(d), "a direction with a component" + flushed_note<Scalar>());
+    throw invalid_argument(function, name, to_text(d),
+                           "a direction with a component" + flushed_note<Scalar>());
   }
 }
 
@@ -236,23 +238,23 @@ template <typename DP1, typename D1, typename DP2, typename D2>
   detail::check_collision(function, m1, v1, m2, v2, restitution);
   detail::check_components(function, "p1", p1, "a position");
   detail::check_components(function, "p2", p2, "a position");
+  using Scalar = typename D1::Scalar;
   if ((p2 - p1).isZero(0) || !detail::survives_flushing((p2 - p1).cwiseAbs().maxCoeff())) {
+    const std::string flushed =
+        subnormals_flushed<Scalar>() ? ", by a difference" + detail::flushed_note<Scalar>() : std::string();
     throw invalid_argument(function, "p2", detail::to_text(p2),
-                           "a centre distinct from p1 = " + detail::to_text(p1) +
-                               (subnormals_flushed<typename D1::Scalar>() ? ", by a difference" +
-                                                                                 detail::flushed_note<typename D1::Scalar>()
-                                                                           : std::string()));
+                           "a centre distinct from p1 = " + detail::to_text(p1) + flushed);
   }
   return billiards::collide_if_approaching(m1, p1, v1, m2, p2, v2, restitution);
 }
 
 /// billiards::time_of_impact, validated: positions and velocities finite with components of magnitude
 /// at most component_limit(), the contact distance positive, at most component_limit() and at least
-/// relative_contact_distance_limit() · |p2 − p1|, and
-/// max(|p2 − p1|, contact distance) · |v2 − v1| at most √(largest finite)/8 (the domain of 0.1; the
-/// call scales lengths and speeds by powers of two, so no square it forms overflows or underflows
-/// anyway). Within it the time is right at every scale. The result is never NaN: a time ≥ 0, or +∞ when the spheres never touch
-/// (or would touch only after more than the largest finite time).
+/// relative_contact_distance_limit() · |p2 − p1|, and max(|p2 − p1|, contact distance) · |v2 − v1| at
+/// most √(largest finite)/8 (the domain of 0.1; the call scales lengths and speeds by powers of two, so
+/// no square it forms overflows or underflows anyway). Within it the time is right at every scale. The
+/// result is never NaN: a time ≥ 0, or +∞ when the spheres never touch (or would touch only after
+/// more than the largest finite time).
 /// \throws billiards::invalid_argument naming the first argument out of its domain ("v2 − v1" for a
 ///         relative speed too large for the distances involved)
 template <typename DP1, typename D1, typename DP2, typename D2>

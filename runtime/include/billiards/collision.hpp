@@ -79,12 +79,13 @@ constexpr void require_vectors() {
 
 /// a·b, summed in component order by detail::dot (the one definition collide_batch shares).
 template <typename DA, typename DB>
-[[nodiscard]] typename DA::Scalar dot(const Eigen::MatrixBase<DA>& a, const Eigen::MatrixBase<DB>& b) noexcept {
-  return dot<static_cast<std::size_t>(DA::RowsAtCompileTime)>([&](std::size_t k) { return a[Eigen::Index(k)]; },
-                                                              [&](std::size_t k) { return b[Eigen::Index(k)]; });
+[[nodiscard]] typename DA::Scalar dot(const Eigen::MatrixBase<DA>& a,
+                                      const Eigen::MatrixBase<DB>& b) noexcept {
+  return dot<static_cast<std::size_t>(DA::RowsAtCompileTime)>(
+      [&](std::size_t k) { return a[Eigen::Index(k)]; }, [&](std::size_t k) { return b[Eigen::Index(k)]; });
 }
 
-/// v + c d component by component through detail::plus_multiple: where c is 0, v's bits unchanged.
+/// v + c d component by component through detail::plus_multiple: where c d is 0, v's bits unchanged.
 template <typename DV, typename DD>
 [[nodiscard]] PlainVector<DV> plus_multiple(const Eigen::MatrixBase<DV>& v, typename DV::Scalar c,
                                             const Eigen::MatrixBase<DD>& d) noexcept {
@@ -112,9 +113,10 @@ template <typename Derived>
 /// v · 2^exponent, each component correctly rounded (exact unless it falls into the subnormal range):
 /// one multiplication where 2^exponent is a normal number, std::ldexp per component otherwise.
 template <typename Derived>
-[[nodiscard]] PlainVector<Derived> times_power_of_two(const Eigen::MatrixBase<Derived>& v, int exponent) noexcept {
+[[nodiscard]] PlainVector<Derived> times_power_of_two(const Eigen::MatrixBase<Derived>& v,
+                                                      int exponent) noexcept {
   using Scalar = typename Derived::Scalar;
-  constexpr int largest = std::numeric_limits<Scalar>::max_exponent - 1;  // 2^largest is finite
+  constexpr int largest = std::numeric_limits<Scalar>::max_exponent - 1;   // 2^largest is finite
   constexpr int smallest = std::numeric_limits<Scalar>::min_exponent - 1;  // 2^smallest is normal
   if (exponent >= smallest && exponent <= largest) return v * std::ldexp(Scalar(1), exponent);
   PlainVector<Derived> scaled;
@@ -218,8 +220,7 @@ template <typename D1, typename D2, typename DN>
   detail::require_vectors<D1, D2, DN>();
   detail::assert_masses(m1, m2);
   detail::assert_unit(n);
-  const auto change =
-      kernels::elastic_normal_velocity_change(m1, m2, detail::dot(v1, n), detail::dot(v2, n));
+  const auto change = kernels::elastic_normal_velocity_change(m1, m2, detail::dot(v1, n), detail::dot(v2, n));
   return {detail::plus_multiple(v1, change.first, n), detail::plus_multiple(v2, change.second, n)};
 }
 
