@@ -5,7 +5,7 @@
 // derivation audit before it was printed, and names the claims it implements. They take masses
 // and dot products, so they serve vectors of any dimension and need no Eigen.
 //
-// Fingerprint: fnv1a64:03fe7760312f393f (of this header and the audit)
+// Fingerprint: fnv1a64:4bcef5d5268439b1 (of this header and the audit)
 #pragma once
 
 #include <cmath>

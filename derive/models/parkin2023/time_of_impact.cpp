@@ -134,6 +134,35 @@ void time_of_impact_cases(Recorder& record, const TimeOfImpact& toi) {
               "c/(√D − b) does not.",
       .depends_on = {"beyond.time_of_impact.roots"},
   });
+  {
+    // The runtime scales lengths and speeds by powers of two before calling the kernel, so that no
+    // square it forms underflows or overflows: the same contact, at a scaled time.
+    const GiNaC::possymbol lambda("lambda", "\\lambda"), mu("mu", "\\mu");
+    const GiNaC::realsymbol time("t", "t");
+    const auto touching = [](const Vec& p, const Vec& w, const ex& r, const ex& t) {
+      const Vec separation = add(p, scale(t, w));
+      return dot(separation, separation) - r * r;
+    };
+    const ex scaled_touching =
+        touching(scale(lambda, toi.p), scale(mu, toi.w), lambda * toi.r, lambda / mu * time).expand();
+    const ex scaled_stable_root = stable_root.subs(
+        lst{qb == lambda * mu * qb, qc == lambda * lambda * qc, root_of_d == lambda * mu * root_of_d});
+    record.add({
+        .id = "beyond.time_of_impact.scale_invariant",
+        .statement = "Lengths scaled by λ > 0 and speeds by μ > 0 (p → λ p, r → λ r, w → μ w) give the same "
+                     "contact at the time (λ/μ) t: |λ p + (λ/μ) t μ w|² − (λ r)² = λ² (|p + t w|² − r²), and "
+                     "b → λμ b, c → λ² c, √D → λμ √D turn c/(√D − b) into (λ/μ) c/(√D − b). The runtime "
+                     "scales both by powers of two (exactly) so that no square the kernel forms underflows "
+                     "or overflows, and scales the time back.",
+        .method = "substitution in |p + t w|² − r² (3-D components) and in the stable form; identity after "
+                  "expand() and normal()",
+        .comparison = Comparison::identity,
+        .paper_expression =
+            lst{lambda * lambda * touching(toi.p, toi.w, toi.r, time), lambda / mu * stable_root},
+        .derived_expression = lst{scaled_touching, scaled_stable_root},
+        .depends_on = {"beyond.time_of_impact.stable_form"},
+    });
+  }
   record.add({
       .id = "beyond.time_of_impact.no_contact",
       .statement = "t− t+ = c/a and t− + t+ = −2b/a: spheres apart (c > 0) that are not approaching (b ≥ 0) "

@@ -311,7 +311,8 @@ template <typename DP1, typename D1, typename DP2, typename D2>
 /// the spheres are far apart). Audit claims `beyond.time_of_impact.*`; kernel kernels::time_of_impact.
 ///
 /// Positions are scaled by the power of two of max(|p|∞, r) and velocities by that of |w|∞ first
-/// (exact; the time scales back by their ratio), so the answer does not depend on the units: a
+/// (exact; the time scales back by their ratio, audit claim `beyond.time_of_impact.scale_invariant`),
+/// so the answer does not depend on the units: a
 /// relative speed of 1e-161, spheres of radius 1e-170 or a gap of 1e150 give the right time, never a
 /// miss by underflow or overflow.
 ///
@@ -340,7 +341,8 @@ template <typename DP1, typename D1, typename DP2, typename D2>
   using Scalar = typename D1::Scalar;
   const detail::PlainVector<D1> p = p2 - p1, w = v2 - v1;
   // Lengths scaled by 2^−e (e the exponent of max(|p|∞, r)) and speeds by 2^−f (f that of |w|∞)
-  // describe the same contact, at the time t · 2^(f − e). Scaled, the largest length and the largest
+  // describe the same contact, at the time t · 2^(f − e) (audit claim
+  // `beyond.time_of_impact.scale_invariant`). Scaled, the largest length and the largest
   // speed component lie in [1/2, 1): no square the kernel forms overflows, and r² w·w underflows only
   // when r is below the precondition's 4 √(smallest normal) |p2 − p1|, however small or large the
   // inputs. The scalings are exact but for components that fall into the subnormal range.
