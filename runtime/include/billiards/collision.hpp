@@ -346,13 +346,13 @@ template <typename DP1, typename D1, typename DP2, typename D2>
   // speed component lie in [1/2, 1): no square the kernel forms overflows, and r² w·w underflows only
   // when r is below the precondition's 4 √(smallest normal) |p2 − p1|, however small or large the
   // inputs. The scalings are exact but for components that fall into the subnormal range.
-  const int length_exponent = detail::binary_exponent(std::max(p.cwiseAbs().maxCoeff(), contact_distance));
+  const Scalar centre_distance = p.cwiseAbs().maxCoeff();
+  const int length_exponent = detail::binary_exponent(std::max(centre_distance, contact_distance));
   const int speed_exponent = detail::largest_component_exponent(w);
   // Spheres whose centres are closer than 2^−(digits + 2) r overlap by all but rounding: p·p − r² is
   // −r² to the last bit and the answer depends only on the sign of p·w (0 if approaching, else +∞).
   // p is then lifted to about 2^−(digits + 2) r, which keeps both and keeps p·w from underflowing.
   constexpr int negligible = std::numeric_limits<Scalar>::digits + 2;
-  const Scalar centre_distance = p.cwiseAbs().maxCoeff();
   const int centre_exponent = detail::binary_exponent(centre_distance);
   const bool centres_negligible = centre_distance > 0 && centre_exponent < length_exponent - negligible;
   const int position_exponent = centres_negligible ? centre_exponent + negligible : length_exponent;
