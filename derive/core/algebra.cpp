@@ -54,6 +54,13 @@ Vec add(const Vec& a, const Vec& b) {
   return sum;
 }
 
+Vec cross(const Vec& a, const Vec& b) {
+  require_same_dimension(a, b, "cross");
+  if (a.size() != 3)
+    throw std::invalid_argument("cross: dimension is " + std::to_string(a.size()) + ", expected 3");
+  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+}
+
 Vec subtract(const Vec& a, const Vec& b) { return add(a, scale(-1, b)); }
 
 Vec scale(const ex& factor, const Vec& a) {

@@ -24,6 +24,8 @@ Vec add(const Vec& a, const Vec& b);
 Vec subtract(const Vec& a, const Vec& b);
 Vec scale(const GiNaC::ex& factor, const Vec& a);
 GiNaC::ex dot(const Vec& a, const Vec& b);
+/// a × b of two 3-D component vectors.
+Vec cross(const Vec& a, const Vec& b);
 /// The components as a GiNaC list, the form a claim compares.
 GiNaC::lst to_lst(const Vec& a);
 

@@ -304,6 +304,9 @@ std::string kernels_header(const Derivation& derivation, const std::string& audi
   const bool runtime_math =
       std::any_of(derivation.kernels.begin(), derivation.kernels.end(), needs_runtime_math);
   const ModelInfo::PairResult& pair = derivation.model.pair_result;
+  // The pair struct only where a kernel returns two values.
+  const bool has_pair = std::any_of(derivation.kernels.begin(), derivation.kernels.end(),
+                                    [](const Kernel& kernel) { return kernel.outputs.size() == 2; });
   std::ostringstream out;
   out << preamble("// The scalar kernels of " + derivation.model.citation +
                   ", printed from the\n"
@@ -329,13 +332,15 @@ std::string kernels_header(const Derivation& derivation, const std::string& audi
       << "#define BILLIARDS_HOST_DEVICE\n"
       << "#endif\n"
       << "#endif\n\n"
-      << "namespace " << derivation.model.kernels_namespace << " {\n\n"
-      << doc_comment(pair.brief) << "template <typename Scalar>\n"
-      << "struct " << pair.name << " {\n"
-      << "  Scalar first;   ///< " << pair.first << "\n"
-      << "  Scalar second;  ///< " << pair.second << "\n"
-      << "};\n\n"
-      << "/// |x|, constexpr (std::abs is not before C++23).\n"
+      << "namespace " << derivation.model.kernels_namespace << " {\n\n";
+  if (has_pair) {
+    out << doc_comment(pair.brief) << "template <typename Scalar>\n"
+        << "struct " << pair.name << " {\n"
+        << "  Scalar first;   ///< " << pair.first << "\n"
+        << "  Scalar second;  ///< " << pair.second << "\n"
+        << "};\n\n";
+  }
+  out << "/// |x|, constexpr (std::abs is not before C++23).\n"
       << "template <typename Scalar>\n"
       << "BILLIARDS_HOST_DEVICE constexpr Scalar absolute_value(Scalar x) noexcept {\n"
       << "  return x < Scalar(0) ? -x : x;\n"

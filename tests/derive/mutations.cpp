@@ -85,6 +85,52 @@ const std::vector<Mutation>& paper_mutations() {
   return mutations;
 }
 
+const std::vector<Mutation>& spin_mutations() {
+  using GiNaC::numeric;
+  static const std::vector<Mutation> mutations = {
+      // The classic: 5/2 (the rotational part alone) for 7/2.
+      {"tangential_mass_five_halves", "tangential_inverse_effective_mass",
+       [](Kernel& k) { k.outputs.at(0) = numeric(5, 2) * (1 / symbol(k, "m1") + 1 / symbol(k, "m2")); }},
+      {"tangential_mass_one_ball", "tangential_inverse_effective_mass",
+       [](Kernel& k) { k.outputs.at(0) = numeric(7, 2) / symbol(k, "m1"); }},
+      {"normal_impulse_restitution_dropped", "normal_impulse",
+       [](Kernel& k) {
+         k.outputs.at(0) = -2 * symbol(k, "relative_normal_speed") * symbol(k, "reduced_mass");
+       }},
+      {"reduced_mass_guard_wrong_ratio", "normal_impulse",
+       [](Kernel& k) {
+         step(k, "reduced_mass").guards.at(0).alternative =
+             symbol(k, "m2") / (1 + symbol(k, "m1") / symbol(k, "m2"));
+       }},
+      {"friction_bound_reversed", "friction_impulse",
+       [](Kernel& k) {
+         Guard& guard = step(k, "impulse").guards.at(0);
+         guard.condition = guard.condition.lhs() > guard.condition.rhs();
+       }},
+      {"friction_sliding_value_without_normal_impulse", "friction_impulse",
+       [](Kernel& k) { step(k, "impulse").guards.at(0).alternative = symbol(k, "friction"); }},
+      {"spin_change_inverted_inertia", "spin_change_per_impulse",
+       [](Kernel& k) { k.outputs.at(0) = numeric(2, 5) / (symbol(k, "mass") * symbol(k, "radius")); }},
+      {"slide_time_five_for_seven", "slide_time",
+       [](Kernel& k) {
+         step(k, "duration").expression =
+             2 * symbol(k, "slip_speed") / (5 * symbol(k, "sliding_friction") * symbol(k, "gravity"));
+       }},
+      {"slide_time_frictionless_zero", "slide_time",
+       [](Kernel& k) { step(k, "duration").guards.at(0).alternative = 0; }},
+      {"roll_time_gravity_dropped", "roll_time",
+       [](Kernel& k) {
+         step(k, "duration").expression = symbol(k, "speed") / symbol(k, "rolling_friction");
+       }},
+      {"spin_time_factor_inverted", "spin_time",
+       [](Kernel& k) {
+         step(k, "duration").expression = 5 * symbol(k, "radius") * symbol(k, "spin_speed") /
+                                          (2 * symbol(k, "spinning_friction") * symbol(k, "gravity"));
+       }},
+  };
+  return mutations;
+}
+
 void apply(const Mutation& mutation, Derivation& derivation) {
   for (std::vector<Kernel>* list : {&derivation.kernels, &derivation.reference_kernels}) {
     for (Kernel& kernel : *list) {

@@ -4,6 +4,7 @@
 // billiards-derive-mutant).
 #pragma once
 
+#include "emit/kernel.hpp"
 #include "model.hpp"
 
 #include <functional>
@@ -20,6 +21,8 @@ struct Mutation {
 
 /// Every mutation of the paper's model.
 const std::vector<Mutation>& paper_mutations();
+/// Every mutation of the spinning-ball model.
+const std::vector<Mutation>& spin_mutations();
 
 /// `derivation` with `mutation` applied to its kernel (kernels or reference kernels). Throws
 /// std::invalid_argument when the kernel or a name the edit looks for is missing.

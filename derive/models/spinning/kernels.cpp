@@ -1,0 +1,185 @@
+// The spinning-ball model's kernels: what the runtime (spin.hpp, cloth.hpp) composes into vectors.
+// Each is proven equal to the derived side of a claim before it is printed.
+#include "models/spinning/steps.hpp"
+
+#include "core/named_constants.hpp"
+
+namespace billiards::derive::spinning {
+
+KernelClaims kernel_claims(Recorder& record, const Contact& c) {
+  const Symbols& s = symbols();
+  record.section("kernel_outputs", "What each emitted kernel computes",
+                 "The claims the kernels are proven against, where the steps above do not state the "
+                 "emitted quantity on its own: the tangential impulse of Coulomb friction and the spin "
+                 "change per unit of tangential impulse.");
+  // u_t' = u_t + k J_t (impulse.decoupled) with J_t = −j û_t: the slip's length |u_t| − k j.
+  const ex j = s.tangential_impulse, sigma = s.tangential_slip, k = s.k;
+  const ex sticking = GiNaC::lsolve(sigma - k * j == 0, j);
+  record.add({
+      .id = "kernel.friction_impulse",
+      .statement = "The tangential impulse is j = min(μ J_n, |u_t|/k): the impulse that stops the slip where "
+                   "Coulomb's bound allows it (sticking), μ J_n where it does not (sliding).",
+      .method = "|u_t| − k j = 0 (the length of u_t' = u_t + k J_t, impulse.decoupled) solved for j with "
+                "lsolve(); identity; the sliding case is definition.coulomb_friction",
+      .comparison = Comparison::identity,
+      .paper_expression = sigma / k,
+      .derived_expression = sticking,
+      .depends_on = {"impulse.decoupled", "friction.sticking_impulse", "definition.coulomb_friction"},
+      .cases = {{lst{s.friction * s.normal_impulse < sigma / k}, s.friction * s.normal_impulse}},
+  });
+  // Δω1 = I1⁻¹ (R1 n × (−J)) for a tangential J = −j t̂: (5 j/(2 m1 R1)) (n × t̂).
+  const Vec tangent = c.tangent();
+  const std::vector<Vec> after = c.after(scale(-1, tangent));
+  const GiNaC::exmap solid{{s.I1, numeric(2, 5) * s.m1 * s.R1 * s.R1},
+                           {s.I2, numeric(2, 5) * s.m2 * s.R2 * s.R2}};
+  const Vec n_cross_t = cross(c.n, tangent);
+  const ex first = GiNaC::normal(((after[1][0] - c.w1[0]) / n_cross_t[0]).subs(solid));
+  const ex second = GiNaC::normal(((after[3][0] - c.w2[0]) / n_cross_t[0]).subs(solid));
+  record.add({
+      .id = "kernel.spin_change_per_impulse",
+      .statement =
+          "A tangential impulse j against the slip û_t (J = −j û_t on ball 2) turns ball 1's spin by "
+          "(5 j/(2 m1 R1)) (n × û_t): the coefficient is R/I = 5/(2 m R).",
+      .method = "Δω1 of the impulse equations for J = −t (t = n × a), its x component over (n × t)_x, "
+                "I = (2/5) m R²; identity after normal()",
+      .comparison = Comparison::identity,
+      .paper_expression = 5 / (2 * s.m1 * s.R1),
+      .derived_expression = first,
+      .depends_on = {"definition.impulse", "definition.solid_sphere"},
+  });
+  record.add({
+      .id = "kernel.spin_change_per_impulse_second_ball",
+      .statement = "The same impulse turns ball 2's spin by (5 j/(2 m2 R2)) (n × û_t): the same coefficient "
+                   "R/I, and the same sense as ball 1's.",
+      .method = "Δω2 of the impulse equations for J = −t, as for ball 1; identity after normal()",
+      .comparison = Comparison::identity,
+      .paper_expression = 5 / (2 * s.m2 * s.R2),
+      .derived_expression = second,
+      .depends_on = {"kernel.spin_change_per_impulse"},
+  });
+  return {first};
+}
+
+std::vector<Kernel> spin_kernels(const Impulse& impulse, const Friction& friction, const KernelClaims& pieces,
+                                 const Cloth& cloth) {
+  const Symbols& s = symbols();
+  using Kind = Guard::Kind;
+  std::vector<Kernel> kernels;
+  (void)impulse;
+  (void)friction;
+  kernels.push_back({
+      .name = "tangential_inverse_effective_mass",
+      .brief = "The tangential inverse effective mass k = (7/2)(1/m1 + 1/m2) of a contact between two solid "
+               "spheres: a tangential impulse j changes the tangential slip by k j.",
+      .parameters = {s.m1, s.m2},
+      .outputs = {numeric(7, 2) * (1 / s.m1 + 1 / s.m2)},
+      .equals = "impulse.tangential_inverse_effective_mass_solid_spheres",
+      .claims = {"impulse.decoupled"},
+  });
+  {
+    const GiNaC::realsymbol speed("relative_normal_speed");
+    const GiNaC::symbol reduced("reduced_mass");
+    kernels.push_back({
+        .name = "normal_impulse",
+        .brief = "The normal impulse J_n = −(1 + e) μ_red (v2 − v1)·n, μ_red = m1 m2/(m1 + m2), from the "
+                 "relative normal speed (v2 − v1)·n (negative for approaching balls). The reduced mass is "
+                 "taken as m/(1 + m/M) with m the smaller mass, so neither the product nor the sum of the "
+                 "masses is formed.",
+        .parameters = {s.m1, s.m2, s.restitution, speed},
+        .steps = {{reduced,
+                   s.m1 / (1 + s.m1 / s.m2),
+                   {{s.m2 < s.m1, s.m2 / (1 + s.m2 / s.m1), Kind::same_value, "friction.normal_impulse"}}}},
+        .outputs = {-(1 + s.restitution) * speed * reduced},
+        .equals = "friction.normal_impulse",
+        .in_claim_terms = {{speed, s.normal_slip}},
+    });
+  }
+  {
+    const GiNaC::possymbol normal("normal_impulse"), slip("tangential_slip"),
+        k("tangential_inverse_effective_mass");
+    const GiNaC::symbol stick("impulse");
+    kernels.push_back({
+        .name = "friction_impulse",
+        .brief =
+            "The magnitude j = min(μ J_n, |u_t|/k) of the tangential impulse of Coulomb friction, from the "
+            "friction coefficient μ, the normal impulse J_n, the tangential slip |u_t| and the tangential "
+            "inverse effective mass k; it acts against the slip.",
+        .parameters = {s.friction, normal, slip, k},
+        .steps = {{stick,
+                   slip / k,
+                   {{s.friction * normal < slip / k, s.friction * normal, Kind::piecewise,
+                     "kernel.friction_impulse"}}}},
+        .outputs = {stick},
+        .equals = "kernel.friction_impulse",
+        .in_claim_terms = {{normal, s.normal_impulse}, {slip, s.tangential_slip}, {k, s.k}},
+        .claims = {"friction.sticking_impulse", "friction.sliding_never_reverses"},
+    });
+  }
+  {
+    const GiNaC::possymbol mass("mass"), radius("radius");
+    kernels.push_back({
+        .name = "spin_change_per_impulse",
+        .brief = "R/I = 5/(2 m R) for a solid sphere of mass m and radius R: a tangential impulse j against "
+                 "the slip û_t turns its spin by (5 j/(2 m R)) (n × û_t).",
+        .parameters = {mass, radius},
+        .outputs = {numeric(5, 2) / (mass * radius)},
+        .equals = "kernel.spin_change_per_impulse",
+        .in_claim_terms = {{mass, s.m1}, {radius, s.R1}},
+        .claims = {"kernel.spin_change_per_impulse_second_ball"},
+    });
+    (void)pieces;
+  }
+  {
+    const GiNaC::possymbol slip("slip_speed"), mu("sliding_friction"), gravity("gravity");
+    const GiNaC::symbol time("duration");
+    kernels.push_back({
+        .name = "slide_time",
+        .brief = "The time t_s = 2 |u0|/(7 μ_s g) a ball slides on the cloth before it rolls, from its slip "
+                 "speed |u0|; +∞ without sliding friction.",
+        .parameters = {slip, mu, gravity},
+        .steps = {{time,
+                   cloth.slide_time.subs(lst{s.slip_speed == slip, s.sliding_friction == mu, s.g == gravity}),
+                   {{mu <= 0, infinity(), Kind::piecewise, "cloth.sliding.frictionless_slides_on"}}}},
+        .outputs = {time},
+        .equals = "cloth.sliding.slide_time",
+        .in_claim_terms = {{slip, s.slip_speed}, {mu, s.sliding_friction}, {gravity, s.g}},
+    });
+  }
+  {
+    const GiNaC::possymbol speed("speed"), mu("rolling_friction"), gravity("gravity");
+    const GiNaC::symbol time("duration");
+    kernels.push_back({
+        .name = "roll_time",
+        .brief = "The time t_r = |v0|/(μ_r g) a rolling ball takes to stop, from its speed |v0|; +∞ without "
+                 "rolling resistance.",
+        .parameters = {speed, mu, gravity},
+        .steps = {{time,
+                   cloth.roll_time.subs(lst{s.ball_speed == speed, s.rolling_friction == mu, s.g == gravity}),
+                   {{mu <= 0, infinity(), Kind::piecewise, "cloth.rolling.frictionless_rolls_on"}}}},
+        .outputs = {time},
+        .equals = "cloth.rolling.stop_time",
+        .in_claim_terms = {{speed, s.ball_speed}, {mu, s.rolling_friction}, {gravity, s.g}},
+    });
+  }
+  {
+    const GiNaC::possymbol spin("spin_speed"), radius("radius"), mu("spinning_friction"), gravity("gravity");
+    const GiNaC::symbol time("duration");
+    kernels.push_back({
+        .name = "spin_time",
+        .brief =
+            "The time t_z = 2 R |ω_z|/(5 μ_sp g) until the spin about ẑ stops, from |ω_z| and the radius "
+            "R; +∞ without spinning friction.",
+        .parameters = {spin, radius, mu, gravity},
+        .steps = {{time,
+                   cloth.spin_time.subs(
+                       lst{s.spin == spin, s.R == radius, s.spinning_friction == mu, s.g == gravity}),
+                   {{mu <= 0, infinity(), Kind::piecewise, "cloth.spinning.frictionless_spins_on"}}}},
+        .outputs = {time},
+        .equals = "cloth.spinning.stop_time",
+        .in_claim_terms = {{spin, s.spin}, {radius, s.R}, {mu, s.spinning_friction}, {gravity, s.g}},
+    });
+  }
+  return kernels;
+}
+
+}  // namespace billiards::derive::spinning

@@ -1,0 +1,123 @@
+// The spinning-ball model: what every step shares — its symbols, the two balls in 3-D components, the
+// impulse equations — and the step functions, one per audit section, each taking what it reads and
+// returning what later steps use. model.cpp strings them together.
+#pragma once
+
+#include "core/algebra.hpp"
+#include "core/record.hpp"
+#include "emit/kernel.hpp"
+#include "model.hpp"
+
+#include <ginac/ginac.h>
+
+#include <string>
+#include <vector>
+
+namespace billiards::derive::spinning {
+
+using GiNaC::ex;
+using GiNaC::lst;
+using GiNaC::numeric;
+
+// The scalar names of the derivation. Static: GiNaC tells symbols apart by identity.
+struct Symbols {
+  GiNaC::possymbol m1{"m1", "m_1"};
+  GiNaC::possymbol m2{"m2", "m_2"};
+  GiNaC::possymbol R1{"R1", "R_1"};
+  GiNaC::possymbol R2{"R2", "R_2"};
+  GiNaC::possymbol I1{"I1", "I_1"};
+  GiNaC::possymbol I2{"I2", "I_2"};
+  GiNaC::realsymbol restitution{"restitution", "e"};
+  GiNaC::possymbol friction{"friction", "\\mu"};
+  GiNaC::realsymbol normal_impulse{"Jn", "J_n"};
+  GiNaC::possymbol tangential_impulse{"j", "j"};        ///< |J_t|
+  GiNaC::possymbol tangential_slip{"sigma", "|u_t|"};   ///< |u_t| > 0
+  GiNaC::realsymbol normal_slip{"un", "(u \\cdot n)"};  ///< u·n = (v2 − v1)·n
+  GiNaC::possymbol k{"k", "k"};                         ///< the tangential inverse effective mass
+  GiNaC::possymbol q{"q", "q"};                         ///< a positive parameter for sign claims
+  // The stun shot: cos φ and sin φ of the cut angle, the cue ball's speed.
+  GiNaC::possymbol cos_cut{"cos_phi", "\\cos\\varphi"};
+  GiNaC::possymbol sin_cut{"sin_phi", "\\sin\\varphi"};
+  GiNaC::possymbol speed{"V", "V"};
+  // The cloth.
+  GiNaC::possymbol m{"m", "m"};
+  GiNaC::possymbol R{"R", "R"};
+  GiNaC::possymbol g{"g", "g"};
+  GiNaC::possymbol sliding_friction{"mu_s", "\\mu_s"};
+  GiNaC::possymbol rolling_friction{"mu_r", "\\mu_r"};
+  GiNaC::possymbol spinning_friction{"mu_sp", "\\mu_{sp}"};
+  GiNaC::possymbol t{"t", "t"};
+  GiNaC::possymbol slip_speed{"sigma0", "|u_0|"};      ///< |u0| > 0 while sliding
+  GiNaC::possymbol ball_speed{"nu0", "|v_0|"};         ///< |v0| > 0 while rolling
+  GiNaC::possymbol spin{"omega_z0", "\\omega_{z,0}"};  ///< ω_z0 > 0 (the other sign by symmetry)
+  GiNaC::realsymbol vertical_spin{"omega_z", "\\omega_z"};
+};
+
+const Symbols& symbols();
+
+/// Appended to a claim's method where n·n = 1 is imposed.
+inline constexpr const char* unit_normal_method = "; n·n = 1 imposed by substituting n_z² → 1 − n_x² − n_y²";
+
+/// Two balls in 3-D components and the impulse equations of their contact.
+struct Contact {
+  Vec v1, w1, v2, w2;  ///< velocities and angular velocities before
+  Vec n;               ///< unit normal from ball 1's centre to ball 2's
+  Vec a;               ///< an arbitrary vector: t = n × a is tangent to the contact
+  Vec J;               ///< a general impulse on ball 2 (−J on ball 1)
+  Constraint unit_normal;
+
+  Contact();
+  /// The contact points relative to the centres: R1 n and −R2 n.
+  Vec r1() const;
+  Vec r2() const;
+  /// The slip u = (v2 + ω2 × r2) − (v1 + ω1 × r1) of the given state.
+  Vec slip(const Vec& v1_, const Vec& w1_, const Vec& v2_, const Vec& w2_) const;
+  /// The state after the impulse `impulse` on ball 2: Δv1 = −J/m1, Δv2 = J/m2, Δω1 = I1⁻¹ (r1 × (−J)),
+  /// Δω2 = I2⁻¹ (r2 × J). Returns {v1', ω1', v2', ω2'}.
+  std::vector<Vec> after(const Vec& impulse) const;
+  /// The kinetic energy, translational and rotational, of a state {v1, ω1, v2, ω2}.
+  ex kinetic_energy(const std::vector<Vec>& state) const;
+  /// A tangent vector n × a.
+  Vec tangent() const;
+};
+
+lst concatenate(const std::vector<Vec>& vectors);
+
+// ---- The steps ------------------------------------------------------------------------------------
+
+void record_premises(Recorder& record);
+
+struct Impulse {
+  ex k_general;       ///< 1/m1 + 1/m2 + R1²/I1 + R2²/I2, derived
+  ex k_solid;         ///< k with I = (2/5) m R², derived
+  ex normal_inverse;  ///< 1/m1 + 1/m2, derived
+};
+Impulse the_impulse(Recorder& record, const Contact& contact);
+
+void conservation(Recorder& record, const Contact& contact, const Impulse& impulse);
+
+struct Friction {
+  ex normal_impulse;    ///< J_n in u·n, solved from restitution
+  ex sticking_impulse;  ///< |u_t|/k, solved from u_t' = 0
+  ex energy_change;     ///< ΔKE in J_n, j, |u_t| and u·n
+};
+Friction the_friction(Recorder& record, const Contact& contact, const Impulse& impulse);
+
+void the_throw(Recorder& record, const Contact& contact, const Friction& friction);
+
+struct Cloth {
+  ex slide_time, roll_time, spin_time;  ///< derived
+};
+Cloth the_cloth(Recorder& record);
+
+// ---- The kernels ----------------------------------------------------------------------------------
+
+struct KernelClaims {
+  ex spin_change;  ///< R/I = 5/(2 m R), derived
+};
+KernelClaims kernel_claims(Recorder& record, const Contact& contact);
+
+std::vector<Kernel> spin_kernels(const Impulse& impulse, const Friction& friction, const KernelClaims& pieces,
+                                 const Cloth& cloth);
+
+}  // namespace billiards::derive::spinning
