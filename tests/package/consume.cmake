@@ -16,7 +16,8 @@ if(STEP STREQUAL "install")
   run(${CMAKE_COMMAND} --install ${BUILD} --prefix ${prefix})
   foreach(f IN ITEMS share/cmake/billiards/billiardsConfig.cmake share/cmake/billiards/billiardsConfigVersion.cmake
                      share/cmake/billiards/billiardsTargets.cmake share/pkgconfig/billiards.pc
-                     include/billiards/collision.hpp include/billiards/kernels.hpp include/billiards/version.hpp)
+                     include/billiards/collision.hpp include/billiards/kernels.hpp include/billiards/version.hpp
+                     include/billiards/spin.hpp include/billiards/cloth.hpp include/billiards/spin_kernels.hpp)
     if(NOT EXISTS ${prefix}/${f})
       message(FATAL_ERROR "cmake --install did not write ${f}")
     endif()
