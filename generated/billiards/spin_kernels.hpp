@@ -5,7 +5,7 @@
 // derivation audit before it was printed, and names the claims it implements. They take masses
 // and dot products, so they serve vectors of any dimension and need no Eigen.
 //
-// Fingerprint: fnv1a64:7ca1f23994c9c673 (of this header and the audit)
+// Fingerprint: fnv1a64:759cef811544bb25 (of this header and the audit)
 #pragma once
 
 #include <limits>
@@ -123,8 +123,8 @@ BILLIARDS_HOST_DEVICE constexpr Scalar spin_change_per_impulse(Scalar mass, Scal
 /// The time t_s = 2 |u0|/(7 μ_s g) a ball slides on the cloth before it rolls, from its slip speed
 /// |u0|; +∞ without sliding friction.
 ///
-/// Proven equal to the derived expression of the audit claim `cloth.sliding.slide_time` before it was
-/// printed; also implements `cloth.sliding.frictionless_slides_on`.
+/// Proven equal to the derived expression of the audit claim `sliding.slide_time` before it was
+/// printed; also implements `sliding.frictionless_slides_on`.
 ///
 /// Total ops: 5
 template <typename Scalar>
@@ -138,8 +138,8 @@ BILLIARDS_HOST_DEVICE constexpr Scalar slide_time(Scalar slip_speed, Scalar slid
 /// The time t_r = |v0|/(μ_r g) a rolling ball takes to stop, from its speed |v0|; +∞ without rolling
 /// resistance.
 ///
-/// Proven equal to the derived expression of the audit claim `cloth.rolling.stop_time` before it was
-/// printed; also implements `cloth.rolling.frictionless_rolls_on`.
+/// Proven equal to the derived expression of the audit claim `rolling.stop_time` before it was printed;
+/// also implements `rolling.frictionless_rolls_on`.
 ///
 /// Total ops: 3
 template <typename Scalar>
@@ -153,8 +153,8 @@ BILLIARDS_HOST_DEVICE constexpr Scalar roll_time(Scalar speed, Scalar rolling_fr
 /// The time t_z = 2 R |ω_z|/(5 μ_sp g) until the spin about ẑ stops, from |ω_z| and the radius R;
 /// +∞ without spinning friction.
 ///
-/// Proven equal to the derived expression of the audit claim `cloth.spinning.stop_time` before it was
-/// printed; also implements `cloth.spinning.frictionless_spins_on`.
+/// Proven equal to the derived expression of the audit claim `spinning.stop_time` before it was
+/// printed; also implements `spinning.frictionless_spins_on`.
 ///
 /// Total ops: 6
 template <typename Scalar>

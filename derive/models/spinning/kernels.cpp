@@ -139,9 +139,9 @@ std::vector<Kernel> spin_kernels(const Impulse& impulse, const Friction& frictio
         .parameters = {slip, mu, gravity},
         .steps = {{time,
                    cloth.slide_time.subs(lst{s.slip_speed == slip, s.sliding_friction == mu, s.g == gravity}),
-                   {{mu <= 0, infinity(), Kind::piecewise, "cloth.sliding.frictionless_slides_on"}}}},
+                   {{mu <= 0, infinity(), Kind::piecewise, "sliding.frictionless_slides_on"}}}},
         .outputs = {time},
-        .equals = "cloth.sliding.slide_time",
+        .equals = "sliding.slide_time",
         .in_claim_terms = {{slip, s.slip_speed}, {mu, s.sliding_friction}, {gravity, s.g}},
     });
   }
@@ -155,9 +155,9 @@ std::vector<Kernel> spin_kernels(const Impulse& impulse, const Friction& frictio
         .parameters = {speed, mu, gravity},
         .steps = {{time,
                    cloth.roll_time.subs(lst{s.ball_speed == speed, s.rolling_friction == mu, s.g == gravity}),
-                   {{mu <= 0, infinity(), Kind::piecewise, "cloth.rolling.frictionless_rolls_on"}}}},
+                   {{mu <= 0, infinity(), Kind::piecewise, "rolling.frictionless_rolls_on"}}}},
         .outputs = {time},
-        .equals = "cloth.rolling.stop_time",
+        .equals = "rolling.stop_time",
         .in_claim_terms = {{speed, s.ball_speed}, {mu, s.rolling_friction}, {gravity, s.g}},
     });
   }
@@ -173,9 +173,9 @@ std::vector<Kernel> spin_kernels(const Impulse& impulse, const Friction& frictio
         .steps = {{time,
                    cloth.spin_time.subs(
                        lst{s.spin == spin, s.R == radius, s.spinning_friction == mu, s.g == gravity}),
-                   {{mu <= 0, infinity(), Kind::piecewise, "cloth.spinning.frictionless_spins_on"}}}},
+                   {{mu <= 0, infinity(), Kind::piecewise, "spinning.frictionless_spins_on"}}}},
         .outputs = {time},
-        .equals = "cloth.spinning.stop_time",
+        .equals = "spinning.stop_time",
         .in_claim_terms = {{spin, s.spin}, {radius, s.R}, {mu, s.spinning_friction}, {gravity, s.g}},
     });
   }

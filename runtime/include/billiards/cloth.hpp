@@ -78,9 +78,9 @@ template <typename Scalar>
 }
 
 /// The time until the ball's phase changes: the slide time \f$2|u|/(7 \mu_s g)\f$ while sliding
-/// (`cloth.sliding.slide_time`), the stop time \f$|v|/(\mu_r g)\f$ while rolling
-/// (`cloth.rolling.stop_time`), the spin's stop time \f$2 R |\omega_z|/(5 \mu_{sp} g)\f$ while spinning
-/// (`cloth.spinning.stop_time`); +∞ when stationary or when the phase's friction coefficient is 0.
+/// (`sliding.slide_time`), the stop time \f$|v|/(\mu_r g)\f$ while rolling
+/// (`rolling.stop_time`), the spin's stop time \f$2 R |\omega_z|/(5 \mu_{sp} g)\f$ while spinning
+/// (`spinning.stop_time`); +∞ when stationary or when the phase's friction coefficient is 0.
 /// The spin about ẑ may stop within a sliding or rolling phase without changing it.
 template <typename Scalar>
 [[nodiscard]] Scalar transition_time(const BallOnCloth<Scalar>& ball, const Cloth<Scalar>& cloth) noexcept {
@@ -102,7 +102,7 @@ template <typename Scalar>
 namespace detail {
 
 /// The spin about ẑ after `t` (at most its stop time): |ω_z| decays at 5 μ_sp g/(2R)
-/// (`cloth.spinning.angular_velocity`), to 0 at the stop time.
+/// (`spinning.angular_velocity`), to 0 at the stop time.
 template <typename Scalar>
 [[nodiscard]] Scalar spin_after(Scalar spin, Scalar radius, const Cloth<Scalar>& cloth, Scalar t,
                                 bool stops) noexcept {
@@ -123,7 +123,7 @@ template <typename Scalar>
   const Scalar g = cloth.gravity, radius = ball.radius;
   const Vector horizontal_velocity(ball.velocity.x(), ball.velocity.y(), 0);
   if (phase == Motion::sliding) {
-    // cloth.sliding.velocity, .angular_velocity, .position: û constant (.slip_direction_constant).
+    // sliding.velocity, .angular_velocity, .position: û constant (.slip_direction_constant).
     const Vector slip = contact_slip(ball);
     const Vector direction = slip / std::hypot(slip.x(), slip.y());
     const Scalar deceleration = cloth.sliding_friction * g;
@@ -132,20 +132,20 @@ template <typename Scalar>
     const Vector turn = (Scalar(5) * deceleration * t / (Scalar(2) * radius)) * up.cross(direction);
     later.angular_velocity.x() += turn.x();
     later.angular_velocity.y() += turn.y();
-    if (ends) {  // cloth.sliding.rolls_at_slide_time: the rolling condition, exactly
-      const Vector rolling = up.cross(later.velocity) / radius;
-      later.angular_velocity.x() = rolling.x();
-      later.angular_velocity.y() = rolling.y();
+    if (ends) {  // sliding.rolls_at_slide_time: the rolling condition, exactly
+      const Vector rolling_spin = up.cross(later.velocity) / radius;
+      later.angular_velocity.x() = rolling_spin.x();
+      later.angular_velocity.y() = rolling_spin.y();
     }
   } else if (phase == Motion::rolling) {
-    // cloth.rolling.velocity, .position (assumption.rolling_resistance).
+    // rolling.velocity, .position (assumption.rolling_resistance).
     const Vector direction = horizontal_velocity / std::hypot(ball.velocity.x(), ball.velocity.y());
     const Scalar deceleration = cloth.rolling_friction * g;
     later.velocity = ends ? Vector::Zero() : Vector(horizontal_velocity - deceleration * t * direction);
     later.position = ball.position + horizontal_velocity * t - (deceleration * t * t / Scalar(2)) * direction;
-    const Vector rolling = up.cross(later.velocity) / radius;
-    later.angular_velocity.x() = rolling.x();
-    later.angular_velocity.y() = rolling.y();
+    const Vector rolling_spin = up.cross(later.velocity) / radius;
+    later.angular_velocity.x() = rolling_spin.x();
+    later.angular_velocity.y() = rolling_spin.y();
   }
   later.position.z() = ball.position.z();
   later.angular_velocity.z() = spin_after(ball.angular_velocity.z(), radius, cloth, t, spin_stops);

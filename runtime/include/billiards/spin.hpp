@@ -65,7 +65,8 @@ template <typename Scalar>
 /// \f$v_1' = v_1 - J/m_1\f$, \f$v_2' = v_2 + J/m_2\f$ and each spin turns by
 /// \f$\tfrac{5 j}{2 m R} (n \times \hat u_t)\f$ (`kernel.spin_change_per_impulse`), with
 /// \f$J = J_n n - j \hat u_t\f$ the impulse on ball 2. Momentum and each ball's angular momentum about
-/// its contact point are conserved and no energy is created (`conservation.*`, `friction.energy_*`).
+/// its contact point are conserved and no energy is created (`conservation.*`,
+/// `friction.energy_nonincreasing_sticking`, `friction.energy_nonincreasing_sliding`).
 ///
 /// Preconditions, asserted in debug builds: masses and radii positive and finite, `n` of unit length,
 /// \f$0 \le e \le 1\f$, \f$\mu \ge 0\f$. billiards::checked::collide_with_friction validates them.
