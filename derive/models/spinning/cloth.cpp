@@ -153,7 +153,6 @@ Cloth the_cloth(Recorder& record) {
                                 .subs(s.t == slide_time / (1 + s.q)),
       .depends_on = {"sliding.energy_rate"},
   });
-  (void)r_slide;
 
   // ---- Rolling --------------------------------------------------------------------------------------
   record.section("rolling", "Rolling on the cloth",

@@ -39,12 +39,10 @@ Friction the_friction(Recorder& record, const Contact& c, const Impulse& impulse
   // The tangential slip is a tangent vector τ = n × a of length σ; J_t = −j τ/σ.
   const Vec tau = c.tangent();
   const std::vector<Vec> after = c.after(scale(-j / sigma, tau));
-  const Vec before_slip = c.slip(c.v1, c.w1, c.v2, c.w2);
   const Vec slip_after = c.slip(after[0], after[1], after[2], after[3]);
   // τ' = τ + Δu, Δu in components: the tangential slip after the impulse.
   Vec tangential_after;
-  for (std::size_t i = 0; i < 3; ++i)
-    tangential_after.push_back((tau[i] + slip_after[i] - before_slip[i]).expand());
+  for (std::size_t i = 0; i < 3; ++i) tangential_after.push_back((tau[i] + slip_after[i] - slip[i]).expand());
   const Constraint tangent_length{GiNaC::pow(sigma, 2) == dot(tau, tau).expand(), "|u_t|² = u_t·u_t"};
   const ex sticking = GiNaC::normal(GiNaC::lsolve(
       GiNaC::normal(reduce_modulo(tangential_after[0], c.unit_normal.relation) / tau[0]) == 0, j));
@@ -155,7 +153,7 @@ Friction the_friction(Recorder& record, const Contact& c, const Impulse& impulse
       .depends_on = {"friction.energy_change", "friction.sliding_never_reverses",
                      "friction.normal_energy_loss_nonnegative"},
   });
-  return {normal_impulse, sticking, energy_change};
+  return {normal_impulse, sticking};
 }
 
 }  // namespace billiards::derive::spinning

@@ -96,7 +96,7 @@ Impulse the_impulse(Recorder& record, const Contact& c) {
       .constraints = {c.unit_normal},
       .depends_on = {"impulse.normal_inverse_effective_mass", "impulse.tangential_inverse_effective_mass"},
   });
-  return {k_general, k_solid, normal_inverse};
+  return {k_general, normal_inverse};
 }
 
 }  // namespace billiards::derive::spinning

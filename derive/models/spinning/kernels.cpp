@@ -6,7 +6,7 @@
 
 namespace billiards::derive::spinning {
 
-KernelClaims kernel_claims(Recorder& record, const Contact& c) {
+void kernel_claims(Recorder& record, const Contact& c) {
   const Symbols& s = symbols();
   record.section("kernel_outputs", "What each emitted kernel computes",
                  "The claims the kernels are proven against, where the steps above do not state the "
@@ -57,16 +57,12 @@ KernelClaims kernel_claims(Recorder& record, const Contact& c) {
       .derived_expression = second,
       .depends_on = {"kernel.spin_change_per_impulse"},
   });
-  return {first};
 }
 
-std::vector<Kernel> spin_kernels(const Impulse& impulse, const Friction& friction, const KernelClaims& pieces,
-                                 const Cloth& cloth) {
+std::vector<Kernel> spin_kernels(const Cloth& cloth) {
   const Symbols& s = symbols();
   using Kind = Guard::Kind;
   std::vector<Kernel> kernels;
-  (void)impulse;
-  (void)friction;
   kernels.push_back({
       .name = "tangential_inverse_effective_mass",
       .brief = "The tangential inverse effective mass k = (7/2)(1/m1 + 1/m2) of a contact between two solid "
@@ -127,7 +123,6 @@ std::vector<Kernel> spin_kernels(const Impulse& impulse, const Friction& frictio
         .in_claim_terms = {{mass, s.m1}, {radius, s.R1}},
         .claims = {"kernel.spin_change_per_impulse_second_ball"},
     });
-    (void)pieces;
   }
   {
     const GiNaC::possymbol slip("slip_speed"), mu("sliding_friction"), gravity("gravity");

@@ -50,8 +50,8 @@ Derivation derive() {
   const Friction friction = the_friction(record, contact, impulse);
   the_throw(record, contact, friction);
   const Cloth cloth = the_cloth(record);
-  const KernelClaims pieces = kernel_claims(record, contact);
-  derivation.kernels = spin_kernels(impulse, friction, pieces, cloth);
+  kernel_claims(record, contact);
+  derivation.kernels = spin_kernels(cloth);
   return derivation;
 }
 

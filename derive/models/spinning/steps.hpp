@@ -89,7 +89,6 @@ void record_premises(Recorder& record);
 
 struct Impulse {
   ex k_general;       ///< 1/m1 + 1/m2 + R1²/I1 + R2²/I2, derived
-  ex k_solid;         ///< k with I = (2/5) m R², derived
   ex normal_inverse;  ///< 1/m1 + 1/m2, derived
 };
 Impulse the_impulse(Recorder& record, const Contact& contact);
@@ -99,7 +98,6 @@ void conservation(Recorder& record, const Contact& contact, const Impulse& impul
 struct Friction {
   ex normal_impulse;    ///< J_n in u·n, solved from restitution
   ex sticking_impulse;  ///< |u_t|/k, solved from u_t' = 0
-  ex energy_change;     ///< ΔKE in J_n, j, |u_t| and u·n
 };
 Friction the_friction(Recorder& record, const Contact& contact, const Impulse& impulse);
 
@@ -112,12 +110,9 @@ Cloth the_cloth(Recorder& record);
 
 // ---- The kernels ----------------------------------------------------------------------------------
 
-struct KernelClaims {
-  ex spin_change;  ///< R/I = 5/(2 m R), derived
-};
-KernelClaims kernel_claims(Recorder& record, const Contact& contact);
+/// The claims the kernels are proven against where the steps do not state the emitted quantity alone.
+void kernel_claims(Recorder& record, const Contact& contact);
 
-std::vector<Kernel> spin_kernels(const Impulse& impulse, const Friction& friction, const KernelClaims& pieces,
-                                 const Cloth& cloth);
+std::vector<Kernel> spin_kernels(const Cloth& cloth);
 
 }  // namespace billiards::derive::spinning

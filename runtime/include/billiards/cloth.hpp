@@ -77,17 +77,17 @@ template <typename Scalar>
   return Motion::stationary;
 }
 
-/// The time until the ball's phase changes: the slide time \f$2|u|/(7 \mu_s g)\f$ while sliding
-/// (`sliding.slide_time`), the stop time \f$|v|/(\mu_r g)\f$ while rolling
-/// (`rolling.stop_time`), the spin's stop time \f$2 R |\omega_z|/(5 \mu_{sp} g)\f$ while spinning
-/// (`spinning.stop_time`); +∞ when stationary or when the phase's friction coefficient is 0.
-/// The spin about ẑ may stop within a sliding or rolling phase without changing it.
+namespace detail {
+
+/// How long the phase `phase` of `ball` lasts (see transition_time).
 template <typename Scalar>
-[[nodiscard]] Scalar transition_time(const BallOnCloth<Scalar>& ball, const Cloth<Scalar>& cloth) noexcept {
-  const Eigen::Matrix<Scalar, 3, 1> slip = contact_slip(ball);
-  switch (motion(ball, cloth)) {
-    case Motion::sliding:
+[[nodiscard]] Scalar phase_duration(const BallOnCloth<Scalar>& ball, const Cloth<Scalar>& cloth,
+                                    Motion phase) noexcept {
+  switch (phase) {
+    case Motion::sliding: {
+      const Eigen::Matrix<Scalar, 3, 1> slip = contact_slip(ball);
       return kernels::spin::slide_time(std::hypot(slip.x(), slip.y()), cloth.sliding_friction, cloth.gravity);
+    }
     case Motion::rolling:
       return kernels::spin::roll_time(std::hypot(ball.velocity.x(), ball.velocity.y()),
                                       cloth.rolling_friction, cloth.gravity);
@@ -97,6 +97,18 @@ template <typename Scalar>
     case Motion::stationary: break;
   }
   return std::numeric_limits<Scalar>::infinity();
+}
+
+}  // namespace detail
+
+/// The time until the ball's phase changes: the slide time \f$2|u|/(7 \mu_s g)\f$ while sliding
+/// (`sliding.slide_time`), the stop time \f$|v|/(\mu_r g)\f$ while rolling
+/// (`rolling.stop_time`), the spin's stop time \f$2 R |\omega_z|/(5 \mu_{sp} g)\f$ while spinning
+/// (`spinning.stop_time`); +∞ when stationary or when the phase's friction coefficient is 0.
+/// The spin about ẑ may stop within a sliding or rolling phase without changing it.
+template <typename Scalar>
+[[nodiscard]] Scalar transition_time(const BallOnCloth<Scalar>& ball, const Cloth<Scalar>& cloth) noexcept {
+  return detail::phase_duration(ball, cloth, motion(ball, cloth));
 }
 
 namespace detail {
@@ -176,7 +188,7 @@ template <typename Scalar>
   for (int pass = 0; pass < 5 && remaining > 0; ++pass) {
     const Motion phase = motion(current, cloth);
     if (phase == Motion::stationary) break;
-    const Scalar phase_end = transition_time(current, cloth);
+    const Scalar phase_end = detail::phase_duration(current, cloth, phase);
     const Scalar spin = std::fabs(current.angular_velocity.z());
     const Scalar spin_end =
         spin > 0 ? kernels::spin::spin_time(spin, current.radius, cloth.spinning_friction, cloth.gravity)
