@@ -145,7 +145,7 @@ TEST_CASE("Every claim id cited in generated/, runtime/ and the README exists an
       const std::string first = (*it)[1];
       if (!first_segments.count(first)) continue;
       std::string rest = (*it)[2];
-      if (std::regex_search(rest, std::regex("\\.(hpp|cpp|md|json)$"))) continue;
+      if (std::regex_search(rest, std::regex("\\.(hpp|cpp|md|json|svg)$"))) continue;
       // Expand one {a,b} group (enough for the citations in use), then match a trailing .* as a prefix.
       std::vector<std::string> candidates;
       const std::smatch::value_type whole = (*it)[0];
