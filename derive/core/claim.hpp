@@ -21,6 +21,8 @@ struct Constraint {
 /// kernel's piecewise guard is validated against such a case.
 struct Case {
   GiNaC::lst conditions;
+  /// The value under the conditions: one expression, or for a claim whose derived expression is a
+  /// list, a list of the same length (a kernel's outputs, each in its place).
   GiNaC::ex value;
 };
 

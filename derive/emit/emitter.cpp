@@ -438,7 +438,6 @@ std::string kernel_list_header(const Derivation& derivation, const std::string& 
   if (!model.reference_path.empty()) out << "#include <" << model.reference_path << ">\n";
   out << "\n#include <cstddef>\n#include <stdexcept>\n#include <string>\n#include <vector>\n\n"
       << "namespace " << model.kernels_namespace << "::list {\n\n"
-      << "/// The kernels, in the order of the header.\n"
       << "/// The most parameters any kernel takes.\n"
       << "inline constexpr std::size_t largest_arity = " << largest_arity << ";\n\n"
       << doc_comment(

@@ -301,7 +301,7 @@ class Validation {
     return false;
   }
 
-  bool matches_case(const Case& stated, const std::vector<ex>& conditions, const ex& value) const {
+  bool same_conditions(const Case& stated, const std::vector<ex>& conditions) const {
     if (stated.conditions.nops() != conditions.size()) return false;
     for (const ex& condition : conditions) {
       const ex ours = condition.subs(kernel_.in_claim_terms);
@@ -310,7 +310,33 @@ class Validation {
         found |= same_condition(ours, theirs.subs(kernel_.in_claim_terms));
       if (!found) return false;
     }
-    return GiNaC::normal(comparable(value, {}) - comparable(stated.value, {})).is_zero();
+    return true;
+  }
+  // A case with one value: the guarded step's value is it. A case with a list of values: on the branch
+  // that takes every piecewise guard of the same condition, each output is the value in its place.
+  bool matches_case(const Case& stated, const std::vector<ex>& conditions, GuardAt at,
+                    const ex& value) const {
+    if (!same_conditions(stated, conditions)) return false;
+    if (!GiNaC::is_a<lst>(stated.value)) {
+      return GiNaC::normal(comparable(value, {}) - comparable(stated.value, {})).is_zero();
+    }
+    const lst& values = GiNaC::ex_to<lst>(stated.value);
+    if (values.nops() != kernel_.outputs.size()) return false;
+    std::set<GuardAt> taken;
+    for (const GuardAt& other : all_guards()) {
+      const Guard& guard = kernel_.steps[other.first].guards[other.second];
+      if (guard.kind == Guard::Kind::piecewise && same_condition(condition_of(other), condition_of(at)))
+        taken.insert(other);
+    }
+    const Branch branch = branch_taking(taken);
+    const GiNaC::exmap steps = step_values(branch);
+    for (std::size_t i = 0; i < values.nops(); ++i) {
+      if (!GiNaC::normal(comparable(kernel_.outputs[i].subs(steps), branch.facts) -
+                         comparable(values.op(i), branch.facts))
+               .is_zero())
+        return false;
+    }
+    return true;
   }
 
   void check_piecewise_guards() {
@@ -331,7 +357,7 @@ class Validation {
       const Claim* claim = find_claim(guard.claim);
       bool stated = false;
       if (claim != nullptr) {
-        for (const Case& c : claim->cases) stated |= matches_case(c, conditions, value);
+        for (const Case& c : claim->cases) stated |= matches_case(c, conditions, at, value);
       }
       if (!stated) {
         fail(guard.claim, "its guard " + print(guard.condition, Notation::text) + " on step " +

@@ -4,7 +4,7 @@
 // listed by the derivation, so that tests call, measure and compile each one without a list
 // kept by hand.
 //
-// Fingerprint: fnv1a64:eb81951b87b94523 (of this header and the audit)
+// Fingerprint: fnv1a64:1afeccab0522f8be (of this header and the audit)
 #pragma once
 
 #include <billiards/spin_kernels.hpp>
@@ -16,9 +16,8 @@
 
 namespace billiards::kernels::spin::list {
 
-/// The kernels, in the order of the header.
 /// The most parameters any kernel takes.
-inline constexpr std::size_t largest_arity = 4;
+inline constexpr std::size_t largest_arity = 6;
 
 /// Calls the kernel or reference kernel `name` with its arguments looked up by parameter name,
 /// `at("m1")`; returns its outputs in order. Throws std::invalid_argument for an unknown name.
@@ -35,6 +34,15 @@ std::vector<Scalar> call(const std::string& name, const Arguments& at) {
   if (name == "friction_impulse") {
     const auto r = friction_impulse(at("friction"), at("normal_impulse"), at("tangential_slip"),
                                     at("tangential_inverse_effective_mass"));
+    return {r};
+  }
+  if (name == "tangential_velocity_change") {
+    const auto r = tangential_velocity_change(at("m1"), at("m2"), at("restitution"), at("friction"),
+                                              at("relative_normal_speed"), at("tangential_slip"));
+    return {r.first, r.second};
+  }
+  if (name == "spin_change") {
+    const auto r = spin_change(at("velocity_change"), at("radius"));
     return {r};
   }
   if (name == "spin_change_per_impulse") {
@@ -64,6 +72,11 @@ BILLIARDS_HOST_DEVICE Scalar sum_of_every_kernel(const Scalar* a) noexcept {
   sum += tangential_inverse_effective_mass(a[0], a[1]);
   sum += normal_impulse(a[0], a[1], a[2], a[3]);
   sum += friction_impulse(a[0], a[1], a[2], a[3]);
+  {
+    const auto r = tangential_velocity_change(a[0], a[1], a[2], a[3], a[4], a[5]);
+    sum += r.first + r.second;
+  }
+  sum += spin_change(a[0], a[1]);
   sum += spin_change_per_impulse(a[0], a[1]);
   sum += slide_time(a[0], a[1], a[2]);
   sum += roll_time(a[0], a[1], a[2]);

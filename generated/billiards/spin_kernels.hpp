@@ -5,7 +5,7 @@
 // derivation audit before it was printed, and names the claims it implements. They take masses
 // and dot products, so they serve vectors of any dimension and need no Eigen.
 //
-// Fingerprint: fnv1a64:759cef811544bb25 (of this header and the audit)
+// Fingerprint: fnv1a64:fedaa93dbd860244 (of this header and the audit)
 #pragma once
 
 #include <limits>
@@ -26,6 +26,14 @@
 #endif
 
 namespace billiards::kernels::spin {
+
+/// The changes of the two balls' velocities along the slip direction û_t that a tangential impulse j
+/// against the slip makes: ball 1's by +j/m1, ball 2's by −j/m2.
+template <typename Scalar>
+struct TangentialVelocityChange {
+  Scalar first;   ///< j/m1, ball 1's change along û_t
+  Scalar second;  ///< j/m2, ball 2's change against û_t
+};
 
 /// |x|, constexpr (std::abs is not before C++23).
 template <typename Scalar>
@@ -106,6 +114,46 @@ BILLIARDS_HOST_DEVICE constexpr Scalar friction_impulse(Scalar friction, Scalar 
   if (friction * normal_impulse < tangential_slip / tangential_inverse_effective_mass)
     impulse = friction * normal_impulse;
   return impulse;
+}
+
+/// The changes j/m1 and j/m2 of the two balls' velocities along û_t (ball 1 +, ball 2 −) that the
+/// tangential impulse j = min(μ J_n, |u_t|/k) makes, as min(−(1 + e) μ (v2 − v1)·n, 2|u_t|/7)/(1
+/// + m1/m2) and /(1 + m2/m1): only the mass ratio enters, so no mass's size can overflow it; an
+/// infinite ratio gives the heavy ball 0.
+///
+/// Proven equal to the derived expression of the audit claim `kernel.tangential_velocity_change` before
+/// it was printed; also implements `kernel.tangential_velocity_change_sliding_condition`,
+/// `friction.sticking_impulse`, `friction.sliding_never_reverses`.
+///
+/// Total ops: 18
+template <typename Scalar>
+BILLIARDS_HOST_DEVICE constexpr TangentialVelocityChange<Scalar> tangential_velocity_change(Scalar m1,
+                                                                                            Scalar m2,
+                                                                                            Scalar restitution,
+                                                                                            Scalar friction,
+                                                                                            Scalar relative_normal_speed,
+                                                                                            Scalar tangential_slip) noexcept {
+  const Scalar first_fraction = Scalar(1) / (Scalar(1) + m1 / m2);
+  const Scalar second_fraction = Scalar(1) / (Scalar(1) + m2 / m1);
+  const Scalar sticking_change = Scalar(2) * tangential_slip / Scalar(7);
+  const Scalar sliding_change = -((Scalar(1) + restitution) * friction * relative_normal_speed);
+  Scalar first = first_fraction * sticking_change;
+  if (sliding_change < sticking_change) first = first_fraction * sliding_change;
+  Scalar second = second_fraction * sticking_change;
+  if (sliding_change < sticking_change) second = second_fraction * sliding_change;
+  return {first, second};
+}
+
+/// The spin change 5 Δv/(2R) along n × û_t of a ball of radius R whose velocity a tangential impulse
+/// changes by Δv (tangential_velocity_change's first for ball 1, second for ball 2).
+///
+/// Proven equal to the derived expression of the audit claim `kernel.spin_change` before it was
+/// printed; also implements `kernel.spin_change_second_ball`.
+///
+/// Total ops: 3
+template <typename Scalar>
+BILLIARDS_HOST_DEVICE constexpr Scalar spin_change(Scalar velocity_change, Scalar radius) noexcept {
+  return Scalar(5) * velocity_change / radius / Scalar(2);
 }
 
 /// R/I = 5/(2 m R) for a solid sphere of mass m and radius R: a tangential impulse j against the slip

@@ -158,6 +158,36 @@ TEMPLATE_TEST_CASE("collide_with_friction: a pair that does not approach is unch
   CHECK(y.angular_velocity == b.angular_velocity);
 }
 
+TEMPLATE_TEST_CASE("collide_with_friction: masses anywhere in the type's range, as accurate as masses near 1",
+                   "[runtime][spin]", float, double) {
+  using Scalar = TestType;
+  using limits = std::numeric_limits<Scalar>;
+  std::mt19937_64 rng(14);
+  std::uniform_int_distribution<int> exponent(limits::min_exponent, limits::max_exponent - 2);
+  std::uniform_real_distribution<double> unit(0, 1);
+  const long double eps = limits::epsilon();
+  for (int i = 0; i < 20000; ++i) {
+    Ball<Scalar> a = random_ball<Scalar>(rng), b = random_ball<Scalar>(rng);
+    // Every other pair at the ends of the range: the smallest normal mass beside the largest.
+    const int ea = i % 2 ? exponent(rng) : (i % 4 ? limits::min_exponent : limits::max_exponent - 2);
+    const int eb = i % 2 ? exponent(rng) : (i % 4 ? limits::max_exponent - 2 : limits::min_exponent);
+    a.mass = std::ldexp(Scalar(1 + unit(rng)), ea - 1);
+    b.mass = std::ldexp(Scalar(1 + unit(rng)), eb - 1);
+    const Eigen::Matrix<Scalar, 3, 1> n = random_unit<Scalar>(rng);
+    if ((b.velocity - a.velocity).dot(n) >= 0) b.velocity -= Scalar(2) * (b.velocity - a.velocity).dot(n) * n;
+    const Scalar e = Scalar(unit(rng)), mu = Scalar(0.5 * unit(rng));
+    const auto [x, y] = billiards::checked::collide_with_friction(a, b, n, e, mu);
+    const Reference r = by_hand(a, b, n, e, mu);
+    // No mass-ratio factor here: only the ratio enters the kernels, and no mass's size.
+    const long double tolerance = 64 * eps * scale_of(r);
+    INFO("case " << i << ": masses " << a.mass << ", " << b.mass);
+    CHECK((x.velocity.template cast<long double>() - r.v1).norm() <= tolerance);
+    CHECK((y.velocity.template cast<long double>() - r.v2).norm() <= tolerance);
+    CHECK((x.angular_velocity.template cast<long double>() - r.w1).norm() <= tolerance / a.radius);
+    CHECK((y.angular_velocity.template cast<long double>() - r.w2).norm() <= tolerance / b.radius);
+  }
+}
+
 TEMPLATE_TEST_CASE("collide_with_friction: the stun-shot throw is atan(min(mu, tan(phi)/7)) (TP A-14)",
                    "[runtime][spin]", float, double) {
   using Scalar = TestType;

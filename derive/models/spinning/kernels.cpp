@@ -6,12 +6,13 @@
 
 namespace billiards::derive::spinning {
 
-void kernel_claims(Recorder& record, const Contact& c) {
+void kernel_claims(Recorder& record, const Contact& c, const Impulse& impulse, const Friction& friction) {
   const Symbols& s = symbols();
   record.section("kernel_outputs", "What each emitted kernel computes",
                  "The claims the kernels are proven against, where the steps above do not state the "
-                 "emitted quantity on its own: the tangential impulse of Coulomb friction and the spin "
-                 "change per unit of tangential impulse.");
+                 "emitted quantity on its own: the tangential impulse of Coulomb friction, the velocity and "
+                 "spin changes it makes, and these in forms that depend on the masses only through their "
+                 "ratio, so that no mass's size can overflow them.");
   // u_t' = u_t + k J_t (impulse.decoupled) with J_t = −j û_t: the slip's length |u_t| − k j.
   const ex j = s.tangential_impulse, sigma = s.tangential_slip, k = s.k;
   const ex sticking = GiNaC::lsolve(sigma - k * j == 0, j);
@@ -27,7 +28,8 @@ void kernel_claims(Recorder& record, const Contact& c) {
       .depends_on = {"impulse.decoupled", "friction.sticking_impulse", "definition.coulomb_friction"},
       .cases = {{lst{s.friction * s.normal_impulse < sigma / k}, s.friction * s.normal_impulse}},
   });
-  // Δω1 = I1⁻¹ (R1 n × (−J)) for a tangential J = −j t̂: (5 j/(2 m1 R1)) (n × t̂).
+  // A tangential impulse J = −t (t = n × a) on ball 2, +t on ball 1: the changes of each ball's velocity
+  // and spin per unit of it, from the impulse equations.
   const Vec tangent = c.tangent();
   const std::vector<Vec> after = c.after(scale(-1, tangent));
   const GiNaC::exmap solid{{s.I1, numeric(2, 5) * s.m1 * s.R1 * s.R1},
@@ -56,6 +58,71 @@ void kernel_claims(Recorder& record, const Contact& c) {
       .paper_expression = 5 / (2 * s.m2 * s.R2),
       .derived_expression = second,
       .depends_on = {"kernel.spin_change_per_impulse"},
+  });
+  // Per unit of impulse: ball 1's velocity changes by +t/m1, ball 2's by −t/m2.
+  const ex per_impulse_first = GiNaC::normal((after[0][0] - c.v1[0]) / tangent[0]);
+  const ex per_impulse_second = GiNaC::normal((c.v2[0] - after[2][0]) / tangent[0]);
+  // The sticking impulse |u_t|/k and the normal impulse as derived (friction.sticking_impulse,
+  // friction.normal_impulse), for solid spheres.
+  const ex stick = GiNaC::normal(friction.sticking_impulse.subs(solid));
+  const ex Jn = friction.normal_impulse;
+  const ex e = s.restitution, un = s.normal_slip, mu = s.friction;
+  const ex sliding_condition = -(1 + e) * mu * un < numeric(2, 7) * sigma;
+  record.add({
+      .id = "kernel.tangential_velocity_change_sliding_condition",
+      .statement = "Coulomb's bound decides without the masses: (μ J_n − |u_t|/k)(1/m1 + 1/m2) = −(1 + e) μ "
+                   "u·n − 2|u_t|/7, and 1/m1 + 1/m2 > 0, so μ J_n < |u_t|/k (sliding) exactly where "
+                   "−(1 + e) μ u·n < 2|u_t|/7.",
+      .method = "friction.normal_impulse and friction.sticking_impulse (I = (2/5) m R²) times "
+                "1/m1 + 1/m2 as derived in impulse.decoupled; identity after normal()",
+      .comparison = Comparison::identity,
+      .paper_expression = -(1 + e) * mu * un - numeric(2, 7) * sigma,
+      .derived_expression = GiNaC::normal((mu * Jn - stick) * impulse.normal_inverse),
+      .depends_on = {"friction.normal_impulse", "friction.sticking_impulse", "impulse.decoupled"},
+  });
+  record.add({
+      .id = "kernel.tangential_velocity_change",
+      .statement = "The impulse j against the slip changes ball 1's velocity by +(j/m1) û_t and ball 2's by "
+                   "−(j/m2) û_t, where j/m1 = min(−(1 + e) μ u·n, 2|u_t|/7)/(1 + m1/m2) and j/m2 = the "
+                   "same/(1 + m2/m1): sticking gives (2|u_t|/7)/(1 + m1/m2), sliding (the case) −(1 + e) μ "
+                   "u·n/(1 + m1/m2). Only the mass ratio enters.",
+      .method = "the velocity changes per unit of impulse from the impulse equations (J = −t on ball 2) "
+                "times friction.sticking_impulse for solid spheres, and times μ J_n "
+                "(friction.normal_impulse) in the sliding case; identity after normal()",
+      .comparison = Comparison::identity,
+      .paper_expression =
+          lst{numeric(2, 7) * sigma / (1 + s.m1 / s.m2), numeric(2, 7) * sigma / (1 + s.m2 / s.m1)},
+      .derived_expression =
+          lst{GiNaC::normal(stick * per_impulse_first), GiNaC::normal(stick * per_impulse_second)},
+      .depends_on = {"definition.impulse", "friction.sticking_impulse", "friction.normal_impulse",
+                     "kernel.tangential_velocity_change_sliding_condition"},
+      .cases = {{lst{sliding_condition}, lst{GiNaC::normal(mu * Jn * per_impulse_first),
+                                             GiNaC::normal(mu * Jn * per_impulse_second)}}},
+  });
+  // The spin change per velocity change: Δω/Δv of the same impulse, for each ball.
+  const ex dv = s.velocity_change;
+  record.add({
+      .id = "kernel.spin_change",
+      .statement =
+          "Ball 1, whose velocity the tangential impulse changes by Δv along û_t, turns by "
+          "(5 Δv/(2 R1)) (n × û_t): the spin change per velocity change is 5/(2R), free of the mass.",
+      .method = "kernel.spin_change_per_impulse over ball 1's velocity change per unit of impulse (J = −t on "
+                "ball 2); identity after normal()",
+      .comparison = Comparison::identity,
+      .paper_expression = 5 * dv / (2 * s.R1),
+      .derived_expression = GiNaC::normal(dv * first / per_impulse_first),
+      .depends_on = {"kernel.spin_change_per_impulse", "definition.impulse"},
+  });
+  record.add({
+      .id = "kernel.spin_change_second_ball",
+      .statement = "Ball 2, whose velocity the same impulse changes by Δv against û_t, turns by "
+                   "(5 Δv/(2 R2)) (n × û_t): the same coefficient, the same sense as ball 1's.",
+      .method = "kernel.spin_change_per_impulse_second_ball over ball 2's velocity change per unit of "
+                "impulse; identity after normal()",
+      .comparison = Comparison::identity,
+      .paper_expression = 5 * dv / (2 * s.R2),
+      .derived_expression = GiNaC::normal(dv * second / per_impulse_second),
+      .depends_on = {"kernel.spin_change_per_impulse_second_ball", "definition.impulse"},
   });
 }
 
@@ -109,6 +176,50 @@ std::vector<Kernel> spin_kernels(const Cloth& cloth) {
         .equals = "kernel.friction_impulse",
         .in_claim_terms = {{normal, s.normal_impulse}, {slip, s.tangential_slip}, {k, s.k}},
         .claims = {"friction.sticking_impulse", "friction.sliding_never_reverses"},
+    });
+  }
+  {
+    const GiNaC::realsymbol speed("relative_normal_speed");
+    const GiNaC::possymbol slip("tangential_slip");
+    const GiNaC::symbol first("first_fraction"), second("second_fraction"), sticking("sticking_change"),
+        sliding("sliding_change"), change1("first"), change2("second");
+    kernels.push_back({
+        .name = "tangential_velocity_change",
+        .brief = "The changes j/m1 and j/m2 of the two balls' velocities along û_t (ball 1 +, ball 2 −) that "
+                 "the tangential impulse j = min(μ J_n, |u_t|/k) makes, as min(−(1 + e) μ (v2 − v1)·n, "
+                 "2|u_t|/7)/(1 + m1/m2) and /(1 + m2/m1): only the mass ratio enters, so no mass's size can "
+                 "overflow it; an infinite ratio gives the heavy ball 0.",
+        .parameters = {s.m1, s.m2, s.restitution, s.friction, speed, slip},
+        .steps = {{first, 1 / (1 + s.m1 / s.m2)},
+                  {second, 1 / (1 + s.m2 / s.m1)},
+                  {sticking, numeric(2, 7) * slip},
+                  {sliding, -(1 + s.restitution) * s.friction * speed},
+                  {change1,
+                   sticking * first,
+                   {{sliding < sticking, sliding * first, Kind::piecewise,
+                     "kernel.tangential_velocity_change"}}},
+                  {change2,
+                   sticking * second,
+                   {{sliding < sticking, sliding * second, Kind::piecewise,
+                     "kernel.tangential_velocity_change"}}}},
+        .outputs = {change1, change2},
+        .equals = "kernel.tangential_velocity_change",
+        .in_claim_terms = {{speed, s.normal_slip}, {slip, s.tangential_slip}},
+        .claims = {"kernel.tangential_velocity_change_sliding_condition", "friction.sticking_impulse",
+                   "friction.sliding_never_reverses"},
+    });
+  }
+  {
+    const GiNaC::possymbol change("velocity_change"), radius("radius");
+    kernels.push_back({
+        .name = "spin_change",
+        .brief = "The spin change 5 Δv/(2R) along n × û_t of a ball of radius R whose velocity a tangential "
+                 "impulse changes by Δv (tangential_velocity_change's first for ball 1, second for ball 2).",
+        .parameters = {change, radius},
+        .outputs = {5 * change / (2 * radius)},
+        .equals = "kernel.spin_change",
+        .in_claim_terms = {{change, s.velocity_change}, {radius, s.R1}},
+        .claims = {"kernel.spin_change_second_ball"},
     });
   }
   {

@@ -30,6 +30,10 @@ ModelInfo info() {
       "Rolling resistance is a modelling assumption (`assumption.rolling_resistance`), the only unchecked "
       "claim.",
   };
+  model.pair_result = {"TangentialVelocityChange",
+                       "The changes of the two balls' velocities along the slip direction û_t that a "
+                       "tangential impulse j against the slip makes: ball 1's by +j/m1, ball 2's by −j/m2.",
+                       "j/m1, ball 1's change along û_t", "j/m2, ball 2's change against û_t"};
   model.kernels_namespace = "billiards::kernels::spin";
   model.markdown_path = "spinning/AUDIT.md";
   model.json_path = "spinning/audit.json";
@@ -50,7 +54,7 @@ Derivation derive() {
   const Friction friction = the_friction(record, contact, impulse);
   the_throw(record, contact, friction);
   const Cloth cloth = the_cloth(record);
-  kernel_claims(record, contact);
+  kernel_claims(record, contact, impulse, friction);
   derivation.kernels = spin_kernels(cloth);
   return derivation;
 }

@@ -35,6 +35,7 @@ struct Symbols {
   GiNaC::realsymbol normal_slip{"un", "(u \\cdot n)"};  ///< u·n = (v2 − v1)·n
   GiNaC::possymbol k{"k", "k"};                         ///< the tangential inverse effective mass
   GiNaC::possymbol q{"q", "q"};                         ///< a positive parameter for sign claims
+  GiNaC::possymbol velocity_change{"dv", "\\Delta v"};  ///< a ball's velocity change along û_t
   // The stun shot: cos φ and sin φ of the cut angle, the cue ball's speed.
   GiNaC::possymbol cos_cut{"cos_phi", "\\cos\\varphi"};
   GiNaC::possymbol sin_cut{"sin_phi", "\\sin\\varphi"};
@@ -111,7 +112,7 @@ Cloth the_cloth(Recorder& record);
 // ---- The kernels ----------------------------------------------------------------------------------
 
 /// The claims the kernels are proven against where the steps do not state the emitted quantity alone.
-void kernel_claims(Recorder& record, const Contact& contact);
+void kernel_claims(Recorder& record, const Contact& contact, const Impulse& impulse, const Friction& friction);
 
 std::vector<Kernel> spin_kernels(const Cloth& cloth);
 

@@ -64,7 +64,11 @@ template <typename Scalar>
 /// slip (sticking) or acts at the Coulomb bound throughout (sliding). Then
 /// \f$v_1' = v_1 - J/m_1\f$, \f$v_2' = v_2 + J/m_2\f$ and each spin turns by
 /// \f$\tfrac{5 j}{2 m R} (n \times \hat u_t)\f$ (`kernel.spin_change_per_impulse`), with
-/// \f$J = J_n n - j \hat u_t\f$ the impulse on ball 2. Momentum and each ball's angular momentum about
+/// \f$J = J_n n - j \hat u_t\f$ the impulse on ball 2. The tangential part is computed from the mass
+/// ratio alone, \f$j/m_1 = \min(-(1 + e)\,\mu\,(v_2 - v_1) \cdot n,\ 2|u_t|/7)/(1 + m_1/m_2)\f$ and
+/// the spin change \f$5 (j/m)/(2R)\f$ (`kernel.tangential_velocity_change`, `kernel.spin_change`), so
+/// that masses anywhere in the type's range give the same result as masses near 1.
+/// Momentum and each ball's angular momentum about
 /// its contact point are conserved and no energy is created (`conservation.*`,
 /// `friction.energy_nonincreasing_sticking`, `friction.energy_nonincreasing_sliding`).
 ///
@@ -101,17 +105,18 @@ template <typename Scalar, typename DN>
   const detail::Vector3<Scalar> tangential_slip = slip - detail::dot(slip, normal) * normal;
   const Scalar slip_speed = tangential_slip.stableNorm();
   if (!(friction > 0) || !(slip_speed > 0)) return after;  // no tangential impulse
-  const Scalar normal_impulse = kernels::spin::normal_impulse(m1, m2, restitution, relative_normal_speed);
-  const Scalar k = kernels::spin::tangential_inverse_effective_mass(m1, m2);
-  const Scalar j = kernels::spin::friction_impulse(friction, normal_impulse, slip_speed, k);
+  // j/m1 and j/m2 from the mass ratio alone (kernel.tangential_velocity_change): j itself is never
+  // formed, so no mass's size can overflow or underflow the velocity and spin changes.
+  const auto tangential = kernels::spin::tangential_velocity_change(m1, m2, restitution, friction,
+                                                                    relative_normal_speed, slip_speed);
   const detail::Vector3<Scalar> slip_direction = tangential_slip / slip_speed;
   const detail::Vector3<Scalar> spin_axis = normal.cross(slip_direction);
-  after.first.velocity = detail::plus_multiple(after.first.velocity, j / m1, slip_direction);
-  after.second.velocity = detail::plus_multiple(after.second.velocity, -(j / m2), slip_direction);
+  after.first.velocity = detail::plus_multiple(after.first.velocity, tangential.first, slip_direction);
+  after.second.velocity = detail::plus_multiple(after.second.velocity, -tangential.second, slip_direction);
   after.first.angular_velocity = detail::plus_multiple(
-      ball1.angular_velocity, j * kernels::spin::spin_change_per_impulse(m1, ball1.radius), spin_axis);
+      ball1.angular_velocity, kernels::spin::spin_change(tangential.first, ball1.radius), spin_axis);
   after.second.angular_velocity = detail::plus_multiple(
-      ball2.angular_velocity, j * kernels::spin::spin_change_per_impulse(m2, ball2.radius), spin_axis);
+      ball2.angular_velocity, kernels::spin::spin_change(tangential.second, ball2.radius), spin_axis);
   return after;
 }
 
