@@ -5,7 +5,7 @@
 // derivation audit before it was printed, and names the claims it implements. They take masses
 // and dot products, so they serve vectors of any dimension and need no Eigen.
 //
-// Fingerprint: fnv1a64:fedaa93dbd860244 (of this header and the audit)
+// Fingerprint: fnv1a64:5c80bf57bc9bbe83 (of this header and the audit)
 #pragma once
 
 #include <limits>
@@ -118,14 +118,14 @@ BILLIARDS_HOST_DEVICE constexpr Scalar friction_impulse(Scalar friction, Scalar 
 
 /// The changes j/m1 and j/m2 of the two balls' velocities along û_t (ball 1 +, ball 2 −) that the
 /// tangential impulse j = min(μ J_n, |u_t|/k) makes, as min(−(1 + e) μ (v2 − v1)·n, 2|u_t|/7)/(1
-/// + m1/m2) and /(1 + m2/m1): only the mass ratio enters, so no mass's size can overflow it; an
-/// infinite ratio gives the heavy ball 0.
+/// + m1/m2) and /(1 + m2/m1): only the mass ratio enters, so no mass's size can overflow it; beyond the
+/// normal range of a fraction the heavy ball's change is the bound over m1 + m2 times the light mass.
 ///
 /// Proven equal to the derived expression of the audit claim `kernel.tangential_velocity_change` before
 /// it was printed; also implements `kernel.tangential_velocity_change_sliding_condition`,
 /// `friction.sticking_impulse`, `friction.sliding_never_reverses`.
 ///
-/// Total ops: 18
+/// Total ops: 21
 template <typename Scalar>
 BILLIARDS_HOST_DEVICE constexpr TangentialVelocityChange<Scalar> tangential_velocity_change(Scalar m1,
                                                                                             Scalar m2,
@@ -136,11 +136,21 @@ BILLIARDS_HOST_DEVICE constexpr TangentialVelocityChange<Scalar> tangential_velo
   const Scalar first_fraction = Scalar(1) / (Scalar(1) + m1 / m2);
   const Scalar second_fraction = Scalar(1) / (Scalar(1) + m2 / m1);
   const Scalar sticking_change = Scalar(2) * tangential_slip / Scalar(7);
-  const Scalar sliding_change = -((Scalar(1) + restitution) * friction * relative_normal_speed);
-  Scalar first = first_fraction * sticking_change;
-  if (sliding_change < sticking_change) first = first_fraction * sliding_change;
-  Scalar second = second_fraction * sticking_change;
-  if (sliding_change < sticking_change) second = second_fraction * sliding_change;
+  const Scalar coulomb_speed = friction * relative_normal_speed;
+  const Scalar sliding_change = -((Scalar(1) + restitution) * coulomb_speed);
+  Scalar bound = sticking_change;
+  if (sliding_change < sticking_change) bound = sliding_change;
+  const Scalar bound_per_total_mass = bound / (m1 + m2);
+  Scalar first_factor = first_fraction;
+  if (first_fraction < smallest_normal<Scalar>()) first_factor = bound_per_total_mass;
+  Scalar first_multiplier = bound;
+  if (first_fraction < smallest_normal<Scalar>()) first_multiplier = m2;
+  const Scalar first = first_factor * first_multiplier;
+  Scalar second_factor = second_fraction;
+  if (second_fraction < smallest_normal<Scalar>()) second_factor = bound_per_total_mass;
+  Scalar second_multiplier = bound;
+  if (second_fraction < smallest_normal<Scalar>()) second_multiplier = m1;
+  const Scalar second = second_factor * second_multiplier;
   return {first, second};
 }
 

@@ -12,14 +12,25 @@
 // which it cannot move anyway. Exact values come from the derivation's own kernel expressions with
 // every input converted exactly to a rational; an infinite mass is the limit t → 0 of 1/t.
 //
+// The spinning-ball kernels (billiards::kernels::spin) return quantities of their own (an impulse, a
+// time, a velocity change), judged by their relative error, |computed − exact| / (ε |exact|), the
+// denominator floored at the smallest subnormal; an exact +∞ (a phase without friction) must come out
+// +∞. Their inputs are drawn by parameter name: each positive quantity log-uniform over
+// [2^−E/4, 2^E/4] (E the type's largest exponent: 1e−9 to 4e9 in float), where no intermediate of
+// these few-operation forms can overflow or underflow, with zeros (no slip, no friction), restitution 0
+// and 1, and equal masses among them; tangential_velocity_change, which depends on the masses only
+// through their ratio, gets masses over the whole normal range.
+//
 // Usage: billiards-accuracy [--samples N] [--limit ULP]
 //   prints a Markdown table (kernel, type, samples, largest error in ULP, non-finite results) and
 //   exits 1 when an error exceeds --limit (default 4) or a valid input gives NaN or infinity.
 #include "core/named_constants.hpp"
 #include "exact.hpp"
 #include "models/parkin2023/paper.hpp"
+#include "models/spinning/spinning.hpp"
 
 #include <billiards/kernel_list.hpp>
+#include <billiards/spin_kernel_list.hpp>
 
 #include <CLI/CLI.hpp>
 
@@ -291,6 +302,21 @@ class InputGenerator {
   std::uniform_real_distribution<double> unit_{0.0, 1.0};
 };
 
+// The inputs and output `index` of a kernel's largest error, for --verbose.
+template <typename Scalar>
+std::string describe(const Inputs<Scalar>& in, std::size_t index, Scalar computed, const Exact& exact) {
+  std::ostringstream text;
+  text.precision(9);
+  for (const auto& [name, value] : in) text << name << "=" << static_cast<double>(value) << " ";
+  text << "output " << index << " computed " << computed << " exact ";
+  if (exact.infinite) {
+    text << "inf";
+  } else {
+    text << exact.value.to_double();
+  }
+  return text.str();
+}
+
 struct Row {
   std::string kernel, type;
   long samples = 0;
@@ -321,13 +347,101 @@ Row measure(const billiards::derive::Kernel& kernel, const char* type, long samp
                   : scaled_ulp_error(computed[i], exact[i].value, changed_velocity(kernel, in, i));
       if (error > row.worst) {
         row.worst = error;
-        row.worst_input.clear();
-        for (const auto& [name, value] : in)
-          row.worst_input += name + "=" + std::to_string(static_cast<double>(value)) + " ";
-        std::ostringstream text;
-        text << "output " << i << " computed " << computed[i] << " exact "
-             << (exact[i].infinite ? "inf" : std::to_string(exact[i].value.to_double()));
-        row.worst_input += text.str();
+        row.worst_input = describe(in, i, computed[i], exact[i]);
+      }
+    }
+    ++row.samples;
+  }
+  return row;
+}
+
+// ---- The spinning-ball kernels ---------------------------------------------------------------
+
+template <typename Scalar>
+double relative_ulp_error(Scalar computed, const Exact& exact) {
+  if (exact.infinite) return std::isinf(computed) && computed > 0 ? 0 : 1e6;
+  if (!std::isfinite(computed)) return 1e6;
+  numeric scale = exact_rational(std::numeric_limits<Scalar>::epsilon()) * GiNaC::abs(exact.value);
+  const numeric smallest = exact_rational(std::numeric_limits<Scalar>::denorm_min());
+  if (scale < smallest) scale = smallest;
+  const numeric ratio = GiNaC::abs(exact_rational(computed) - exact.value) / scale;
+  return ratio > numeric(1000000) ? 1e6 : ratio.to_double();
+}
+
+// Inputs of a spin kernel by parameter name (see the top of this file).
+template <typename Scalar>
+class SpinInputGenerator {
+ public:
+  explicit SpinInputGenerator(std::uint64_t seed) : random_(seed) {}
+
+  Inputs<Scalar> operator()(const billiards::derive::Kernel& kernel, int sample) {
+    const int mode = sample % 8;
+    const bool ratio_only = kernel.name == "tangential_velocity_change";
+    Inputs<Scalar> in;
+    for (const ex& parameter : kernel.parameters) {
+      const std::string name = GiNaC::ex_to<GiNaC::symbol>(parameter).get_name();
+      if (name == "restitution") {
+        in[name] = mode == 1 ? Scalar(0) : mode == 2 ? Scalar(1) : Scalar(unit_(random_));
+      } else if (name == "relative_normal_speed") {
+        in[name] = -wide();  // approaching
+      } else if (name.find("friction") != std::string::npos) {
+        in[name] = mode == 3 ? Scalar(0) : mode == 4 ? wide() : Scalar(unit_(random_));
+      } else if ((name == "m1" || name == "m2") && ratio_only) {
+        in[name] = log_uniform(std::numeric_limits<Scalar>::min(), std::numeric_limits<Scalar>::max() / 2);
+      } else if (mode == 5 && (name == "tangential_slip" || name.find("speed") != std::string::npos)) {
+        in[name] = Scalar(0);  // no slip, at rest, no spin
+      } else {
+        in[name] = wide();
+      }
+    }
+    if (mode == 6 && in.count("m1")) in["m2"] = in["m1"];
+    // Both regimes of the friction kernels: the sliding bound a factor of up to 4 either side of sticking.
+    if (mode == 7 && in.count("tangential_slip") && in.count("normal_impulse")) {
+      in["tangential_slip"] = in["friction"] * in["normal_impulse"] *
+                              in["tangential_inverse_effective_mass"] *
+                              static_cast<Scalar>(std::exp2(4 * unit_(random_) - 2));
+    }
+    if (mode == 7 && in.count("tangential_slip") && in.count("relative_normal_speed")) {
+      in["tangential_slip"] = Scalar(3.5) * (1 + in["restitution"]) * in["friction"] *
+                              -in["relative_normal_speed"] *
+                              static_cast<Scalar>(std::exp2(4 * unit_(random_) - 2));
+    }
+    return in;
+  }
+
+ private:
+  Scalar wide() {
+    const int quarter = std::numeric_limits<Scalar>::max_exponent / 4;
+    return log_uniform(std::ldexp(Scalar(1), -quarter), std::ldexp(Scalar(1), quarter));
+  }
+  Scalar log_uniform(Scalar low, Scalar high) {
+    std::uniform_real_distribution<double> exponent(std::log2(static_cast<double>(low)),
+                                                    std::log2(static_cast<double>(high)));
+    const Scalar x = static_cast<Scalar>(std::exp2(exponent(random_)));
+    return std::min(std::max(x, low), high);
+  }
+
+  std::mt19937_64 random_;
+  std::uniform_real_distribution<double> unit_{0.0, 1.0};
+};
+
+template <typename Scalar>
+Row measure_spin(const billiards::derive::Kernel& kernel, const char* type, long samples) {
+  Row row;
+  row.kernel = "spin::" + kernel.name;
+  row.type = type;
+  SpinInputGenerator<Scalar> generate(0x5B1A5ULL + kernel.name.size());
+  for (long sample = 0; sample < samples; ++sample) {
+    const Inputs<Scalar> in = generate(kernel, static_cast<int>(sample));
+    const std::vector<Scalar> computed = billiards::kernels::spin::list::call<Scalar>(
+        kernel.name, [&](const char* key) { return in.at(key); });
+    const std::vector<Exact> exact = exact_outputs(kernel, in);
+    for (std::size_t i = 0; i < computed.size(); ++i) {
+      if (std::isnan(computed[i]) || (std::isinf(computed[i]) && !exact[i].infinite)) ++row.non_finite;
+      const double error = relative_ulp_error(computed[i], exact[i]);
+      if (error > row.worst) {
+        row.worst = error;
+        row.worst_input = describe(in, i, computed[i], exact[i]);
       }
     }
     ++row.samples;
@@ -360,6 +474,10 @@ int main(int argc, char** argv) {
   for (const billiards::derive::Kernel& kernel : derivation.kernels) {
     rows.push_back(measure<float>(kernel, "float", samples));
     rows.push_back(measure<double>(kernel, "double", samples));
+  }
+  for (const billiards::derive::Kernel& kernel : billiards::derive::spinning::derive().kernels) {
+    rows.push_back(measure_spin<float>(kernel, "float", samples));
+    rows.push_back(measure_spin<double>(kernel, "double", samples));
   }
   // The benchmark's reference kernel (finite masses only) for comparison, not held to the limit.
   for (const billiards::derive::Kernel& kernel : derivation.reference_kernels) {

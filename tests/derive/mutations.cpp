@@ -111,9 +111,7 @@ const std::vector<Mutation>& spin_mutations() {
        [](Kernel& k) { step(k, "impulse").guards.at(0).alternative = symbol(k, "friction"); }},
       // The mass-ratio form of the tangential change: each ball's fraction, the 2/7, the sliding bound.
       {"tangential_change_fractions_swapped", "tangential_velocity_change",
-       [](Kernel& k) {
-         step(k, "first").expression = symbol(k, "sticking_change") * symbol(k, "second_fraction");
-       }},
+       [](Kernel& k) { step(k, "first_factor").expression = symbol(k, "second_fraction"); }},
       {"tangential_change_two_fifths", "tangential_velocity_change",
        [](Kernel& k) {
          step(k, "sticking_change").expression = numeric(2, 5) * symbol(k, "tangential_slip");
@@ -122,14 +120,11 @@ const std::vector<Mutation>& spin_mutations() {
        [](Kernel& k) {
          step(k, "sliding_change").expression = -symbol(k, "friction") * symbol(k, "relative_normal_speed");
        }},
-      {"tangential_change_second_ball_slides_like_the_first", "tangential_velocity_change",
-       [](Kernel& k) {
-         step(k, "second").guards.at(0).alternative =
-             symbol(k, "sliding_change") * symbol(k, "first_fraction");
-       }},
+      {"tangential_change_small_mass_form_wrong_mass", "tangential_velocity_change",
+       [](Kernel& k) { step(k, "second_multiplier").guards.at(0).alternative = symbol(k, "m2"); }},
       {"tangential_change_bound_reversed", "tangential_velocity_change",
        [](Kernel& k) {
-         Guard& guard = step(k, "first").guards.at(0);
+         Guard& guard = step(k, "bound").guards.at(0);
          guard.condition = guard.condition.lhs() > guard.condition.rhs();
        }},
       // A hollow sphere's R/I = 3/(2 m R) for the solid sphere's 5/(2 m R).

@@ -1,16 +1,21 @@
 // libFuzzer harness for the checked API: every checked call (collide with and without restitution,
-// collide_along_direction, collide_if_approaching, reflect, time_of_impact). Arbitrary bytes are
+// collide_along_direction, collide_if_approaching, reflect, time_of_impact; collide_with_friction,
+// motion, transition_time and evolve on the cloth). Arbitrary bytes are
 // shaped into arguments so that most inputs are valid (masses over the whole range, finite velocities,
 // unit normals, restitution in [0, 1], lengths and speeds scaled by powers of two over the type's
 // exponent range for time_of_impact) and a few are not (NaN, infinities, zero or negative masses,
 // non-unit normals). For every accepted input: no crash, no sanitizer report, a finite result (a time
 // ≥ 0 or +∞), and the result within rounding of the same physics computed independently in long
 // double (reference.hpp: the formulas as printed in the README, not the kernels); for elastic
-// collisions of finite masses, momentum conserved to rounding. A rejected input must throw
-// billiards::invalid_argument and nothing else.
+// collisions of finite masses, momentum conserved to rounding. The spinning-ball calls are held to
+// spin_reference.hpp's long-double references the same way, with no energy created (to rounding) by a
+// collision or on the cloth. A rejected input must throw billiards::invalid_argument and nothing else.
 #include "reference.hpp"
+#include "spin_reference.hpp"
 
 #include <billiards/checked.hpp>
+#include <billiards/cloth.hpp>
+#include <billiards/spin.hpp>
 
 #include <cmath>
 #include <cstddef>
@@ -94,6 +99,27 @@ class Shaper {
     const int span = limits::max_exponent - (limits::min_exponent - limits::digits);
     const int k = static_cast<int>((static_cast<unsigned>(byte()) << 8 | byte()) % unsigned(span));
     return std::ldexp(Scalar(1), limits::min_exponent - limits::digits + k);
+  }
+  /// An input the checked calls must reject now and then (NaN, ±∞, 0, −usual), else `usual`.
+  template <typename Scalar>
+  Scalar invalid_or(Scalar usual) {
+    if (byte() != 0xA5) return usual;
+    switch (byte() % 5) {
+      case 0: return std::numeric_limits<Scalar>::quiet_NaN();
+      case 1: return std::numeric_limits<Scalar>::infinity();
+      case 2: return -std::numeric_limits<Scalar>::infinity();
+      case 3: return Scalar(0);
+      default: return -usual;
+    }
+  }
+  /// A positive quantity within 2^±(E/4), E the type's largest exponent: where the cloth's phase
+  /// times, a few quotients, cannot underflow or overflow in between (see the README's "Fuzzing").
+  template <typename Scalar>
+  Scalar moderate() {
+    const int quarter = std::numeric_limits<Scalar>::max_exponent / 4;
+    const int exponent =
+        static_cast<int>((static_cast<unsigned>(byte()) << 8 | byte()) % unsigned(2 * quarter)) - quarter;
+    return invalid_or(std::ldexp(Scalar(1) + Scalar(byte()) / Scalar(256), exponent));
   }
   template <typename Scalar>
   Scalar restitution() {
@@ -253,15 +279,144 @@ void exercise(Shaper& shape) {
   }
 }
 
+template <typename Scalar>
+[[noreturn]] void fail_spin(const char* call, const char* broken) {
+  std::fprintf(stderr, "billiards fuzz: %s: %s\n", call, broken);
+  std::abort();
+}
+
+template <typename Scalar>
+void print_ball(const char* name, const Eigen::Matrix<Scalar, 3, 1>& v, const Eigen::Matrix<Scalar, 3, 1>& w,
+                Scalar radius) {
+  std::fprintf(stderr, "  %s: v = (%a, %a, %a) w = (%a, %a, %a) R = %a\n", name, double(v.x()), double(v.y()),
+               double(v.z()), double(w.x()), double(w.y()), double(w.z()), double(radius));
+}
+
+// collide_with_friction: masses and radii over the whole range, spins of any size, μ in [0, 2].
+template <typename Scalar>
+void exercise_spin(Shaper& shape) {
+  using V = Eigen::Matrix<Scalar, 3, 1>;
+  const billiards::SpinningBall<Scalar> a{shape.vector<V>(), shape.vector<V>(), shape.mass<Scalar>(),
+                                          shape.mass<Scalar>()};
+  const billiards::SpinningBall<Scalar> b{shape.vector<V>(), shape.vector<V>(), shape.mass<Scalar>(),
+                                          shape.mass<Scalar>()};
+  const V n = shape.unit<V>();
+  const Scalar e = shape.restitution<Scalar>(), mu = shape.special_or(Scalar(shape.byte()) / Scalar(128));
+  ++all_inputs;
+  try {
+    const auto result = billiards::checked::collide_with_friction(a, b, n, e, mu);
+    const billiards_fuzz::ExpectedSpin expected = billiards_fuzz::expected_friction_collision(a, b, n, e, mu);
+    const char* broken = billiards_fuzz::compare_spin(result, a, b, expected);
+    const billiards_fuzz::Long before =
+        billiards_fuzz::twice_energy(a.mass, a.radius, a.velocity, a.angular_velocity) +
+        billiards_fuzz::twice_energy(b.mass, b.radius, b.velocity, b.angular_velocity);
+    const billiards_fuzz::Long after =
+        billiards_fuzz::twice_energy(a.mass, a.radius, result.first.velocity, result.first.angular_velocity) +
+        billiards_fuzz::twice_energy(b.mass, b.radius, result.second.velocity,
+                                     result.second.angular_velocity);
+    if (!broken &&
+        !(after <= before * (1 + billiards_fuzz::tolerance * std::numeric_limits<Scalar>::epsilon()) +
+                       billiards_fuzz::Long(std::numeric_limits<Scalar>::denorm_min()) * (a.mass + b.mass)))
+      broken = "energy created";
+    if (broken) {
+      std::fprintf(stderr, "  m1 = %a m2 = %a e = %a mu = %a n = (%a, %a, %a)\n", double(a.mass),
+                   double(b.mass), double(e), double(mu), double(n.x()), double(n.y()), double(n.z()));
+      print_ball("ball1", a.velocity, a.angular_velocity, a.radius);
+      print_ball("ball2", b.velocity, b.angular_velocity, b.radius);
+      print_ball("first", result.first.velocity, result.first.angular_velocity, a.radius);
+      print_ball("second", result.second.velocity, result.second.angular_velocity, b.radius);
+      fail_spin<Scalar>("collide_with_friction", broken);
+    }
+    ++accepted_inputs;
+  } catch (const billiards::invalid_argument& error) {
+    ++rejected_by_argument[error.argument()];
+  }
+}
+
+// A ball on the cloth: motion, transition_time and evolve; radius and gravity within 2^±(E/4), friction
+// coefficients 0 or in [1/128, 2], velocities and spins of any size.
+template <typename Scalar>
+void exercise_cloth(Shaper& shape) {
+  using V = Eigen::Matrix<Scalar, 3, 1>;
+  const Scalar radius = shape.moderate<Scalar>();
+  V position = shape.vector<V>(), velocity = shape.vector<V>();
+  position.z() = shape.special_or(radius);  // on the table, now and then not
+  velocity.z() = shape.special_or(Scalar(0));
+  // Now and then rolling: ω_h = ẑ × v/R (to rounding).
+  V spin = shape.vector<V>();
+  if (shape.byte() % 4 == 0) {
+    spin.x() = -velocity.y() / radius;
+    spin.y() = velocity.x() / radius;
+  }
+  const billiards::BallOnCloth<Scalar> ball{position, velocity, spin, radius};
+  const auto friction = [&] {
+    const std::uint8_t level = shape.byte();
+    return shape.invalid_or(level == 0 ? Scalar(0) : Scalar(level) / Scalar(128));
+  };
+  const billiards::Cloth<Scalar> cloth{friction(), friction(), friction(), shape.moderate<Scalar>()};
+  const Scalar t = shape.special_or(std::fabs(shape.component<Scalar>()));
+  ++all_inputs;
+  try {
+    const billiards::Motion phase = billiards::checked::motion(ball, cloth);
+    const Scalar until = billiards::checked::transition_time(ball, cloth);
+    if (std::isnan(until) || until < 0)
+      fail_spin<Scalar>("transition_time", "a time that is NaN or negative");
+    if (phase == billiards::Motion::stationary && !std::isinf(until))
+      fail_spin<Scalar>("transition_time", "a finite time for a stationary ball");
+    const billiards::BallOnCloth<Scalar> later = billiards::checked::evolve(ball, cloth, t);
+    const char* broken = nullptr;
+    if (!later.position.allFinite() || !later.velocity.allFinite() || !later.angular_velocity.allFinite())
+      broken = "a state that is not finite";
+    else if (later.position.z() != ball.position.z() || later.radius != ball.radius)
+      broken = "the ball left the table";
+    const billiards_fuzz::Long before = billiards_fuzz::twice_energy(1, radius, ball.velocity,
+                                                                     ball.angular_velocity),
+                               after = billiards_fuzz::twice_energy(1, radius, later.velocity,
+                                                                    later.angular_velocity);
+    if (!broken &&
+        !(after <= before * (1 + billiards_fuzz::tolerance * std::numeric_limits<Scalar>::epsilon()) +
+                       billiards_fuzz::Long(std::numeric_limits<Scalar>::denorm_min())))
+      broken = "energy created";
+    const billiards_fuzz::ExpectedCloth expected = billiards_fuzz::expected_on_cloth(ball, cloth, t);
+    if (!broken && expected.known) {
+      const auto off = [](const V& x, const billiards_fuzz::Long3& reference) {
+        return (x.template cast<billiards_fuzz::Long>() - reference).norm();
+      };
+      if (!(off(later.position, expected.position) <= expected.position_bound))
+        broken = "a position farther from the phase's closed form than rounding allows";
+      else if (!(off(later.velocity, expected.velocity) <= expected.velocity_bound))
+        broken = "a velocity farther from the phase's closed form than rounding allows";
+      else if (!(off(later.angular_velocity, expected.angular_velocity) <= expected.angular_bound))
+        broken = "an angular velocity farther from the phase's closed form than rounding allows";
+    }
+    if (broken) {
+      std::fprintf(stderr, "  t = %a cloth = (%a, %a, %a, g %a), position = (%a, %a, %a)\n", double(t),
+                   double(cloth.sliding_friction), double(cloth.rolling_friction),
+                   double(cloth.spinning_friction), double(cloth.gravity), double(position.x()),
+                   double(position.y()), double(position.z()));
+      print_ball("ball", ball.velocity, ball.angular_velocity, radius);
+      print_ball("later", later.velocity, later.angular_velocity, radius);
+      fail_spin<Scalar>("evolve", broken);
+    }
+    ++accepted_inputs;
+  } catch (const billiards::invalid_argument& error) {
+    ++rejected_by_argument[error.argument()];
+  }
+}
+
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   Shaper shape(data, size);
-  switch (shape.byte() % 4) {
+  switch (shape.byte() % 8) {
     case 0: exercise<Eigen::Vector3d>(shape); break;
     case 1: exercise<Eigen::Vector2d>(shape); break;
     case 2: exercise<Eigen::Vector3f>(shape); break;
-    default: exercise<Eigen::Vector2f>(shape); break;
+    case 3: exercise<Eigen::Vector2f>(shape); break;
+    case 4: exercise_spin<double>(shape); break;
+    case 5: exercise_spin<float>(shape); break;
+    case 6: exercise_cloth<double>(shape); break;
+    default: exercise_cloth<float>(shape); break;
   }
   return 0;
 }

@@ -193,3 +193,32 @@ TEMPLATE_TEST_CASE("checked cloth calls reject bad input, naming the argument", 
         billiards::evolve(good, cloth, Scalar(0.5)).position);
   CHECK(billiards::checked::motion(good, cloth) == billiards::Motion::sliding);
 }
+
+// Found by the fuzz harness: with μ_s g near the largest float, 5 μ_s g overflowed, a spin about ẑ
+// stopping at once (its stop time rounds to 0) made a step of t = 0 give ∞ · 0 = NaN, and the NaN slip
+// read as rolling; the ball then "rolled" at its sliding velocity with its spin snapped, creating
+// energy. The slide must follow its closed form and end at the 5/7 rule.
+TEST_CASE("cloth: a huge sliding friction beside a spin that stops at once still slides",
+          "[runtime][cloth]") {
+  using L3 = Eigen::Matrix<long double, 3, 1>;
+  const billiards::BallOnCloth<float> ball{V3<float>(1, 0, 0x1p-4f), V3<float>(0, -0x1p+31f, 0),
+                                           V3<float>(0, -0x1p+31f, -0x1.fbfbfcp-33f), 0x1p-4f};
+  const billiards::Cloth<float> cloth{0x1.f1f1f2p-2f, 0, 0x1.d1d1d2p-1f, 0x1.7cp+127f};
+  const L3 v0 = ball.velocity.cast<long double>();
+  const L3 slip(-ball.angular_velocity.y() * 0x1p-4L, v0.y(), 0);  // v + ω × (−R ẑ)
+  const long double deceleration = (long double)cloth.sliding_friction * cloth.gravity;
+  const long double slide = 2 * slip.norm() / (7 * deceleration);
+  REQUIRE(billiards::checked::motion(ball, cloth) == billiards::Motion::sliding);
+  CHECK(billiards::checked::transition_time(ball, cloth) == Approx(double(slide)).epsilon(1e-5));
+  // Within the slide: v0 − μ_s g t û.
+  const float t = float(slide / 5);
+  const auto sliding = billiards::checked::evolve(ball, cloth, t);
+  const L3 expected = v0 - deceleration * t * slip / slip.norm();
+  CHECK((sliding.velocity.cast<long double>() - expected).norm() <= 1e-5L * v0.norm());
+  CHECK(billiards::motion(sliding, cloth) == billiards::Motion::sliding);
+  // After it: rolling at v0 − (2/7) u0 for ever (no rolling resistance), no energy created.
+  const auto rolling = billiards::checked::evolve(ball, cloth, 1.0f);
+  CHECK((rolling.velocity.cast<long double>() - (v0 - slip * 2 / 7)).norm() <= 1e-5L * v0.norm());
+  CHECK(billiards::motion(rolling, cloth) == billiards::Motion::rolling);
+  CHECK(energy(rolling) <= energy(ball));
+}

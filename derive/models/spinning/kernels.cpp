@@ -182,26 +182,41 @@ std::vector<Kernel> spin_kernels(const Cloth& cloth) {
     const GiNaC::realsymbol speed("relative_normal_speed");
     const GiNaC::possymbol slip("tangential_slip");
     const GiNaC::symbol first("first_fraction"), second("second_fraction"), sticking("sticking_change"),
-        sliding("sliding_change"), change1("first"), change2("second");
+        coulomb("coulomb_speed"), sliding("sliding_change"), bound("bound"), per_mass("bound_per_total_mass"),
+        first_factor("first_factor"), first_multiplier("first_multiplier"), second_factor("second_factor"),
+        second_multiplier("second_multiplier"), change1("first"), change2("second");
+    // Where a fraction falls below the normal range (a mass ratio beyond 2^126 in float) the heavy
+    // ball's change is bound/(m1 + m2) times the light mass, as the paper's model's small-mass form:
+    // the product rounds once, even into the subnormal range, and the sum cannot overflow there.
+    const auto tiny = [](const GiNaC::symbol& fraction, const ex& alternative) {
+      return Guard{fraction < smallest_normal(), alternative, Kind::same_value,
+                   "kernel.tangential_velocity_change"};
+    };
     kernels.push_back({
         .name = "tangential_velocity_change",
         .brief = "The changes j/m1 and j/m2 of the two balls' velocities along û_t (ball 1 +, ball 2 −) that "
                  "the tangential impulse j = min(μ J_n, |u_t|/k) makes, as min(−(1 + e) μ (v2 − v1)·n, "
                  "2|u_t|/7)/(1 + m1/m2) and /(1 + m2/m1): only the mass ratio enters, so no mass's size can "
-                 "overflow it; an infinite ratio gives the heavy ball 0.",
+                 "overflow it; beyond the normal range of a fraction the heavy ball's change is the bound "
+                 "over m1 + m2 times the light mass.",
         .parameters = {s.m1, s.m2, s.restitution, s.friction, speed, slip},
         .steps = {{first, 1 / (1 + s.m1 / s.m2)},
                   {second, 1 / (1 + s.m2 / s.m1)},
                   {sticking, numeric(2, 7) * slip},
-                  {sliding, -(1 + s.restitution) * s.friction * speed},
-                  {change1,
-                   sticking * first,
-                   {{sliding < sticking, sliding * first, Kind::piecewise,
-                     "kernel.tangential_velocity_change"}}},
-                  {change2,
-                   sticking * second,
-                   {{sliding < sticking, sliding * second, Kind::piecewise,
-                     "kernel.tangential_velocity_change"}}}},
+                  // μ (v2 − v1)·n first: (1 + e) ∈ [1, 2] then cannot overflow a product the result
+                  // stays below, as (1 + e) μ could for a huge μ beside a tiny approach.
+                  {coulomb, s.friction * speed},
+                  {sliding, -(1 + s.restitution) * coulomb},
+                  {bound,
+                   sticking,
+                   {{sliding < sticking, sliding, Kind::piecewise, "kernel.tangential_velocity_change"}}},
+                  {per_mass, bound / (s.m1 + s.m2)},
+                  {first_factor, first, {tiny(first, per_mass)}},
+                  {first_multiplier, bound, {tiny(first, s.m2)}},
+                  {change1, first_factor * first_multiplier},
+                  {second_factor, second, {tiny(second, per_mass)}},
+                  {second_multiplier, bound, {tiny(second, s.m1)}},
+                  {change2, second_factor * second_multiplier}},
         .outputs = {change1, change2},
         .equals = "kernel.tangential_velocity_change",
         .in_claim_terms = {{speed, s.normal_slip}, {slip, s.tangential_slip}},

@@ -119,7 +119,10 @@ template <typename Scalar>
 [[nodiscard]] Scalar spin_after(Scalar spin, Scalar radius, const Cloth<Scalar>& cloth, Scalar t,
                                 bool stops) noexcept {
   if (stops || spin == 0) return Scalar(0);
-  const Scalar decay = Scalar(5) * cloth.spinning_friction * cloth.gravity * t / (Scalar(2) * radius);
+  // μ_sp g t first: the angular deceleration's factor 5/(2R) last, so that a large g or a small R
+  // cannot overflow a product the decay itself stays below (and t = 0 decays by exactly 0).
+  const Scalar decay =
+      t > 0 ? Scalar(5) * (cloth.spinning_friction * cloth.gravity * t) / (Scalar(2) * radius) : Scalar(0);
   const Scalar magnitude = std::max(std::fabs(spin) - decay, Scalar(0));
   return std::copysign(magnitude, spin);
 }
@@ -138,13 +141,19 @@ template <typename Scalar>
     // sliding.velocity, .angular_velocity, .position: û constant (.slip_direction_constant).
     const Vector slip = contact_slip(ball);
     const Vector direction = slip / std::hypot(slip.x(), slip.y());
-    const Scalar deceleration = cloth.sliding_friction * g;
-    later.velocity = horizontal_velocity - deceleration * t * direction;
-    later.position = ball.position + horizontal_velocity * t - (deceleration * t * t / Scalar(2)) * direction;
-    const Vector turn = (Scalar(5) * deceleration * t / (Scalar(2) * radius)) * up.cross(direction);
+    // |Δv| = μ_s g t, at most (2/7)|u0| within the phase: every term below is built from it, so none
+    // overflows where the result does not (5 μ_s g alone may), and t = 0 changes nothing.
+    const Scalar speed_change = t > 0 ? cloth.sliding_friction * g * t : Scalar(0);
+    later.velocity = horizontal_velocity - speed_change * direction;
+    later.position = ball.position + horizontal_velocity * t - (speed_change * t / Scalar(2)) * direction;
+    const Vector turn = (Scalar(5) * speed_change / (Scalar(2) * radius)) * up.cross(direction);
     later.angular_velocity.x() += turn.x();
     later.angular_velocity.y() += turn.y();
-    if (ends) {  // sliding.rolls_at_slide_time: the rolling condition, exactly
+    if (ends) {
+      // sliding.rolling_velocity: v0 − (2/7) u0 (the 5/7 rule), from the slip itself rather than from
+      // the slide time, which may round to 0 or lose digits where μ_s g is huge beside the slip.
+      later.velocity = horizontal_velocity - (Scalar(2) / Scalar(7)) * slip;
+      // sliding.rolls_at_slide_time: the rolling condition, exactly.
       const Vector rolling_spin = up.cross(later.velocity) / radius;
       later.angular_velocity.x() = rolling_spin.x();
       later.angular_velocity.y() = rolling_spin.y();
@@ -152,9 +161,9 @@ template <typename Scalar>
   } else if (phase == Motion::rolling) {
     // rolling.velocity, .position (assumption.rolling_resistance).
     const Vector direction = horizontal_velocity / std::hypot(ball.velocity.x(), ball.velocity.y());
-    const Scalar deceleration = cloth.rolling_friction * g;
-    later.velocity = ends ? Vector::Zero() : Vector(horizontal_velocity - deceleration * t * direction);
-    later.position = ball.position + horizontal_velocity * t - (deceleration * t * t / Scalar(2)) * direction;
+    const Scalar speed_change = t > 0 ? cloth.rolling_friction * g * t : Scalar(0);  // at most |v0|
+    later.velocity = ends ? Vector::Zero() : Vector(horizontal_velocity - speed_change * direction);
+    later.position = ball.position + horizontal_velocity * t - (speed_change * t / Scalar(2)) * direction;
     const Vector rolling_spin = up.cross(later.velocity) / radius;
     later.angular_velocity.x() = rolling_spin.x();
     later.angular_velocity.y() = rolling_spin.y();
