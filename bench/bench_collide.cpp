@@ -1,17 +1,22 @@
 // Figures, not pass/fail: one collision per call for the generated code beside hand-written
-// formulas and a plain Eigen expression, over the same 4096 random cases; and the batch path
-// against memcpy of the same number of bytes. Report ratios from one run (the machines are shared).
+// formulas (the paper's, an engine's with stored inverse masses) and a plain Eigen expression, over the
+// same 4096 random cases; the restitution, direction and friction calls beside their plain forms; and
+// the batch path against a bandwidth ceiling with its own access pattern and against its division
+// limit. Every benchmark is timed in real (wall-clock) time. Report ratios from one run (the machines
+// are shared).
 //
 // BILLIARDS_BENCH_MAX_PAIRS (environment) caps the batch sizes: 10^7 by default, small for CI's
 // smoke run.
 #include <billiards/batch.hpp>
 #include <billiards/collision.hpp>
 #include <billiards/reference_kernels.hpp>
+#include <billiards/spin.hpp>
 
 #include <benchmark/benchmark.h>
 
 #include <cstdlib>
 #include <cstring>
+#include <fstream>
 #include <limits>
 #include <random>
 #include <string>
@@ -25,23 +30,37 @@ constexpr std::size_t cases = 4096;
 template <typename Scalar>
 struct Case {
   Scalar m1, m2;
-  Eigen::Matrix<Scalar, 3, 1> v1, v2, n;
+  Scalar inverse_m1, inverse_m2;  ///< what an engine stores beside (or instead of) the masses
+  Scalar restitution, friction;
+  Eigen::Matrix<Scalar, 3, 1> v1, v2, n, d;  ///< d: a direction of any length
+  Eigen::Matrix<Scalar, 3, 1> w1, w2;        ///< spins, rad/s
+  Scalar r1, r2;                             ///< radii
 };
 
 template <typename Scalar>
 const std::vector<Case<Scalar>>& random_cases() {
   static const std::vector<Case<Scalar>> all = [] {
     std::mt19937_64 random(2023);
-    std::uniform_real_distribution<double> component(-10, 10), decade(-3, 3);
+    std::uniform_real_distribution<double> component(-10, 10), decade(-3, 3), unit(0, 1);
     std::vector<Case<Scalar>> made(cases);
+    const auto vector = [&]() -> Eigen::Matrix<Scalar, 3, 1> {
+      return Eigen::Vector3d(component(random), component(random), component(random)).cast<Scalar>();
+    };
     for (Case<Scalar>& c : made) {
       c.m1 = static_cast<Scalar>(std::pow(10.0, decade(random)));
       c.m2 = static_cast<Scalar>(std::pow(10.0, decade(random)));
-      c.v1 = Eigen::Vector3d(component(random), component(random), component(random)).cast<Scalar>();
-      c.v2 = Eigen::Vector3d(component(random), component(random), component(random)).cast<Scalar>();
-      c.n = Eigen::Vector3d(component(random), component(random), component(random))
-                .normalized()
-                .cast<Scalar>();
+      c.inverse_m1 = Scalar(1) / c.m1;
+      c.inverse_m2 = Scalar(1) / c.m2;
+      c.restitution = static_cast<Scalar>(unit(random));
+      c.friction = static_cast<Scalar>(0.1 * unit(random));
+      c.v1 = vector();
+      c.v2 = vector();
+      c.n = vector().normalized();
+      c.d = vector();
+      c.w1 = Scalar(10) * vector();
+      c.w2 = Scalar(10) * vector();
+      c.r1 = static_cast<Scalar>(0.02 + 0.02 * unit(random));
+      c.r2 = static_cast<Scalar>(0.02 + 0.02 * unit(random));
     }
     return made;
   }();
@@ -78,6 +97,53 @@ billiards::Collision<Eigen::Matrix<Scalar, 3, 1>> ratio_formula_without_select(c
           c.v2 - (Scalar(2) / (Scalar(1) + c.m2 / c.m1)) * relative * c.n};
 }
 
+// An engine's form: inverse masses stored, x1 = v1 + w1 J n, x2 = v2 − w2 J n with J = 2 s/(w1 + w2).
+template <typename Scalar>
+billiards::Collision<Eigen::Matrix<Scalar, 3, 1>> engine_formula(const Case<Scalar>& c) {
+  const Scalar impulse = Scalar(2) * (c.v2 - c.v1).dot(c.n) / (c.inverse_m1 + c.inverse_m2);
+  return {c.v1 + (c.inverse_m1 * impulse) * c.n, c.v2 - (c.inverse_m2 * impulse) * c.n};
+}
+
+// Restitution, by hand: (1 + e) m2/(m1 + m2) in place of 2 m2/(m1 + m2).
+template <typename Scalar>
+billiards::Collision<Eigen::Matrix<Scalar, 3, 1>> paper_formula_with_restitution(const Case<Scalar>& c) {
+  const Scalar relative = (c.v2 - c.v1).dot(c.n), factor = (Scalar(1) + c.restitution) / (c.m1 + c.m2);
+  return {c.v1 + (factor * c.m2 * relative) * c.n, c.v2 - (factor * c.m1 * relative) * c.n};
+}
+
+// Along a direction d of any length, by hand: s = (v2 − v1)·d/(d·d).
+template <typename Scalar>
+billiards::Collision<Eigen::Matrix<Scalar, 3, 1>> paper_formula_along_direction(const Case<Scalar>& c) {
+  const Scalar relative = (c.v2 - c.v1).dot(c.d) / c.d.squaredNorm();
+  const Scalar factor = (Scalar(1) + c.restitution) / (c.m1 + c.m2);
+  return {c.v1 + (factor * c.m2 * relative) * c.d, c.v2 - (factor * c.m1 * relative) * c.d};
+}
+
+template <typename Scalar>
+using Spinning = billiards::Collision<billiards::SpinningBall<Scalar>>;
+
+// Friction, by hand as the issue prints it: J_n = (1 + e) m1 m2/(m1 + m2) |s|, k = (7/2)(1/m1 + 1/m2),
+// j = min(μ J_n, |u_t|/k), J = J_n n − j û_t on ball 2, Δω = (5 j/(2 m R)) (n × û_t).
+template <typename Scalar>
+Spinning<Scalar> friction_formula(const Case<Scalar>& c) {
+  using V = Eigen::Matrix<Scalar, 3, 1>;
+  Spinning<Scalar> out{{c.v1, c.w1, c.m1, c.r1}, {c.v2, c.w2, c.m2, c.r2}};
+  const Scalar s = (c.v2 - c.v1).dot(c.n);
+  if (!(s < 0)) return out;
+  const Scalar normal = -(Scalar(1) + c.restitution) * c.m1 * c.m2 / (c.m1 + c.m2) * s;
+  const V u = (c.v2 + c.w2.cross(-c.r2 * c.n)) - (c.v1 + c.w1.cross(c.r1 * c.n));
+  const V ut = u - u.dot(c.n) * c.n;
+  const Scalar slip = ut.norm();
+  const Scalar k = Scalar(3.5) * (Scalar(1) / c.m1 + Scalar(1) / c.m2);
+  const Scalar j = std::min(c.friction * normal, slip / k);
+  const V direction = ut / slip, J = normal * c.n - j * direction, axis = c.n.cross(direction);
+  out.first.velocity -= J / c.m1;
+  out.second.velocity += J / c.m2;
+  out.first.angular_velocity += (Scalar(2.5) * j / (c.m1 * c.r1)) * axis;
+  out.second.angular_velocity += (Scalar(2.5) * j / (c.m2 * c.r2)) * axis;
+  return out;
+}
+
 template <typename Scalar, typename Collide>
 void one_collision_per_call(benchmark::State& state, Collide collide) {
   const auto& all = random_cases<Scalar>();
@@ -107,6 +173,42 @@ template <typename Scalar>
 void hand_written_ratio_formula_without_select(benchmark::State& state) {
   one_collision_per_call<Scalar>(state, ratio_formula_without_select<Scalar>);
 }
+template <typename Scalar>
+void engine_form(benchmark::State& state) {
+  one_collision_per_call<Scalar>(state, engine_formula<Scalar>);
+}
+template <typename Scalar>
+void generated_restitution(benchmark::State& state) {
+  one_collision_per_call<Scalar>(state, [](const Case<Scalar>& c) {
+    return billiards::collide(c.m1, c.v1, c.m2, c.v2, c.n, c.restitution);
+  });
+}
+template <typename Scalar>
+void hand_written_restitution(benchmark::State& state) {
+  one_collision_per_call<Scalar>(state, paper_formula_with_restitution<Scalar>);
+}
+template <typename Scalar>
+void generated_direction(benchmark::State& state) {
+  one_collision_per_call<Scalar>(state, [](const Case<Scalar>& c) {
+    return billiards::collide_along_direction(c.m1, c.v1, c.m2, c.v2, c.d, c.restitution);
+  });
+}
+template <typename Scalar>
+void hand_written_direction(benchmark::State& state) {
+  one_collision_per_call<Scalar>(state, paper_formula_along_direction<Scalar>);
+}
+template <typename Scalar>
+void generated_friction(benchmark::State& state) {
+  one_collision_per_call<Scalar>(state, [](const Case<Scalar>& c) {
+    return billiards::collide_with_friction(billiards::SpinningBall<Scalar>{c.v1, c.w1, c.m1, c.r1},
+                                            billiards::SpinningBall<Scalar>{c.v2, c.w2, c.m2, c.r2}, c.n,
+                                            c.restitution, c.friction);
+  });
+}
+template <typename Scalar>
+void hand_written_friction(benchmark::State& state) {
+  one_collision_per_call<Scalar>(state, friction_formula<Scalar>);
+}
 // The raw derivation before simplification (quadratic formula with √D), emitted by derive as a
 // reference kernel, in the same wrapper as collide().
 template <typename Scalar>
@@ -131,20 +233,65 @@ void plain_eigen_expression(benchmark::State& state) {
 template <typename Scalar>
 constexpr std::int64_t bytes_per_pair = 17 * sizeof(Scalar);
 
+// The arrays of a batch of `count` pairs, structure of arrays: masses, and v1, v2, n by component.
+template <typename Scalar>
+struct BatchArrays {
+  std::vector<Scalar> m1, m2;
+  std::array<std::vector<Scalar>, 3> v1, v2, n;
+  explicit BatchArrays(std::size_t count) : m1(count, Scalar(1)), m2(count, Scalar(2)) {
+    for (std::size_t k = 0; k < 3; ++k) {
+      v1[k].assign(count, Scalar(k + 1));
+      v2[k].assign(count, -Scalar(k + 1));
+      n[k].assign(count, k == 0 ? Scalar(1) : Scalar(0));
+    }
+  }
+};
+
 template <typename Scalar>
 void batch(benchmark::State& state) {
   const auto count = static_cast<std::size_t>(state.range(0));
-  std::vector<Scalar> m1(count, Scalar(1)), m2(count, Scalar(2));
-  std::array<std::vector<Scalar>, 3> v1, v2, n;
-  for (std::size_t k = 0; k < 3; ++k) {
-    v1[k].assign(count, Scalar(k + 1));
-    v2[k].assign(count, -Scalar(k + 1));
-    n[k].assign(count, k == 0 ? Scalar(1) : Scalar(0));
-  }
+  BatchArrays<Scalar> arrays(count);
+  auto& [m1, m2, v1, v2, n] = arrays;
   billiards::Components<Scalar, 3> x1{v1[0], v1[1], v1[2]}, x2{v2[0], v2[1], v2[2]};
   const billiards::Components<const Scalar, 3> normal{n[0], n[1], n[2]};
   for (auto _ : state) {
     billiards::collide_batch<Scalar, 3>(m1, x1, m2, x2, normal);
+    benchmark::ClobberMemory();
+  }
+  state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * count));
+  state.SetBytesProcessed(static_cast<std::int64_t>(state.iterations() * count) * bytes_per_pair<Scalar>);
+}
+
+// The paper's plain formula over the same arrays, the loop a user would write instead of collide_batch:
+// x1 = v1 + (2 m2/(m1 + m2)) s n, x2 = v2 − (2 m1/(m1 + m2)) s n.
+template <typename Scalar>
+void plain_batch(benchmark::State& state) {
+  const auto count = static_cast<std::size_t>(state.range(0));
+  BatchArrays<Scalar> arrays(count);
+  auto& [m1, m2, v1, v2, n] = arrays;
+  Scalar* __restrict x[3] = {v1[0].data(), v1[1].data(), v1[2].data()};
+  Scalar* __restrict y[3] = {v2[0].data(), v2[1].data(), v2[2].data()};
+  const Scalar* __restrict d[3] = {n[0].data(), n[1].data(), n[2].data()};
+  const Scalar* __restrict a = m1.data();
+  const Scalar* __restrict b = m2.data();
+  for (auto _ : state) {
+    // Told, as collide_batch tells them, that the arrays do not overlap: otherwise neither compiler
+    // vectorises a loop over this many arrays.
+#if defined(__clang__)
+#pragma clang loop vectorize(assume_safety)
+#elif defined(__GNUC__)
+#pragma GCC ivdep
+#endif
+    for (std::size_t i = 0; i < count; ++i) {
+      const Scalar s =
+          (y[0][i] - x[0][i]) * d[0][i] + (y[1][i] - x[1][i]) * d[1][i] + (y[2][i] - x[2][i]) * d[2][i];
+      const Scalar per_mass = Scalar(2) * s / (a[i] + b[i]);
+      const Scalar first = per_mass * b[i], second = per_mass * a[i];
+      for (int k = 0; k < 3; ++k) {
+        x[k][i] += first * d[k][i];
+        y[k][i] -= second * d[k][i];
+      }
+    }
     benchmark::ClobberMemory();
   }
   state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * count));
@@ -171,18 +318,31 @@ void division_limit(benchmark::State& state) {
   state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * count));
 }
 
-// The memory bandwidth reference: memcpy of the same number of bytes.
+// The bandwidth ceiling: the batch's own access pattern — read m1, m2 and the three components of v1,
+// v2 and n, write v1 and v2 in place — with trivial arithmetic (a multiply-add per component). memcpy
+// is no ceiling: below glibc's non-temporal threshold it uses cached stores, and the batch showed twice
+// its bandwidth at 10^6 pairs.
 template <typename Scalar>
-void memcpy_reference(benchmark::State& state) {
-  const auto bytes = static_cast<std::size_t>(state.range(0) * bytes_per_pair<Scalar> / 2);
-  std::vector<char> from(bytes, 1), to(bytes, 0);
+void bandwidth_ceiling(benchmark::State& state) {
+  const auto count = static_cast<std::size_t>(state.range(0));
+  BatchArrays<Scalar> arrays(count);
+  auto& [m1, m2, v1, v2, n] = arrays;
   for (auto _ : state) {
-    std::memcpy(to.data(), from.data(), bytes);
+    for (std::size_t k = 0; k < 3; ++k) {
+      Scalar* __restrict x1 = v1[k].data();
+      Scalar* __restrict x2 = v2[k].data();
+      const Scalar* __restrict a = m1.data();
+      const Scalar* __restrict b = m2.data();
+      const Scalar* __restrict d = n[k].data();
+      for (std::size_t i = 0; i < count; ++i) {
+        x1[i] += a[i] * d[i];
+        x2[i] -= b[i] * d[i];
+      }
+    }
     benchmark::ClobberMemory();
   }
-  // memcpy reads and writes each byte: the same bytes moved as the batch of range(0) pairs.
-  state.SetBytesProcessed(static_cast<std::int64_t>(state.iterations()) *
-                          static_cast<std::int64_t>(2 * bytes));
+  state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * count));
+  state.SetBytesProcessed(static_cast<std::int64_t>(state.iterations() * count) * bytes_per_pair<Scalar>);
 }
 
 std::int64_t max_pairs() {
@@ -201,15 +361,27 @@ void register_type(const std::string& type) {
       {"ratio_formula_without_select", hand_written_ratio_formula_without_select<Scalar>},
       {"raw_derivation", raw_derivation<Scalar>},
       {"eigen_expression", plain_eigen_expression<Scalar>},
+      {"engine_formula", engine_form<Scalar>},
+      {"restitution", generated_restitution<Scalar>},
+      {"restitution_formula", hand_written_restitution<Scalar>},
+      {"direction", generated_direction<Scalar>},
+      {"direction_formula", hand_written_direction<Scalar>},
+      {"friction", generated_friction<Scalar>},
+      {"friction_formula", hand_written_friction<Scalar>},
   };
   for (const auto& [variant, function] : one_call) {
-    benchmark::RegisterBenchmark(("collide/" + std::string(variant) + "/" + type).c_str(), function);
+    benchmark::RegisterBenchmark(("collide/" + std::string(variant) + "/" + type).c_str(), function)
+        ->UseRealTime();
   }
-  const std::pair<const char*, Function> per_pair[] = {
-      {"batch", batch<Scalar>}, {"memcpy", memcpy_reference<Scalar>}, {"divisions", division_limit<Scalar>}};
+  const std::pair<const char*, Function> per_pair[] = {{"batch", batch<Scalar>},
+                                                       {"plain_batch", plain_batch<Scalar>},
+                                                       {"bandwidth", bandwidth_ceiling<Scalar>},
+                                                       {"divisions", division_limit<Scalar>}};
   for (std::int64_t pairs = 100; pairs <= max_pairs(); pairs *= 10) {
     for (const auto& [group, function] : per_pair) {
-      benchmark::RegisterBenchmark((std::string(group) + "/" + type).c_str(), function)->Arg(pairs);
+      benchmark::RegisterBenchmark((std::string(group) + "/" + type).c_str(), function)
+          ->Arg(pairs)
+          ->UseRealTime();
     }
   }
 }
@@ -221,8 +393,21 @@ void register_all() {
 
 }  // namespace
 
+// The CPU model as the system names it ("model name" in /proc/cpuinfo), for the report's machine line:
+// these machines vary (Intel and AMD), so it is read, never written down.
+std::string cpu_model() {
+  std::ifstream cpuinfo("/proc/cpuinfo");
+  for (std::string line; std::getline(cpuinfo, line);) {
+    if (line.rfind("model name", 0) == 0 && line.find(':') != std::string::npos) {
+      return line.substr(line.find(':') + 2);
+    }
+  }
+  return "unknown (no model name in /proc/cpuinfo)";
+}
+
 int main(int argc, char** argv) {
   register_all();
+  benchmark::AddCustomContext("cpu_model", cpu_model());
   benchmark::Initialize(&argc, argv);
   if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
   benchmark::RunSpecifiedBenchmarks();

@@ -29,4 +29,4 @@ void table_events(benchmark::State& state) {
 
 }  // namespace
 
-BENCHMARK(table_events)->Name("table/events")->RangeMultiplier(4)->Range(16, 1024);
+BENCHMARK(table_events)->Name("table/events")->RangeMultiplier(4)->Range(16, 1024)->UseRealTime();

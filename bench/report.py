@@ -21,12 +21,16 @@ def load(path):
         data = json.load(f)
     # One figure per benchmark: the median of its repetitions where the run repeated them
     # (--benchmark_repetitions), else its one measurement.
+    # Every benchmark runs in real time (UseRealTime): Google Benchmark names it ".../real_time".
+    def key(name):
+        return name[: -len("/real_time")] if name.endswith("/real_time") else name
+
     runs, medians = {}, {}
     for b in data["benchmarks"]:
         if b.get("run_type", "iteration") == "iteration":
-            runs.setdefault(b.get("run_name", b["name"]), b)
+            runs.setdefault(key(b.get("run_name", b["name"])), b)
         elif b.get("aggregate_name") == "median":
-            medians[b["run_name"]] = b
+            medians[key(b["run_name"])] = b
     runs.update(medians)
     return data["context"], runs
 
@@ -36,18 +40,20 @@ def per_item_ns(b):
 
 
 def single_call_table(runs):
-    lines = ["| variant | double (ns) | ratio | float (ns) | ratio |", "|---|---:|---:|---:|---:|"]
+    lines = ["| variant | double (ns) | against the paper's formula | float (ns) | against the paper's formula |",
+             "|---|---:|---:|---:|---:|"]
     names = [("generated", "generated `collide` (mass-ratio form with the small-mass select)"),
-             ("ratio_formula", "the same form typed by hand (reference)"),
-             ("ratio_formula_without_select", "the ratio form by hand, without the small-mass select"),
              ("paper_formula", "the paper's formula by hand, 2 m2/(m1 + m2)"),
-             ("raw_derivation", "the raw derivation (quadratic formula with √D), emitted by derive"),
-             ("eigen_expression", "a plain Eigen expression of the paper's formula")]
+             ("engine_formula", "an engine's form by hand, stored inverse masses: J = 2 s/(w1 + w2)"),
+             ("eigen_expression", "a plain Eigen expression of the paper's formula"),
+             ("ratio_formula", "the generated form typed by hand"),
+             ("ratio_formula_without_select", "the ratio form by hand, without the small-mass select"),
+             ("raw_derivation", "the raw derivation (quadratic formula with √D), emitted by derive")]
     for key, label in names:
         row = [label]
         for scalar in ("double", "float"):
             b = runs.get(f"collide/{key}/{scalar}")
-            reference = runs.get(f"collide/ratio_formula/{scalar}")
+            reference = runs.get(f"collide/paper_formula/{scalar}")
             if b is None or reference is None:
                 row += ["–", "–"]
                 continue
@@ -62,32 +68,70 @@ def ratio(runs, a, b):
     return f"{per_item_ns(runs[a]) / per_item_ns(runs[b]):.2f}×"
 
 
+def other_calls_table(runs):
+    lines = ["| call | plain form by hand | double: generated / plain (ns) | ratio | float: generated / plain (ns) | "
+             "ratio | goal |", "|---|---|---:|---:|---:|---:|---:|"]
+    calls = [("restitution", "`collide(m1, v1, m2, v2, n, e)`", "(1 + e) m2/(m1 + m2)", "≤ 1.2×"),
+             ("direction", "`collide_along_direction(..., d, e)`", "s = (v2 − v1)·d/(d·d), then as above", "≤ 1.2×"),
+             ("friction", "`collide_with_friction`", "J_n, k = (7/2)(1/m1 + 1/m2), j = min(μ J_n, |u_t|/k), J/m",
+              "measured")]
+    for key, call, plain, goal in calls:
+        row = [call, plain]
+        for scalar in ("double", "float"):
+            g, h = runs.get(f"collide/{key}/{scalar}"), runs.get(f"collide/{key}_formula/{scalar}")
+            if g is None or h is None:
+                row += ["–", "–"]
+                continue
+            row += [f"{per_item_ns(g):.2f} / {per_item_ns(h):.2f}", f"{per_item_ns(g) / per_item_ns(h):.2f}×"]
+        lines.append("| " + " | ".join(row + [goal]) + " |")
+    return "\n".join(lines)
+
+
+def pairs_per_second(b):
+    # Real time throughout: items over the real time of an iteration.
+    return b["items_per_second"]
+
+
 def batch_rows(runs, scalar):
     rows = []
     for name, b in runs.items():
         if not name.startswith(f"batch/{scalar}/"):
             continue
         pairs = int(name.split("/")[-1])
-        m = runs.get(f"memcpy/{scalar}/{pairs}")
-        d = runs.get(f"divisions/{scalar}/{pairs}")
-        rows.append((pairs, b["items_per_second"], b["bytes_per_second"], m["bytes_per_second"] if m else None,
-                     d["items_per_second"] if d else None))
-    return sorted(rows)
+        rows.append((pairs, b, runs.get(f"plain_batch/{scalar}/{pairs}"), runs.get(f"bandwidth/{scalar}/{pairs}"),
+                     runs.get(f"divisions/{scalar}/{pairs}")))
+    return sorted(rows, key=lambda r: r[0])
 
 
 def batch_table(runs):
-    lines = ["| type | pairs | collisions/s | GB/s | memcpy GB/s | fraction of memcpy | division limit, pairs/s | "
-             "time over the division limit |",
-             "|---|---:|---:|---:|---:|---:|---:|---:|"]
+    lines = ["| type | pairs | collisions/s | GB/s | plain formula's loop, pairs/s | time over the plain loop | "
+             "ceiling GB/s | fraction of the ceiling | division limit, pairs/s | time over the division limit |",
+             "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|"]
     for scalar in ("double", "float"):
-        for pairs, items, bytes_, copy, divisions in batch_rows(runs, scalar):
-            fraction = f"{bytes_ / copy:.2f}" if copy else "–"
-            copy_text = f"{copy / 1e9:.1f}" if copy else "–"
-            limit = f"{divisions / 1e6:.0f} M" if divisions else "–"
-            over = f"{divisions / items:.2f}×" if divisions else "–"
-            lines.append(f"| {scalar} | {pairs:,} | {items / 1e6:.1f} M | {bytes_ / 1e9:.1f} | {copy_text} | {fraction} | "
-                         f"{limit} | {over} |")
+        for pairs, b, plain, ceiling, divisions in batch_rows(runs, scalar):
+            items = pairs_per_second(b)
+            cells = [scalar, f"{pairs:,}", f"{items / 1e6:.1f} M", f"{b['bytes_per_second'] / 1e9:.1f}"]
+            cells += [f"{pairs_per_second(plain) / 1e6:.1f} M", f"{pairs_per_second(plain) / items:.2f}×"] if plain else ["–", "–"]
+            cells += [f"{ceiling['bytes_per_second'] / 1e9:.1f}", f"{b['bytes_per_second'] / ceiling['bytes_per_second']:.2f}"] \
+                if ceiling else ["–", "–"]
+            cells += [f"{pairs_per_second(divisions) / 1e6:.0f} M", f"{pairs_per_second(divisions) / items:.2f}×"] \
+                if divisions else ["–", "–"]
+            lines.append("| " + " | ".join(cells) + " |")
     return "\n".join(lines)
+
+
+def batch_goals(runs):
+    out = []
+    for scalar in ("double", "float"):
+        rows = {r[0]: r for r in batch_rows(runs, scalar)}
+        cache = [f"{p:,}: {pairs_per_second(rows[p][2]) / pairs_per_second(rows[p][1]):.2f}×"
+                 for p in (1000, 10000) if p in rows and rows[p][2]]
+        memory = [f"{p:,}: {rows[p][1]['bytes_per_second'] / rows[p][3]['bytes_per_second']:.2f}"
+                  for p in (1000000, 10000000) if p in rows and rows[p][3]]
+        out.append(f"- {scalar}: in cache, time over the plain formula's loop {', '.join(cache) or '(not in this run)'} "
+                   f"(goal ≤ 1.2×); out of cache, fraction of the bandwidth ceiling {', '.join(memory) or '(not in this run)'} "
+                   f"(goal ≥ 0.9)")
+    return "\n".join(out)
 
 
 def table_events(runs):
@@ -108,8 +152,8 @@ def svg(runs, path):
     series = []
     for scalar, colour in (("double", "#1f77b4"), ("float", "#2ca02c")):
         rows = batch_rows(runs, scalar)
-        series.append((f"batch {scalar}", colour, [(r[0], r[2]) for r in rows], ""))
-        series.append((f"memcpy ({scalar} bytes)", colour, [(r[0], r[3]) for r in rows if r[3]], "6,4"))
+        series.append((f"batch {scalar}", colour, [(r[0], r[1]["bytes_per_second"]) for r in rows], ""))
+        series.append((f"ceiling ({scalar})", colour, [(r[0], r[3]["bytes_per_second"]) for r in rows if r[3]], "6,4"))
     points = [pt for _, _, pts, _ in series for pt in pts]
     if not points:
         return False
@@ -176,34 +220,45 @@ def main():
     text = f"""# Benchmark results
 
 Generated by `bench/report.py` from one run of `billiards_bench`: every ratio compares two benchmarks
-of that same run.
+of that same run, and every figure is real (wall-clock) time — each benchmark runs with UseRealTime,
+so the times and the per-second counters share one basis.
 
-- Machine: {context.get('num_cpus')} CPUs at {context.get('mhz_per_cpu')} MHz; caches: {caches}
+- Machine: {context.get('cpu_model', 'CPU model not recorded')}; {context.get('num_cpus')} CPUs at {context.get('mhz_per_cpu')} MHz; caches: {caches}
 - Load average at the start: {', '.join(f'{x:.2f}' for x in context.get('load_avg', []))}
 - Command: `{args.command}`
-- Library build: {context.get('library_build_type')} (Debian's libbenchmark); billiards_bench itself at -O3 -march=native
+- Library build: {context.get('library_build_type')} (Debian's libbenchmark); billiards_bench itself at -O3 -march=native with NDEBUG
 
-## One collision per call (3-D, 4096 random cases, ratio to the same form typed by hand)
+## One collision per call (3-D, 4096 random cases)
 
 {single_call_table(runs)}
 
-- Generated against the same form by hand: {ratio(runs, "collide/generated/double", "collide/ratio_formula/double")} (double),
-  {ratio(runs, "collide/generated/float", "collide/ratio_formula/float")} (float). Goal: ≤ 1.00×.
 - What the overflow safety costs, generated against the paper's plain formula:
-  {ratio(runs, "collide/generated/double", "collide/paper_formula/double")} (double), {ratio(runs, "collide/generated/float", "collide/paper_formula/float")} (float);
-  of that, the small-mass select alone: {ratio(runs, "collide/ratio_formula/double", "collide/ratio_formula_without_select/double")} (double),
-  {ratio(runs, "collide/ratio_formula/float", "collide/ratio_formula_without_select/float")} (float).
+  {ratio(runs, "collide/generated/double", "collide/paper_formula/double")} (double), {ratio(runs, "collide/generated/float", "collide/paper_formula/float")} (float). Goal: ≤ 1.2×.
+- Generated against an engine's form with stored inverse masses:
+  {ratio(runs, "collide/generated/double", "collide/engine_formula/double")} (double), {ratio(runs, "collide/generated/float", "collide/engine_formula/float")} (float). Goal: ≤ 1.2×.
+- Generated against the same form typed by hand: {ratio(runs, "collide/generated/double", "collide/ratio_formula/double")} (double),
+  {ratio(runs, "collide/generated/float", "collide/ratio_formula/float")} (float); of the form's cost, the small-mass select alone:
+  {ratio(runs, "collide/ratio_formula/double", "collide/ratio_formula_without_select/double")} (double), {ratio(runs, "collide/ratio_formula/float", "collide/ratio_formula_without_select/float")} (float).
 - The raw derivation against the generated kernel: {ratio(runs, "collide/raw_derivation/double", "collide/generated/double")} (double),
   {ratio(runs, "collide/raw_derivation/float", "collide/generated/float")} (float).
 
-## The batch path against memcpy of the same bytes and the division limit
+## The other calls against their plain forms (one per call, the same cases)
 
-Bytes per pair: 17 scalars (11 read, 6 written). The division limit is the kernel's five divisions per
-pair alone, vectorised over arrays of the same length (`divisions/*`): the kernel's other ~40
-additions and multiplications per pair cost little beside them, so its throughput bounds the batch
-path from above where the data sit in cache.
+{other_calls_table(runs)}
+
+## The batch path against the plain formula's loop, a bandwidth ceiling and the division limit
+
+Bytes per pair: 17 scalars (11 read, 6 written). The plain formula's loop (`plain_batch/*`) is the paper's
+formula over the same arrays, the loop a user would write instead. The bandwidth ceiling
+(`bandwidth/*`) has the batch's own access pattern — it reads the same arrays and writes v1 and v2 in
+place — with a multiply-add per component; memcpy is no ceiling (below glibc's non-temporal threshold it
+uses cached stores). The division limit is the kernel's five divisions per pair alone, vectorised over
+arrays of the same length (`divisions/*`): where the data sit in cache it, not the bandwidth, bounds the
+batch.
 
 {batch_table(runs)}
+
+{batch_goals(runs)}
 
 {"![throughput against N](throughput.svg)" if svg_written else ""}
 
