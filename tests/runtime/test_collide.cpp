@@ -215,3 +215,31 @@ TEST_CASE("The version macro is the package version", "[runtime][version]") {
             std::to_string(BILLIARDS_VERSION_PATCH) ==
         BILLIARDS_EXPECTED_VERSION);
 }
+
+TEMPLATE_TEST_CASE("binary_exponent and power_of_two read and build the exponent field as frexp and ldexp do",
+                   "[runtime][detail]", float, double) {
+  using Scalar = TestType;
+  using limits = std::numeric_limits<Scalar>;
+  std::mt19937_64 random(21);
+  std::uniform_real_distribution<double> mantissa(1, 2);
+  // Every exponent of the type, subnormal ones included, at random mantissas and at the ends.
+  for (int e = limits::min_exponent - limits::digits; e <= limits::max_exponent; ++e) {
+    for (const Scalar x :
+         {std::ldexp(Scalar(1), e - 1), std::ldexp(static_cast<Scalar>(mantissa(random)), e - 1),
+          std::nextafter(std::ldexp(Scalar(1), e), Scalar(0))}) {
+      if (!(x > 0) || !std::isfinite(x)) continue;
+      int expected = 0;
+      static_cast<void>(std::frexp(x, &expected));
+      INFO("x = " << x);
+      CHECK(billiards::detail::binary_exponent(x) == expected);
+    }
+  }
+  CHECK(billiards::detail::binary_exponent(limits::denorm_min()) ==
+        limits::min_exponent - limits::digits + 1);
+  CHECK(billiards::detail::binary_exponent(limits::max()) == limits::max_exponent);
+  CHECK(billiards::detail::binary_exponent(Scalar(0)) == 0);
+  CHECK(billiards::detail::binary_exponent(limits::infinity()) == 0);
+  for (int e = limits::min_exponent - 1; e <= limits::max_exponent - 1; ++e) {
+    CHECK(billiards::detail::power_of_two<Scalar>(e) == std::ldexp(Scalar(1), e));
+  }
+}

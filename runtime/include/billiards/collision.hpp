@@ -9,9 +9,11 @@
 #include <Eigen/Core>
 
 #include <algorithm>
+#include <bit>
 #include <cassert>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <limits>
 #include <type_traits>
 
@@ -96,12 +98,38 @@ template <typename DV, typename DD>
 
 /// The exponent e with 2^(e−1) ≤ x < 2^e (std::frexp's) for a finite x > 0; 0 for zero, for what is
 /// not finite and for what compares as zero (a subnormal where subnormals are flushed).
+/// For IEEE float and double it reads the exponent field (no libm call, which the compilers would not
+/// inline); other types go through std::frexp.
 template <typename Scalar>
 [[nodiscard]] int binary_exponent(Scalar x) noexcept {
   if (!(x > 0) || !std::isfinite(x)) return 0;
-  int exponent = 0;
-  static_cast<void>(std::frexp(x, &exponent));
-  return exponent;
+  using limits = std::numeric_limits<Scalar>;
+  if constexpr (limits::is_iec559 && (sizeof(Scalar) == 4 || sizeof(Scalar) == 8)) {
+    using Bits = std::conditional_t<sizeof(Scalar) == 4, std::uint32_t, std::uint64_t>;
+    const int field = static_cast<int>(std::bit_cast<Bits>(x) >> (limits::digits - 1));  // x > 0: no sign
+    if (field == 0) {  // subnormal: scaled exactly into the normal range first
+      return binary_exponent(x * (Scalar(1) / limits::epsilon()) * Scalar(2)) - limits::digits;
+    }
+    return field - (limits::max_exponent - 1) + 1;
+  } else {
+    int exponent = 0;
+    static_cast<void>(std::frexp(x, &exponent));
+    return exponent;
+  }
+}
+
+/// 2^exponent for a normal power of two (min_exponent − 1 ≤ exponent ≤ max_exponent − 1): built from
+/// the exponent field for IEEE float and double, std::ldexp for other types.
+template <typename Scalar>
+[[nodiscard]] Scalar power_of_two(int exponent) noexcept {
+  using limits = std::numeric_limits<Scalar>;
+  if constexpr (limits::is_iec559 && (sizeof(Scalar) == 4 || sizeof(Scalar) == 8)) {
+    using Bits = std::conditional_t<sizeof(Scalar) == 4, std::uint32_t, std::uint64_t>;
+    return std::bit_cast<Scalar>(static_cast<Bits>(exponent + limits::max_exponent - 1)
+                                 << (limits::digits - 1));
+  } else {
+    return std::ldexp(Scalar(1), exponent);
+  }
 }
 
 /// The binary exponent of v's largest component magnitude (0 for a zero vector).
@@ -118,7 +146,7 @@ template <typename Derived>
   using Scalar = typename Derived::Scalar;
   constexpr int largest = std::numeric_limits<Scalar>::max_exponent - 1;   // 2^largest is finite
   constexpr int smallest = std::numeric_limits<Scalar>::min_exponent - 1;  // 2^smallest is normal
-  if (exponent >= smallest && exponent <= largest) return v * std::ldexp(Scalar(1), exponent);
+  if (exponent >= smallest && exponent <= largest) return v * power_of_two<Scalar>(exponent);
   PlainVector<Derived> scaled;
   for (Eigen::Index k = 0; k < scaled.size(); ++k) scaled[k] = std::ldexp(v[k], exponent);
   return scaled;
