@@ -243,3 +243,23 @@ TEMPLATE_TEST_CASE("binary_exponent and power_of_two read and build the exponent
     CHECK(billiards::detail::power_of_two<Scalar>(e) == std::ldexp(Scalar(1), e));
   }
 }
+
+TEMPLATE_TEST_CASE("scaled_norm is the norm without overflow or underflow of the squares", "[runtime][detail]",
+                   float, double) {
+  using Scalar = TestType;
+  using limits = std::numeric_limits<Scalar>;
+  using V = Eigen::Matrix<Scalar, 3, 1>;
+  std::mt19937_64 random(22);
+  std::uniform_real_distribution<double> component(-1, 1);
+  for (int e = limits::min_exponent - limits::digits + 2; e <= limits::max_exponent - 2; e += 3) {
+    const V v(static_cast<Scalar>(component(random)), static_cast<Scalar>(component(random)),
+              static_cast<Scalar>(component(random)));
+    const V w = v * std::ldexp(Scalar(1), e);  // exact where w stays normal
+    const long double expected = std::sqrt((long double)w[0] * w[0] + (long double)w[1] * w[1] +
+                                           (long double)w[2] * w[2]);
+    INFO("exponent " << e);
+    CHECK(std::fabs(billiards::detail::scaled_norm(w) - expected) <=
+          4 * limits::epsilon() * expected + limits::denorm_min());
+  }
+  CHECK(billiards::detail::scaled_norm(V::Zero().eval()) == 0);
+}

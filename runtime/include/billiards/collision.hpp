@@ -161,6 +161,20 @@ template <typename Derived>
   return times_power_of_two(d, -largest_component_exponent(d));
 }
 
+/// |v| from v scaled by the power of two of its largest component (exact) and scaled back: the squares
+/// neither overflow nor underflow, as with Eigen's stableNorm(), at the cost of norm() and no libm call
+/// where the exponent is in the normal range.
+template <typename Derived>
+[[nodiscard]] typename Derived::Scalar scaled_norm(const Eigen::MatrixBase<Derived>& v) noexcept {
+  using Scalar = typename Derived::Scalar;
+  const int exponent = largest_component_exponent(v);
+  const Scalar norm = times_power_of_two(v, -exponent).norm();
+  constexpr int largest = std::numeric_limits<Scalar>::max_exponent - 1;
+  constexpr int smallest = std::numeric_limits<Scalar>::min_exponent - 1;
+  return exponent >= smallest && exponent <= largest ? norm * power_of_two<Scalar>(exponent)
+                                                     : std::ldexp(norm, exponent);
+}
+
 /// |p × w|² in any dimension: the sum over i < j of (p_i w_j − p_j w_i)² (Lagrange's identity makes
 /// it |p|²|w|² − (p·w)², which would cancel). 2-D: (p_x w_y − p_y w_x)²; 3-D: the cross product's
 /// squared norm.

@@ -103,7 +103,7 @@ template <typename Scalar, typename DN>
       detail::point_velocity<Scalar>(ball2.velocity, ball2.angular_velocity, -ball2.radius * normal) -
       detail::point_velocity<Scalar>(ball1.velocity, ball1.angular_velocity, ball1.radius * normal);
   const detail::Vector3<Scalar> tangential_slip = slip - detail::dot(slip, normal) * normal;
-  const Scalar slip_speed = tangential_slip.stableNorm();
+  const Scalar slip_speed = detail::scaled_norm(tangential_slip);
   if (!(friction > 0) || !(slip_speed > 0)) return after;  // no tangential impulse
   // j/m1 and j/m2 from the mass ratio alone (kernel.tangential_velocity_change): j itself is never
   // formed, so no mass's size can overflow or underflow the velocity and spin changes.
