@@ -8,6 +8,7 @@
 // BILLIARDS_BENCH_MAX_PAIRS (environment) caps the batch sizes: 10^7 by default, small for CI's
 // smoke run.
 #include <billiards/batch.hpp>
+#include <billiards/cloth.hpp>
 #include <billiards/collision.hpp>
 #include <billiards/reference_kernels.hpp>
 #include <billiards/spin.hpp>
@@ -272,6 +273,80 @@ void batch(benchmark::State& state) {
   state.SetBytesProcessed(static_cast<std::int64_t>(state.iterations() * count) * bytes_per_pair<Scalar>);
 }
 
+// A ball sliding on the cloth, advanced by half its slide time: billiards::evolve beside the sliding
+// phase's closed form typed by hand (v0 − μ_s g t û, ω_h + (5 μ_s g t/(2R)) ẑ × û, p0 + v0 t − ½ μ_s g t² û,
+// the spin about ẑ decaying at 5 μ_sp g/(2R)).
+template <typename Scalar>
+struct SlidingCase {
+  billiards::BallOnCloth<Scalar> ball;
+  Scalar t;
+};
+
+template <typename Scalar>
+const billiards::Cloth<Scalar>& bench_cloth() {
+  static const billiards::Cloth<Scalar> cloth{Scalar(0.2), Scalar(0.01), Scalar(0.044)};
+  return cloth;
+}
+
+template <typename Scalar>
+const std::vector<SlidingCase<Scalar>>& sliding_cases() {
+  static const std::vector<SlidingCase<Scalar>> all = [] {
+    std::mt19937_64 random(7);
+    std::uniform_real_distribution<double> speed(-3, 3), spin(-100, 100);
+    std::vector<SlidingCase<Scalar>> made;
+    const Scalar radius = Scalar(0.028575);
+    while (made.size() < cases) {
+      using V = Eigen::Matrix<Scalar, 3, 1>;
+      const billiards::BallOnCloth<Scalar> ball{
+          V(0, 0, radius), V(Scalar(speed(random)), Scalar(speed(random)), 0),
+          V(Scalar(spin(random)), Scalar(spin(random)), Scalar(spin(random))), radius};
+      if (billiards::motion(ball, bench_cloth<Scalar>()) != billiards::Motion::sliding) continue;
+      made.push_back({ball, billiards::transition_time(ball, bench_cloth<Scalar>()) / 2});
+    }
+    return made;
+  }();
+  return all;
+}
+
+template <typename Scalar>
+billiards::BallOnCloth<Scalar> sliding_formula(const SlidingCase<Scalar>& c) {
+  using V = Eigen::Matrix<Scalar, 3, 1>;
+  const billiards::Cloth<Scalar>& cloth = bench_cloth<Scalar>();
+  billiards::BallOnCloth<Scalar> later = c.ball;
+  const V u = c.ball.velocity + c.ball.angular_velocity.cross(V(0, 0, -c.ball.radius));
+  const V direction = V(u.x(), u.y(), 0).normalized();
+  const Scalar change = cloth.sliding_friction * cloth.gravity * c.t;
+  later.velocity = c.ball.velocity - change * direction;
+  later.position = c.ball.position + c.ball.velocity * c.t - (change * c.t / 2) * direction;
+  later.angular_velocity += (Scalar(2.5) * change / c.ball.radius) * V(0, 0, 1).cross(direction);
+  const Scalar decay = Scalar(2.5) * cloth.spinning_friction * cloth.gravity * c.t / c.ball.radius;
+  later.angular_velocity.z() = std::copysign(
+      std::max(std::fabs(c.ball.angular_velocity.z()) - decay, Scalar(0)), c.ball.angular_velocity.z());
+  return later;
+}
+
+template <typename Scalar, typename Advance>
+void one_slide_per_call(benchmark::State& state, Advance advance) {
+  const auto& all = sliding_cases<Scalar>();
+  std::size_t i = 0;
+  for (auto _ : state) {
+    auto result = advance(all[i]);
+    benchmark::DoNotOptimize(result);
+    i = (i + 1) % cases;
+  }
+  state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations()));
+}
+template <typename Scalar>
+void generated_evolve(benchmark::State& state) {
+  one_slide_per_call<Scalar>(state, [](const SlidingCase<Scalar>& c) {
+    return billiards::evolve(c.ball, bench_cloth<Scalar>(), c.t);
+  });
+}
+template <typename Scalar>
+void hand_written_evolve(benchmark::State& state) {
+  one_slide_per_call<Scalar>(state, sliding_formula<Scalar>);
+}
+
 // The paper's plain formula over the same arrays, the loop a user would write instead of collide_batch:
 // x1 = v1 + (2 m2/(m1 + m2)) s n, x2 = v2 − (2 m1/(m1 + m2)) s n.
 template <typename Scalar>
@@ -376,6 +451,8 @@ void register_type(const std::string& type) {
       {"direction_formula", hand_written_direction<Scalar>},
       {"friction", generated_friction<Scalar>},
       {"friction_formula", hand_written_friction<Scalar>},
+      {"evolve", generated_evolve<Scalar>},
+      {"evolve_formula", hand_written_evolve<Scalar>},
   };
   for (const auto& [variant, function] : one_call) {
     benchmark::RegisterBenchmark(("collide/" + std::string(variant) + "/" + type).c_str(), function)

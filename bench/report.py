@@ -74,6 +74,8 @@ def other_calls_table(runs):
     calls = [("restitution", "`collide(m1, v1, m2, v2, n, e)`", "(1 + e) m2/(m1 + m2)", "≤ 1.2×"),
              ("direction", "`collide_along_direction(..., d, e)`", "s = (v2 − v1)·d/(d·d), then as above", "≤ 1.2×"),
              ("friction", "`collide_with_friction`", "J_n, k = (7/2)(1/m1 + 1/m2), j = min(μ J_n, |u_t|/k), J/m",
+              "measured"),
+             ("evolve", "`evolve` (half a slide on the cloth)", "v0 − μ_s g t û, ω and p by the sliding closed form",
               "measured")]
     for key, call, plain, goal in calls:
         row = [call, plain]

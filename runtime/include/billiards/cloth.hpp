@@ -44,6 +44,15 @@ enum class Motion {
   stationary,  ///< at rest, no spin about ẑ
 };
 
+namespace detail {
+/// √(x² + y²) without overflow or underflow of the squares and without a libm call (std::hypot is one,
+/// and several times slower than the arithmetic it guards): the 2-vector's scaled_norm().
+template <typename Scalar>
+[[nodiscard]] Scalar horizontal_length(Scalar x, Scalar y) noexcept {
+  return scaled_norm(Eigen::Matrix<Scalar, 2, 1>(x, y));
+}
+}  // namespace detail
+
 /// The slip of the contact point with the cloth, \f$u = v + \omega \times (-R \hat z)\f$ (horizontal).
 template <typename Scalar>
 [[nodiscard]] Eigen::Matrix<Scalar, 3, 1> contact_slip(const BallOnCloth<Scalar>& ball) noexcept {
@@ -60,8 +69,8 @@ template <typename Scalar>
 /// slide that would remove it lasts 2|u|/(7 μ_s g), a time at rounding level of the motion's own.
 template <typename Scalar>
 [[nodiscard]] Scalar rolling_tolerance(const BallOnCloth<Scalar>& ball) noexcept {
-  const Scalar speed = std::hypot(ball.velocity.x(), ball.velocity.y());
-  const Scalar spin = std::hypot(ball.angular_velocity.x(), ball.angular_velocity.y());
+  const Scalar speed = detail::horizontal_length(ball.velocity.x(), ball.velocity.y());
+  const Scalar spin = detail::horizontal_length(ball.angular_velocity.x(), ball.angular_velocity.y());
   return Scalar(16) * std::numeric_limits<Scalar>::epsilon() * (speed + ball.radius * spin);
 }
 
@@ -71,7 +80,7 @@ template <typename Scalar>
 [[nodiscard]] Motion motion(const BallOnCloth<Scalar>& ball, const Cloth<Scalar>& cloth) noexcept {
   static_cast<void>(cloth);  // the phase depends on the ball alone; the cloth decides how long it lasts
   const Eigen::Matrix<Scalar, 3, 1> slip = contact_slip(ball);
-  if (std::hypot(slip.x(), slip.y()) > rolling_tolerance(ball)) return Motion::sliding;
+  if (detail::horizontal_length(slip.x(), slip.y()) > rolling_tolerance(ball)) return Motion::sliding;
   if (ball.velocity.x() != 0 || ball.velocity.y() != 0) return Motion::rolling;
   if (ball.angular_velocity.z() != 0) return Motion::spinning;
   return Motion::stationary;
@@ -86,10 +95,11 @@ template <typename Scalar>
   switch (phase) {
     case Motion::sliding: {
       const Eigen::Matrix<Scalar, 3, 1> slip = contact_slip(ball);
-      return kernels::spin::slide_time(std::hypot(slip.x(), slip.y()), cloth.sliding_friction, cloth.gravity);
+      return kernels::spin::slide_time(detail::horizontal_length(slip.x(), slip.y()), cloth.sliding_friction,
+                                       cloth.gravity);
     }
     case Motion::rolling:
-      return kernels::spin::roll_time(std::hypot(ball.velocity.x(), ball.velocity.y()),
+      return kernels::spin::roll_time(detail::horizontal_length(ball.velocity.x(), ball.velocity.y()),
                                       cloth.rolling_friction, cloth.gravity);
     case Motion::spinning:
       return kernels::spin::spin_time(std::fabs(ball.angular_velocity.z()), ball.radius,
@@ -140,7 +150,7 @@ template <typename Scalar>
   if (phase == Motion::sliding) {
     // sliding.velocity, .angular_velocity, .position: û constant (.slip_direction_constant).
     const Vector slip = contact_slip(ball);
-    const Vector direction = slip / std::hypot(slip.x(), slip.y());
+    const Vector direction = slip / detail::horizontal_length(slip.x(), slip.y());
     // |Δv| = μ_s g t, at most (2/7)|u0| within the phase: every term below is built from it, so none
     // overflows where the result does not (5 μ_s g alone may), and t = 0 changes nothing.
     const Scalar speed_change = t > 0 ? cloth.sliding_friction * g * t : Scalar(0);
@@ -160,7 +170,8 @@ template <typename Scalar>
     }
   } else if (phase == Motion::rolling) {
     // rolling.velocity, .position (assumption.rolling_resistance).
-    const Vector direction = horizontal_velocity / std::hypot(ball.velocity.x(), ball.velocity.y());
+    const Vector direction =
+        horizontal_velocity / detail::horizontal_length(ball.velocity.x(), ball.velocity.y());
     const Scalar speed_change = t > 0 ? cloth.rolling_friction * g * t : Scalar(0);  // at most |v0|
     later.velocity = ends ? Vector::Zero() : Vector(horizontal_velocity - speed_change * direction);
     later.position = ball.position + horizontal_velocity * t - (speed_change * t / Scalar(2)) * direction;
