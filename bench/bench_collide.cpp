@@ -155,16 +155,21 @@ Spinning<Scalar> friction_formula(const Case<Scalar>& c) {
   return out;
 }
 
-template <typename Scalar, typename Collide>
-void one_collision_per_call(benchmark::State& state, Collide collide) {
-  const auto& all = random_cases<Scalar>();
+// One call per iteration, cycling through `all` (4096 cases).
+template <typename Case, typename Call>
+void one_call_per_case(benchmark::State& state, const std::vector<Case>& all, Call call) {
   std::size_t i = 0;
   for (auto _ : state) {
-    auto result = collide(all[i]);
+    auto result = call(all[i]);
     benchmark::DoNotOptimize(result);
-    i = (i + 1) % cases;
+    i = (i + 1) % all.size();
   }
   state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations()));
+}
+
+template <typename Scalar, typename Collide>
+void one_collision_per_call(benchmark::State& state, Collide collide) {
+  one_call_per_case(state, random_cases<Scalar>(), collide);
 }
 
 template <typename Scalar>
@@ -327,14 +332,7 @@ billiards::BallOnCloth<Scalar> sliding_formula(const SlidingCase<Scalar>& c) {
 
 template <typename Scalar, typename Advance>
 void one_slide_per_call(benchmark::State& state, Advance advance) {
-  const auto& all = sliding_cases<Scalar>();
-  std::size_t i = 0;
-  for (auto _ : state) {
-    auto result = advance(all[i]);
-    benchmark::DoNotOptimize(result);
-    i = (i + 1) % cases;
-  }
-  state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations()));
+  one_call_per_case(state, sliding_cases<Scalar>(), advance);
 }
 template <typename Scalar>
 void generated_evolve(benchmark::State& state) {
