@@ -74,30 +74,47 @@ template <typename Scalar>
   return Scalar(16) * std::numeric_limits<Scalar>::epsilon() * (speed + ball.radius * spin);
 }
 
-/// The ball's phase: sliding while its slip exceeds rolling_tolerance(), else rolling while it moves,
-/// else spinning while ω_z ≠ 0, else stationary.
+namespace detail {
+
+/// The contact slip and its length, computed once for the phase, its duration and the step.
 template <typename Scalar>
-[[nodiscard]] Motion motion(const BallOnCloth<Scalar>& ball, const Cloth<Scalar>& cloth) noexcept {
-  static_cast<void>(cloth);  // the phase depends on the ball alone; the cloth decides how long it lasts
+struct Slip {
+  Eigen::Matrix<Scalar, 3, 1> vector;
+  Scalar speed;
+};
+template <typename Scalar>
+[[nodiscard]] Slip<Scalar> slip_of(const BallOnCloth<Scalar>& ball) noexcept {
   const Eigen::Matrix<Scalar, 3, 1> slip = contact_slip(ball);
-  if (detail::horizontal_length(slip.x(), slip.y()) > rolling_tolerance(ball)) return Motion::sliding;
+  return {slip, horizontal_length(slip.x(), slip.y())};
+}
+
+/// motion() given the ball's slip.
+template <typename Scalar>
+[[nodiscard]] Motion motion_with(const BallOnCloth<Scalar>& ball, const Slip<Scalar>& slip) noexcept {
+  if (slip.speed > rolling_tolerance(ball)) return Motion::sliding;
   if (ball.velocity.x() != 0 || ball.velocity.y() != 0) return Motion::rolling;
   if (ball.angular_velocity.z() != 0) return Motion::spinning;
   return Motion::stationary;
 }
 
+}  // namespace detail
+
+/// The ball's phase: sliding while its slip exceeds rolling_tolerance(), else rolling while it moves,
+/// else spinning while ω_z ≠ 0, else stationary.
+template <typename Scalar>
+[[nodiscard]] Motion motion(const BallOnCloth<Scalar>& ball, const Cloth<Scalar>& cloth) noexcept {
+  static_cast<void>(cloth);  // the phase depends on the ball alone; the cloth decides how long it lasts
+  return detail::motion_with(ball, detail::slip_of(ball));
+}
+
 namespace detail {
 
-/// How long the phase `phase` of `ball` lasts (see transition_time).
+/// How long the phase `phase` of `ball`, whose slip is `slip`, lasts (see transition_time).
 template <typename Scalar>
-[[nodiscard]] Scalar phase_duration(const BallOnCloth<Scalar>& ball, const Cloth<Scalar>& cloth,
-                                    Motion phase) noexcept {
+[[nodiscard]] Scalar phase_duration(const BallOnCloth<Scalar>& ball, const Cloth<Scalar>& cloth, Motion phase,
+                                    const Slip<Scalar>& slip) noexcept {
   switch (phase) {
-    case Motion::sliding: {
-      const Eigen::Matrix<Scalar, 3, 1> slip = contact_slip(ball);
-      return kernels::spin::slide_time(detail::horizontal_length(slip.x(), slip.y()), cloth.sliding_friction,
-                                       cloth.gravity);
-    }
+    case Motion::sliding: return kernels::spin::slide_time(slip.speed, cloth.sliding_friction, cloth.gravity);
     case Motion::rolling:
       return kernels::spin::roll_time(detail::horizontal_length(ball.velocity.x(), ball.velocity.y()),
                                       cloth.rolling_friction, cloth.gravity);
@@ -118,7 +135,8 @@ template <typename Scalar>
 /// The spin about ẑ may stop within a sliding or rolling phase without changing it.
 template <typename Scalar>
 [[nodiscard]] Scalar transition_time(const BallOnCloth<Scalar>& ball, const Cloth<Scalar>& cloth) noexcept {
-  return detail::phase_duration(ball, cloth, motion(ball, cloth));
+  const detail::Slip<Scalar> slip = detail::slip_of(ball);
+  return detail::phase_duration(ball, cloth, detail::motion_with(ball, slip), slip);
 }
 
 namespace detail {
@@ -137,11 +155,13 @@ template <typename Scalar>
   return std::copysign(magnitude, spin);
 }
 
-/// The ball after `t` within one phase; `ends` when t is the phase's end (the state is then set to the
-/// next phase's exactly: rolling without slip, or at rest), `spin_stops` when the spin about ẑ stops at t.
+/// The ball, whose slip is `slip`, after `t` within one phase; `ends` when t is the phase's end (the state
+/// is then set to the next phase's exactly: rolling without slip, or at rest), `spin_stops` when the spin
+/// about ẑ stops at t.
 template <typename Scalar>
 [[nodiscard]] BallOnCloth<Scalar> advance(const BallOnCloth<Scalar>& ball, const Cloth<Scalar>& cloth,
-                                          Motion phase, Scalar t, bool ends, bool spin_stops) noexcept {
+                                          Motion phase, const Slip<Scalar>& contact, Scalar t, bool ends,
+                                          bool spin_stops) noexcept {
   using Vector = Eigen::Matrix<Scalar, 3, 1>;
   BallOnCloth<Scalar> later = ball;
   const Vector up(0, 0, 1);
@@ -149,8 +169,8 @@ template <typename Scalar>
   const Vector horizontal_velocity(ball.velocity.x(), ball.velocity.y(), 0);
   if (phase == Motion::sliding) {
     // sliding.velocity, .angular_velocity, .position: û constant (.slip_direction_constant).
-    const Vector slip = contact_slip(ball);
-    const Vector direction = slip / detail::horizontal_length(slip.x(), slip.y());
+    const Vector& slip = contact.vector;
+    const Vector direction = slip / contact.speed;
     // |Δv| = μ_s g t, at most (2/7)|u0| within the phase: every term below is built from it, so none
     // overflows where the result does not (5 μ_s g alone may), and t = 0 changes nothing.
     const Scalar speed_change = t > 0 ? cloth.sliding_friction * g * t : Scalar(0);
@@ -206,15 +226,16 @@ template <typename Scalar>
   // At most four phase ends (sliding, rolling, the spin, and one to spare): every pass ends a phase
   // or uses up the time, so the loop ends.
   for (int pass = 0; pass < 5 && remaining > 0; ++pass) {
-    const Motion phase = motion(current, cloth);
+    const detail::Slip<Scalar> slip = detail::slip_of(current);
+    const Motion phase = detail::motion_with(current, slip);
     if (phase == Motion::stationary) break;
-    const Scalar phase_end = detail::phase_duration(current, cloth, phase);
+    const Scalar phase_end = detail::phase_duration(current, cloth, phase, slip);
     const Scalar spin = std::fabs(current.angular_velocity.z());
     const Scalar spin_end =
         spin > 0 ? kernels::spin::spin_time(spin, current.radius, cloth.spinning_friction, cloth.gravity)
                  : std::numeric_limits<Scalar>::infinity();
     const Scalar step = std::min({remaining, phase_end, spin_end});
-    current = detail::advance(current, cloth, phase, step, step == phase_end, step == spin_end);
+    current = detail::advance(current, cloth, phase, slip, step, step == phase_end, step == spin_end);
     if (step == remaining) break;
     remaining -= step;
   }

@@ -101,12 +101,18 @@ template <typename DV, typename DD>
 /// For IEEE float and double it reads the exponent field (no libm call, which the compilers would not
 /// inline); other types go through std::frexp.
 template <typename Scalar>
+inline constexpr bool has_exponent_field = std::numeric_limits<Scalar>::is_iec559 &&
+                                           (sizeof(Scalar) == 4 || sizeof(Scalar) == 8);
+template <typename Scalar>
+using FloatBits = std::conditional_t<sizeof(Scalar) == 4, std::uint32_t, std::uint64_t>;
+
+template <typename Scalar>
 [[nodiscard]] int binary_exponent(Scalar x) noexcept {
   if (!(x > 0) || !std::isfinite(x)) return 0;
   using limits = std::numeric_limits<Scalar>;
-  if constexpr (limits::is_iec559 && (sizeof(Scalar) == 4 || sizeof(Scalar) == 8)) {
-    using Bits = std::conditional_t<sizeof(Scalar) == 4, std::uint32_t, std::uint64_t>;
-    const int field = static_cast<int>(std::bit_cast<Bits>(x) >> (limits::digits - 1));  // x > 0: no sign
+  if constexpr (has_exponent_field<Scalar>) {
+    const int field =
+        static_cast<int>(std::bit_cast<FloatBits<Scalar>>(x) >> (limits::digits - 1));  // no sign
     if (field == 0) {  // subnormal: scaled exactly into the normal range first
       return binary_exponent(x * (Scalar(1) / limits::epsilon()) * Scalar(2)) - limits::digits;
     }
@@ -118,18 +124,33 @@ template <typename Scalar>
   }
 }
 
-/// 2^exponent for a normal power of two (min_exponent − 1 ≤ exponent ≤ max_exponent − 1): built from
-/// the exponent field for IEEE float and double, std::ldexp for other types.
+/// Whether 2^exponent is a finite normal number of Scalar.
+template <typename Scalar>
+[[nodiscard]] constexpr bool is_normal_power_of_two(int exponent) noexcept {
+  return exponent >= std::numeric_limits<Scalar>::min_exponent - 1 &&
+         exponent <= std::numeric_limits<Scalar>::max_exponent - 1;
+}
+
+/// 2^exponent where is_normal_power_of_two(exponent): built from the exponent field for IEEE float and
+/// double, std::ldexp for other types.
 template <typename Scalar>
 [[nodiscard]] Scalar power_of_two(int exponent) noexcept {
-  using limits = std::numeric_limits<Scalar>;
-  if constexpr (limits::is_iec559 && (sizeof(Scalar) == 4 || sizeof(Scalar) == 8)) {
-    using Bits = std::conditional_t<sizeof(Scalar) == 4, std::uint32_t, std::uint64_t>;
-    return std::bit_cast<Scalar>(static_cast<Bits>(exponent + limits::max_exponent - 1)
+  if constexpr (has_exponent_field<Scalar>) {
+    using limits = std::numeric_limits<Scalar>;
+    return std::bit_cast<Scalar>(static_cast<FloatBits<Scalar>>(exponent + limits::max_exponent - 1)
                                  << (limits::digits - 1));
   } else {
     return std::ldexp(Scalar(1), exponent);
   }
+}
+
+/// x · 2^exponent, correctly rounded (exact unless it falls into the subnormal range): one
+/// multiplication where 2^exponent is a normal number, std::ldexp otherwise.
+template <typename Scalar>
+requires std::is_floating_point_v<Scalar>
+[[nodiscard]] Scalar times_power_of_two(Scalar x, int exponent) noexcept {
+  return is_normal_power_of_two<Scalar>(exponent) ? x * power_of_two<Scalar>(exponent)
+                                                  : std::ldexp(x, exponent);
 }
 
 /// The binary exponent of v's largest component magnitude (0 for a zero vector).
@@ -144,9 +165,7 @@ template <typename Derived>
 [[nodiscard]] PlainVector<Derived> times_power_of_two(const Eigen::MatrixBase<Derived>& v,
                                                       int exponent) noexcept {
   using Scalar = typename Derived::Scalar;
-  constexpr int largest = std::numeric_limits<Scalar>::max_exponent - 1;   // 2^largest is finite
-  constexpr int smallest = std::numeric_limits<Scalar>::min_exponent - 1;  // 2^smallest is normal
-  if (exponent >= smallest && exponent <= largest) return v * power_of_two<Scalar>(exponent);
+  if (is_normal_power_of_two<Scalar>(exponent)) return v * power_of_two<Scalar>(exponent);
   PlainVector<Derived> scaled;
   for (Eigen::Index k = 0; k < scaled.size(); ++k) scaled[k] = std::ldexp(v[k], exponent);
   return scaled;
@@ -166,13 +185,8 @@ template <typename Derived>
 /// where the exponent is in the normal range.
 template <typename Derived>
 [[nodiscard]] typename Derived::Scalar scaled_norm(const Eigen::MatrixBase<Derived>& v) noexcept {
-  using Scalar = typename Derived::Scalar;
   const int exponent = largest_component_exponent(v);
-  const Scalar norm = times_power_of_two(v, -exponent).norm();
-  constexpr int largest = std::numeric_limits<Scalar>::max_exponent - 1;
-  constexpr int smallest = std::numeric_limits<Scalar>::min_exponent - 1;
-  return exponent >= smallest && exponent <= largest ? norm * power_of_two<Scalar>(exponent)
-                                                     : std::ldexp(norm, exponent);
+  return times_power_of_two(times_power_of_two(v, -exponent).norm(), exponent);
 }
 
 /// |p × w|² in any dimension: the sum over i < j of (p_i w_j − p_j w_i)² (Lagrange's identity makes
