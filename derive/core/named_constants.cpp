@@ -12,6 +12,19 @@ const GiNaC::symbol& infinity() {
   return constant;
 }
 
-bool is_named_constant(const GiNaC::ex& e) { return e.is_equal(smallest_normal()) || e.is_equal(infinity()); }
+const GiNaC::symbol& plain_mass_low() {
+  static const GiNaC::symbol constant("plain_mass_low", "m_{\\text{low}}");
+  return constant;
+}
+
+const GiNaC::symbol& plain_mass_high() {
+  static const GiNaC::symbol constant("plain_mass_high", "m_{\\text{high}}");
+  return constant;
+}
+
+bool is_named_constant(const GiNaC::ex& e) {
+  return e.is_equal(smallest_normal()) || e.is_equal(infinity()) || e.is_equal(plain_mass_low()) ||
+         e.is_equal(plain_mass_high());
+}
 
 }  // namespace billiards::derive

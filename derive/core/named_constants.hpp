@@ -1,5 +1,6 @@
 // Constants that kernels use by name and the C++ printer spells for the target (a symbol compared by
-// identity, never by its text): the smallest normal number and +∞ of the kernel's Scalar type.
+// identity, never by its text): the smallest normal number and +∞ of the kernel's Scalar type, and the
+// bounds of the mass range where the plain (one-division) form keeps every intermediate normal.
 #pragma once
 
 #include <ginac/ginac.h>
@@ -12,6 +13,10 @@ namespace billiards::derive {
 const GiNaC::symbol& smallest_normal();
 /// +∞ of Scalar: printed as infinity<Scalar>().
 const GiNaC::symbol& infinity();
+/// The plain form's mass range [4 √x_min, 1/(4 √x_min)] of Scalar (2^−509 to 2^509 in double, 2^−61 to
+/// 2^61 in float): printed as plain_mass_low<Scalar>() and plain_mass_high<Scalar>().
+const GiNaC::symbol& plain_mass_low();
+const GiNaC::symbol& plain_mass_high();
 
 /// True for a symbol that is one of the named constants above.
 bool is_named_constant(const GiNaC::ex& e);

@@ -146,11 +146,71 @@ std::string signature(const std::string& head, const std::vector<std::string>& p
   return aligned;
 }
 
+// The parameters of `kernel` that `conditions` read, in signature order.
+std::vector<std::string> parameters_read(const Kernel& kernel, const std::vector<ex>& conditions) {
+  std::vector<std::string> names;
+  for (const ex& parameter : kernel.parameters) {
+    const bool read = std::any_of(conditions.begin(), conditions.end(),
+                                  [&](const ex& condition) { return condition.has(parameter); });
+    if (read) names.push_back(GiNaC::ex_to<GiNaC::symbol>(parameter).get_name());
+  }
+  return names;
+}
+
+std::string joined(const std::vector<std::string>& items, const std::string& separator) {
+  std::string out;
+  for (const std::string& item : items) out += (out.empty() ? "" : separator) + item;
+  return out;
+}
+
+// `head` then `items` joined by `separator` (which ends a line where one breaks), wrapped before the
+// column limit with continuation lines indented to `indent`, then `tail`; `head` starts at column
+// `column`.
+std::string wrapped_terms(std::size_t column, const std::string& head, const std::vector<std::string>& items,
+                          const std::string& separator, const std::string& indent, const std::string& tail) {
+  std::string out = head;
+  std::size_t width = column + head.size();
+  for (std::size_t i = 0; i < items.size(); ++i) {
+    const std::string piece = items[i] + (i + 1 < items.size() ? separator : tail);
+    if (i > 0 && width + 1 + piece.size() > column_limit) {
+      out += "\n" + indent;
+      width = indent.size();
+    } else if (i > 0) {
+      out += " ";
+      ++width;
+    }
+    out += piece;
+    width += piece.size();
+  }
+  return out;
+}
+
+// A fast path's predicate as a documented constexpr function: true where every condition holds. Every
+// comparison is evaluated (`&`, not `&&`), so a loop of it has no branch and vectorises.
+std::string predicate_function(const Kernel& kernel) {
+  const FastPath& path = *kernel.fast_path;
+  std::vector<std::string> parameters, conditions;
+  for (const std::string& name : parameters_read(kernel, path.conditions))
+    parameters.push_back("Scalar " + name);
+  for (const ex& condition : path.conditions) conditions.push_back("(" + print_condition(condition) + ")");
+  return "\n" + doc_comment(path.brief) + "template <typename Scalar>\n" +
+         signature("BILLIARDS_HOST_DEVICE constexpr bool " + path.predicate + "(", parameters,
+                   ") noexcept {") +
+         "\n" + wrapped_terms(0, "  return ", conditions, " &", "         ", ";") + "\n}\n";
+}
+
 // Every kernel as a documented `template <typename Scalar>` function: its brief, the audit claims it
-// implements, its operation count and its body.
+// implements, its operation count and its body; before the first kernel with a fast path, that path's
+// predicate.
 std::string functions(const std::vector<Kernel>& kernels, const std::string& pair_result) {
   std::ostringstream out;
+  std::vector<std::string> predicates;
   for (const Kernel& kernel : kernels) {
+    if (kernel.fast_path &&
+        std::find(predicates.begin(), predicates.end(), kernel.fast_path->predicate) == predicates.end()) {
+      predicates.push_back(kernel.fast_path->predicate);
+      out << predicate_function(kernel);
+    }
     const EmittedKernel emitted = emit_kernel(kernel);
     std::string claims;
     for (const std::string& id : cited_claims(kernel)) {
@@ -202,6 +262,11 @@ EmittedKernel emit_kernel(const Kernel& kernel) {
     }
     hoisted.emplace_back(GiNaC::symbol(name), sum);
   }
+  // In the order of their text, not of discovery: GiNaC orders the factors of a product by hash, which
+  // may differ from run to run, and the output must not.
+  std::stable_sort(hoisted.begin(), hoisted.end(), [](const auto& a, const auto& b) {
+    return print(a.second, Notation::text) < print(b.second, Notation::text);
+  });
   GiNaC::exmap replace;
   for (const auto& [symbol, sum] : hoisted) {
     replace[sum] = symbol;
@@ -209,6 +274,19 @@ EmittedKernel emit_kernel(const Kernel& kernel) {
   }
 
   EmittedKernel emitted;
+  if (kernel.fast_path) {
+    // Where the conditions hold, the faster kernel of the same claim, before any step is computed. The
+    // conditions are written out with `&&`, which a single call evaluates fastest (predicted branches);
+    // the predicate function, for loops, evaluates every one.
+    std::vector<std::string> arguments, conditions;
+    for (const ex& parameter : kernel.parameters)
+      arguments.push_back(GiNaC::ex_to<GiNaC::symbol>(parameter).get_name());
+    for (const ex& condition : kernel.fast_path->conditions) conditions.push_back(print_condition(condition));
+    const std::string call = "return " + kernel.fast_path->kernel + "(" + joined(arguments, ", ") + ");";
+    const std::string test = wrapped_terms(2, "if (", conditions, " &&", "      ", ")");
+    emitted.body.push_back(test.find('\n') == std::string::npos ? short_if(test, call)
+                                                                : test + "\n    " + call);
+  }
   std::vector<bool> placed(hoisted.size(), false);
   const auto define = [&](const std::string& name, const ex& expression) {
     const std::string code = print(expression, Notation::cpp);
@@ -371,6 +449,34 @@ std::string kernels_header(const Derivation& derivation, const std::string& audi
       << "BILLIARDS_HOST_DEVICE constexpr double infinity<double>() noexcept {\n"
       << "  return __builtin_huge_val();\n"
       << "}\n";
+  const bool plain_range = std::any_of(derivation.kernels.begin(), derivation.kernels.end(),
+                                       [](const Kernel& k) { return k.fast_path || !k.domain.empty(); });
+  if (plain_range) {
+    out << "\n/// The plain form's mass range [4 √x_min, 1/(4 √x_min)], x_min = smallest_normal<Scalar>(): "
+           "2^−509 to\n"
+        << "/// 2^509 in double, 2^−61 to 2^61 in float. Within it m1 + m2, (1 + e)/(m1 + m2) and each\n"
+        << "/// (1 + e) m_i/(m1 + m2) are normal numbers, so the one-division form keeps every digit.\n"
+        << "template <typename Scalar>\n"
+        << "BILLIARDS_HOST_DEVICE constexpr Scalar plain_mass_low() noexcept {\n"
+        << "  Scalar low = Scalar(4);  // 4 √x_min = 4 · 2^((min_exponent − 1)/2)\n"
+        << "  for (int k = 0; k < (1 - std::numeric_limits<Scalar>::min_exponent) / 2; ++k) low /= "
+           "Scalar(2);\n"
+        << "  return low;\n"
+        << "}\n"
+        << "template <>\n"
+        << "BILLIARDS_HOST_DEVICE constexpr float plain_mass_low<float>() noexcept {\n"
+        << "  return 0x1p-61f;\n"
+        << "}\n"
+        << "template <>\n"
+        << "BILLIARDS_HOST_DEVICE constexpr double plain_mass_low<double>() noexcept {\n"
+        << "  return 0x1p-509;\n"
+        << "}\n"
+        << "/// 1/plain_mass_low<Scalar>(), exactly (a power of two).\n"
+        << "template <typename Scalar>\n"
+        << "BILLIARDS_HOST_DEVICE constexpr Scalar plain_mass_high() noexcept {\n"
+        << "  return Scalar(1) / plain_mass_low<Scalar>();\n"
+        << "}\n";
+  }
   out << functions(derivation.kernels, derivation.model.pair_result.name) << "\n}  // namespace "
       << derivation.model.kernels_namespace << "\n";
   return with_fingerprint(out.str(), audit_text);

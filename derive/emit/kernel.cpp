@@ -14,6 +14,7 @@ std::vector<std::string> cited_claims(const Kernel& kernel) {
   for (const KernelStep& step : kernel.steps) {
     for (const Guard& guard : step.guards) cite(guard.claim);
   }
+  if (kernel.fast_path) cite(kernel.fast_path->claim);
   return ids;
 }
 

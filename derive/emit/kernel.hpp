@@ -5,6 +5,7 @@
 
 #include <ginac/ginac.h>
 
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -42,6 +43,18 @@ struct KernelStep {
   std::vector<Guard> guards = {};
 };
 
+/// A faster form for part of the inputs: where every condition holds, the kernel returns the outputs of
+/// kernel `kernel` (printed before it, with the same parameters, proven equal to the same claim)
+/// before computing its own steps. Printed as a call of the predicate `predicate` (its parameters: the
+/// kernel's parameters the conditions read, in order), itself printed once from the conditions.
+struct FastPath {
+  std::string predicate;              ///< the C++ name of the range test, e.g. within_plain_mass_range
+  std::string brief;                  ///< one sentence for the predicate's comment
+  std::vector<GiNaC::ex> conditions;  ///< relationals in parameters and named constants, all must hold
+  std::string kernel;                 ///< the kernel taken where they hold
+  std::string claim;                  ///< the audit claim that vouches for that kernel's form there
+};
+
 /// A scalar kernel for the emitter.
 struct Kernel {
   std::string name;                   ///< the C++ function name
@@ -58,9 +71,15 @@ struct Kernel {
   std::vector<std::string> claims = {};
   /// Names for common subexpressions the emitter hoists, e.g. "restitution_factor" for 1 + e.
   std::vector<std::pair<std::string, GiNaC::ex>> names = {};
+  /// Taken first, where its conditions hold: a faster form of the same claim.
+  std::optional<FastPath> fast_path = {};
+  /// Where this kernel keeps its accuracy when that is less than every valid input: relationals (a fast
+  /// path's conditions) that its inputs must meet. The accuracy tool draws its inputs inside them.
+  std::vector<GiNaC::ex> domain = {};
 };
 
-/// Every claim a kernel cites, in order and without repeats: `equals`, `claims`, the guards' claims.
+/// Every claim a kernel cites, in order and without repeats: `equals`, `claims`, the guards' claims, the
+/// fast path's claim.
 std::vector<std::string> cited_claims(const Kernel& kernel);
 
 }  // namespace billiards::derive

@@ -405,11 +405,86 @@ std::vector<KernelProblem> validate_kernel(const Kernel& kernel, const std::vect
   }
 }
 
+namespace {
+
+bool same_list(const std::vector<ex>& a, const std::vector<ex>& b) {
+  return a.size() == b.size() &&
+         std::equal(a.begin(), a.end(), b.begin(), [](const ex& x, const ex& y) { return x.is_equal(y); });
+}
+
+bool same_map(const GiNaC::exmap& a, const GiNaC::exmap& b) {
+  return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin(), [](const auto& x, const auto& y) {
+           return x.first.is_equal(y.first) && x.second.is_equal(y.second);
+         });
+}
+
+// A fast path's problems: it must name a kernel printed before it with the same parameters, the same
+// claim and the same claim terms, whose domain is the path's conditions (so the accuracy tool measures
+// it where it is taken); the conditions are relationals in the parameters and named constants; and one
+// predicate name stands for one set of conditions.
+std::vector<KernelProblem> fast_path_problems(const std::vector<Kernel>& kernels, std::size_t at) {
+  const Kernel& kernel = kernels[at];
+  const FastPath& path = *kernel.fast_path;
+  std::vector<KernelProblem> problems;
+  const auto fail = [&](const std::string& reason) {
+    problems.push_back({kernel.name, path.claim, "its fast path " + reason});
+  };
+  if (path.predicate.empty()) fail("has no predicate name");
+  if (path.conditions.empty()) fail("has no conditions");
+  for (const ex& condition : path.conditions) {
+    if (!GiNaC::is_a<GiNaC::relational>(condition)) {
+      fail("has the condition " + print(condition, Notation::text) + ", which is no relational");
+      continue;
+    }
+    for (GiNaC::const_preorder_iterator it = condition.preorder_begin(); it != condition.preorder_end();
+         ++it) {
+      const bool known = std::any_of(kernel.parameters.begin(), kernel.parameters.end(),
+                                     [&](const ex& p) { return p.is_equal(*it); });
+      if (GiNaC::is_a<GiNaC::symbol>(*it) && !known && !is_named_constant(*it)) {
+        fail("reads " + GiNaC::ex_to<GiNaC::symbol>(*it).get_name() +
+             ", which is no parameter or named constant");
+      }
+    }
+  }
+  for (std::size_t i = 0; i < kernels.size(); ++i) {
+    const Kernel& other = kernels[i];
+    if (i != at && other.fast_path && other.fast_path->predicate == path.predicate &&
+        !same_list(other.fast_path->conditions, path.conditions)) {
+      fail("names the predicate " + path.predicate + ", which " + other.name +
+           "'s fast path defines otherwise");
+    }
+  }
+  const auto taken = std::find_if(kernels.begin(), kernels.begin() + static_cast<std::ptrdiff_t>(at),
+                                  [&](const Kernel& k) { return k.name == path.kernel; });
+  if (taken == kernels.begin() + static_cast<std::ptrdiff_t>(at)) {
+    fail("takes " + path.kernel + ", which is no kernel printed before it");
+    return problems;
+  }
+  if (!same_list(taken->parameters, kernel.parameters))
+    fail("takes " + path.kernel + ", whose parameters differ");
+  if (taken->equals != kernel.equals) {
+    fail("takes " + path.kernel + ", which is proven equal to " + taken->equals + ", not " + kernel.equals);
+  }
+  if (!same_map(taken->in_claim_terms, kernel.in_claim_terms)) {
+    fail("takes " + path.kernel + ", whose parameters stand for other terms of the claim");
+  }
+  if (!same_list(taken->domain, path.conditions)) {
+    fail("takes " + path.kernel + ", whose domain is not the path's conditions");
+  }
+  return problems;
+}
+
+}  // namespace
+
 std::vector<KernelProblem> validate_kernels(const std::vector<Kernel>& kernels,
                                             const std::vector<Claim>& claims) {
   std::vector<KernelProblem> problems;
-  for (const Kernel& kernel : kernels) {
-    const std::vector<KernelProblem> found = validate_kernel(kernel, claims);
+  for (std::size_t i = 0; i < kernels.size(); ++i) {
+    std::vector<KernelProblem> found = validate_kernel(kernels[i], claims);
+    if (kernels[i].fast_path) {
+      const std::vector<KernelProblem> path = fast_path_problems(kernels, i);
+      found.insert(found.end(), path.begin(), path.end());
+    }
     problems.insert(problems.end(), found.begin(), found.end());
   }
   return problems;

@@ -31,7 +31,9 @@ struct KernelProblem {
 /// Returns every problem found; none means the kernel is proven. Never throws.
 std::vector<KernelProblem> validate_kernel(const Kernel& kernel, const std::vector<Claim>& claims);
 
-/// The problems of every kernel in `kernels`, in order.
+/// The problems of every kernel in `kernels`, in order, and of each fast path: it must take a kernel
+/// printed before it with the same parameters, claim and claim terms, whose domain is the path's
+/// conditions (relationals in the parameters and named constants; one predicate name, one set).
 std::vector<KernelProblem> validate_kernels(const std::vector<Kernel>& kernels,
                                             const std::vector<Claim>& claims);
 

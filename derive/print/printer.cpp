@@ -319,6 +319,8 @@ std::string print_cpp_leaf(const ex& e) {
   // The named constants, by identity: their C++ spelling is the emitted header's device-safe helper.
   if (e.is_equal(smallest_normal())) return "smallest_normal<Scalar>()";
   if (e.is_equal(infinity())) return "infinity<Scalar>()";
+  if (e.is_equal(plain_mass_low())) return "plain_mass_low<Scalar>()";
+  if (e.is_equal(plain_mass_high())) return "plain_mass_high<Scalar>()";
   if (GiNaC::is_a<GiNaC::symbol>(e)) return GiNaC::ex_to<GiNaC::symbol>(e).get_name();
   if (GiNaC::is_a<GiNaC::function>(e) && GiNaC::ex_to<GiNaC::function>(e).get_name() == "abs") {
     // The emitted header defines absolute_value(): constexpr, unlike std::abs before C++23.

@@ -4,7 +4,7 @@
 // listed by the derivation, so that tests call, measure and compile each one without a list
 // kept by hand.
 //
-// Fingerprint: fnv1a64:c5b5696a82b28ab5 (of this header and the audit)
+// Fingerprint: fnv1a64:939ab2ae5d1846a0 (of this header and the audit)
 #pragma once
 
 #include <billiards/kernels.hpp>
@@ -24,17 +24,35 @@ inline constexpr std::size_t largest_arity = 6;
 /// `at("m1")`; returns its outputs in order. Throws std::invalid_argument for an unknown name.
 template <typename Scalar, typename Arguments>
 std::vector<Scalar> call(const std::string& name, const Arguments& at) {
+  if (name == "plain_elastic_normal_velocity_change") {
+    const auto r = plain_elastic_normal_velocity_change(at("m1"), at("m2"), at("v1n"), at("v2n"));
+    return {r.first, r.second};
+  }
   if (name == "elastic_normal_velocity_change") {
     const auto r = elastic_normal_velocity_change(at("m1"), at("m2"), at("v1n"), at("v2n"));
+    return {r.first, r.second};
+  }
+  if (name == "plain_normal_velocity_change") {
+    const auto r = plain_normal_velocity_change(at("m1"), at("m2"), at("v1n"), at("v2n"), at("restitution"));
     return {r.first, r.second};
   }
   if (name == "normal_velocity_change") {
     const auto r = normal_velocity_change(at("m1"), at("m2"), at("v1n"), at("v2n"), at("restitution"));
     return {r.first, r.second};
   }
+  if (name == "plain_direction_velocity_change") {
+    const auto r = plain_direction_velocity_change(at("m1"), at("m2"), at("v1d"), at("v2d"), at("dd"),
+                                                   at("restitution"));
+    return {r.first, r.second};
+  }
   if (name == "direction_velocity_change") {
     const auto r =
         direction_velocity_change(at("m1"), at("m2"), at("v1d"), at("v2d"), at("dd"), at("restitution"));
+    return {r.first, r.second};
+  }
+  if (name == "plain_approaching_direction_velocity_change") {
+    const auto r = plain_approaching_direction_velocity_change(at("m1"), at("m2"), at("v1d"), at("v2d"),
+                                                               at("dd"), at("restitution"));
     return {r.first, r.second};
   }
   if (name == "approaching_direction_velocity_change") {
@@ -64,7 +82,15 @@ template <typename Scalar>
 BILLIARDS_HOST_DEVICE Scalar sum_of_every_kernel(const Scalar* a) noexcept {
   Scalar sum = Scalar(0);
   {
+    const auto r = plain_elastic_normal_velocity_change(a[0], a[1], a[2], a[3]);
+    sum += r.first + r.second;
+  }
+  {
     const auto r = elastic_normal_velocity_change(a[0], a[1], a[2], a[3]);
+    sum += r.first + r.second;
+  }
+  {
+    const auto r = plain_normal_velocity_change(a[0], a[1], a[2], a[3], a[4]);
     sum += r.first + r.second;
   }
   {
@@ -72,7 +98,15 @@ BILLIARDS_HOST_DEVICE Scalar sum_of_every_kernel(const Scalar* a) noexcept {
     sum += r.first + r.second;
   }
   {
+    const auto r = plain_direction_velocity_change(a[0], a[1], a[2], a[3], a[4], a[5]);
+    sum += r.first + r.second;
+  }
+  {
     const auto r = direction_velocity_change(a[0], a[1], a[2], a[3], a[4], a[5]);
+    sum += r.first + r.second;
+  }
+  {
+    const auto r = plain_approaching_direction_velocity_change(a[0], a[1], a[2], a[3], a[4], a[5]);
     sum += r.first + r.second;
   }
   {

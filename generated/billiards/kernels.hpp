@@ -5,7 +5,7 @@
 // derivation audit before it was printed, and names the claims it implements. They take masses
 // and dot products, so they serve vectors of any dimension and need no Eigen.
 //
-// Fingerprint: fnv1a64:4bcef5d5268439b1 (of this header and the audit)
+// Fingerprint: fnv1a64:49fd143042fb52c6 (of this header and the audit)
 #pragma once
 
 #include <cmath>
@@ -70,6 +70,59 @@ BILLIARDS_HOST_DEVICE constexpr double infinity<double>() noexcept {
   return __builtin_huge_val();
 }
 
+/// The plain form's mass range [4 √x_min, 1/(4 √x_min)], x_min = smallest_normal<Scalar>(): 2^−509 to
+/// 2^509 in double, 2^−61 to 2^61 in float. Within it m1 + m2, (1 + e)/(m1 + m2) and each
+/// (1 + e) m_i/(m1 + m2) are normal numbers, so the one-division form keeps every digit.
+template <typename Scalar>
+BILLIARDS_HOST_DEVICE constexpr Scalar plain_mass_low() noexcept {
+  Scalar low = Scalar(4);  // 4 √x_min = 4 · 2^((min_exponent − 1)/2)
+  for (int k = 0; k < (1 - std::numeric_limits<Scalar>::min_exponent) / 2; ++k) low /= Scalar(2);
+  return low;
+}
+template <>
+BILLIARDS_HOST_DEVICE constexpr float plain_mass_low<float>() noexcept {
+  return 0x1p-61f;
+}
+template <>
+BILLIARDS_HOST_DEVICE constexpr double plain_mass_low<double>() noexcept {
+  return 0x1p-509;
+}
+/// 1/plain_mass_low<Scalar>(), exactly (a power of two).
+template <typename Scalar>
+BILLIARDS_HOST_DEVICE constexpr Scalar plain_mass_high() noexcept {
+  return Scalar(1) / plain_mass_low<Scalar>();
+}
+
+/// The same as elastic_normal_velocity_change for masses in [plain_mass_low, plain_mass_high]
+/// (within_plain_mass_range), where it is as accurate: (1 + e) m2/(m1 + m2) and (1 + e) m1/(m1 + m2) by
+/// one sum, the paper's plain form. elastic_normal_velocity_change takes it there itself; call it
+/// directly only where the masses are known to be in the range (collide_batch's vectorised pass).
+///
+/// Proven equal to the derived expression of the audit claim `kernel.elastic_normal_velocity_change`
+/// before it was printed; also implements `beyond.plain_range.one_division_form`,
+/// `beyond.plain_range.smallest_share`.
+///
+/// Total ops: 9
+template <typename Scalar>
+BILLIARDS_HOST_DEVICE constexpr NormalVelocityChange<Scalar> plain_elastic_normal_velocity_change(
+    Scalar m1, Scalar m2, Scalar v1n, Scalar v2n) noexcept {
+  const Scalar relative_normal_speed = v2n - v1n;
+  const Scalar total_mass = m1 + m2;
+  const Scalar first_impulse_coefficient = Scalar(2) * m2 / total_mass;
+  const Scalar second_impulse_coefficient = Scalar(2) * m1 / total_mass;
+  const Scalar first_change = first_impulse_coefficient * relative_normal_speed;
+  const Scalar second_change = relative_normal_speed * second_impulse_coefficient;
+  return {first_change, -second_change};
+}
+
+/// True when both masses lie in [plain_mass_low<Scalar>(), plain_mass_high<Scalar>()], where the
+/// collision kernels take their plain one-division form (false for +∞ and NaN).
+template <typename Scalar>
+BILLIARDS_HOST_DEVICE constexpr bool within_plain_mass_range(Scalar m1, Scalar m2) noexcept {
+  return (plain_mass_low<Scalar>() <= m1) & (m1 <= plain_mass_high<Scalar>()) &
+         (plain_mass_low<Scalar>() <= m2) & (m2 <= plain_mass_high<Scalar>());
+}
+
 /// The paper's perfectly elastic collision in normal components: the changes x1·n − v1·n and x2·n
 /// − v2·n of the two balls' velocities along the unit contact normal n, from the masses and v1·n,
 /// v2·n. A mass may be +∞ (an immovable body), not both.
@@ -77,12 +130,16 @@ BILLIARDS_HOST_DEVICE constexpr double infinity<double>() noexcept {
 /// Proven equal to the derived expression of the audit claim `kernel.elastic_normal_velocity_change`
 /// before it was printed; also implements `result.x1_simplified_form`, `result.x2_by_symmetry`,
 /// `kernel.impulse_coefficient_first`, `kernel.impulse_coefficient_second`,
-/// `beyond.immovable.mass_ratio_form`, `beyond.immovable.small_mass_form`.
+/// `beyond.immovable.mass_ratio_form`, `beyond.immovable.small_mass_form`,
+/// `beyond.plain_range.one_division_form`.
 ///
 /// Total ops: 17
 template <typename Scalar>
 BILLIARDS_HOST_DEVICE constexpr NormalVelocityChange<Scalar> elastic_normal_velocity_change(
     Scalar m1, Scalar m2, Scalar v1n, Scalar v2n) noexcept {
+  if (plain_mass_low<Scalar>() <= m1 && m1 <= plain_mass_high<Scalar>() && plain_mass_low<Scalar>() <= m2 &&
+      m2 <= plain_mass_high<Scalar>())
+    return plain_elastic_normal_velocity_change(m1, m2, v1n, v2n);
   const Scalar relative_normal_speed = v2n - v1n;
   const Scalar first_mass_ratio = m1 / m2;
   const Scalar second_mass_ratio = m2 / m1;
@@ -102,18 +159,44 @@ BILLIARDS_HOST_DEVICE constexpr NormalVelocityChange<Scalar> elastic_normal_velo
   return {first_change, -second_change};
 }
 
+/// The same as normal_velocity_change for masses in [plain_mass_low, plain_mass_high]
+/// (within_plain_mass_range), where it is as accurate: (1 + e) m2/(m1 + m2) and (1 + e) m1/(m1 + m2) by
+/// one sum, the paper's plain form. normal_velocity_change takes it there itself; call it directly only
+/// where the masses are known to be in the range (collide_batch's vectorised pass).
+///
+/// Proven equal to the derived expression of the audit claim `kernel.normal_velocity_change` before it
+/// was printed; also implements `beyond.plain_range.one_division_form`,
+/// `beyond.plain_range.smallest_share`.
+///
+/// Total ops: 10
+template <typename Scalar>
+BILLIARDS_HOST_DEVICE constexpr NormalVelocityChange<Scalar> plain_normal_velocity_change(
+    Scalar m1, Scalar m2, Scalar v1n, Scalar v2n, Scalar restitution) noexcept {
+  const Scalar relative_normal_speed = v2n - v1n;
+  const Scalar restitution_factor = Scalar(1) + restitution;
+  const Scalar total_mass = m1 + m2;
+  const Scalar first_impulse_coefficient = m2 * restitution_factor / total_mass;
+  const Scalar second_impulse_coefficient = m1 * restitution_factor / total_mass;
+  const Scalar first_change = first_impulse_coefficient * relative_normal_speed;
+  const Scalar second_change = relative_normal_speed * second_impulse_coefficient;
+  return {first_change, -second_change};
+}
+
 /// A collision with coefficient of restitution e (0 ≤ e ≤ 1; e = 1 is the paper's): the changes
 /// x1·n − v1·n and x2·n − v2·n along the unit contact normal n. A mass may be +∞.
 ///
 /// Proven equal to the derived expression of the audit claim `kernel.normal_velocity_change` before it
 /// was printed; also implements `beyond.restitution.impulse_coefficients`,
 /// `beyond.immovable.mass_ratio_form`, `beyond.restitution.energy_loss`,
-/// `beyond.immovable.small_mass_form`.
+/// `beyond.immovable.small_mass_form`, `beyond.plain_range.one_division_form`.
 ///
 /// Total ops: 18
 template <typename Scalar>
 BILLIARDS_HOST_DEVICE constexpr NormalVelocityChange<Scalar> normal_velocity_change(
     Scalar m1, Scalar m2, Scalar v1n, Scalar v2n, Scalar restitution) noexcept {
+  if (plain_mass_low<Scalar>() <= m1 && m1 <= plain_mass_high<Scalar>() && plain_mass_low<Scalar>() <= m2 &&
+      m2 <= plain_mass_high<Scalar>())
+    return plain_normal_velocity_change(m1, m2, v1n, v2n, restitution);
   const Scalar relative_normal_speed = v2n - v1n;
   const Scalar first_mass_ratio = m1 / m2;
   const Scalar second_mass_ratio = m2 / m1;
@@ -134,18 +217,44 @@ BILLIARDS_HOST_DEVICE constexpr NormalVelocityChange<Scalar> normal_velocity_cha
   return {first_change, -second_change};
 }
 
+/// The same as direction_velocity_change for masses in [plain_mass_low, plain_mass_high]
+/// (within_plain_mass_range), where it is as accurate: (1 + e) m2/(m1 + m2) and (1 + e) m1/(m1 + m2) by
+/// one sum, the paper's plain form. direction_velocity_change takes it there itself; call it directly
+/// only where the masses are known to be in the range (collide_batch's vectorised pass).
+///
+/// Proven equal to the derived expression of the audit claim `kernel.direction_velocity_change` before
+/// it was printed; also implements `beyond.plain_range.one_division_form`,
+/// `beyond.plain_range.smallest_share`.
+///
+/// Total ops: 11
+template <typename Scalar>
+BILLIARDS_HOST_DEVICE constexpr NormalVelocityChange<Scalar> plain_direction_velocity_change(
+    Scalar m1, Scalar m2, Scalar v1d, Scalar v2d, Scalar dd, Scalar restitution) noexcept {
+  const Scalar direction_speed = (v2d - v1d) / dd;
+  const Scalar restitution_factor = Scalar(1) + restitution;
+  const Scalar total_mass = m1 + m2;
+  const Scalar first_impulse_coefficient = m2 * restitution_factor / total_mass;
+  const Scalar second_impulse_coefficient = m1 * restitution_factor / total_mass;
+  const Scalar first_change = direction_speed * first_impulse_coefficient;
+  const Scalar second_change = direction_speed * second_impulse_coefficient;
+  return {first_change, -second_change};
+}
+
 /// The same along a direction d that need not be a unit vector: the multiples of d to add to v1 and v2,
 /// from the masses, v1·d, v2·d, d·d and e. d must not be zero.
 ///
 /// Proven equal to the derived expression of the audit claim `kernel.direction_velocity_change` before
 /// it was printed; also implements `beyond.any_normal.direction_form`,
 /// `beyond.any_normal.scale_invariant`, `beyond.immovable.mass_ratio_form`,
-/// `beyond.immovable.small_mass_form`.
+/// `beyond.immovable.small_mass_form`, `beyond.plain_range.one_division_form`.
 ///
 /// Total ops: 19
 template <typename Scalar>
 BILLIARDS_HOST_DEVICE constexpr NormalVelocityChange<Scalar> direction_velocity_change(
     Scalar m1, Scalar m2, Scalar v1d, Scalar v2d, Scalar dd, Scalar restitution) noexcept {
+  if (plain_mass_low<Scalar>() <= m1 && m1 <= plain_mass_high<Scalar>() && plain_mass_low<Scalar>() <= m2 &&
+      m2 <= plain_mass_high<Scalar>())
+    return plain_direction_velocity_change(m1, m2, v1d, v2d, dd, restitution);
   const Scalar direction_speed = (v2d - v1d) / dd;
   const Scalar first_mass_ratio = m1 / m2;
   const Scalar second_mass_ratio = m2 / m1;
@@ -166,6 +275,30 @@ BILLIARDS_HOST_DEVICE constexpr NormalVelocityChange<Scalar> direction_velocity_
   return {first_change, -second_change};
 }
 
+/// The same as approaching_direction_velocity_change for masses in [plain_mass_low, plain_mass_high]
+/// (within_plain_mass_range), where it is as accurate: (1 + e) m2/(m1 + m2) and (1 + e) m1/(m1 + m2) by
+/// one sum, the paper's plain form. approaching_direction_velocity_change takes it there itself; call
+/// it directly only where the masses are known to be in the range (collide_batch's vectorised pass).
+///
+/// Proven equal to the derived expression of the audit claim
+/// `kernel.approaching_direction_velocity_change` before it was printed; also implements
+/// `beyond.plain_range.one_division_form`, `beyond.plain_range.smallest_share`.
+///
+/// Total ops: 13
+template <typename Scalar>
+BILLIARDS_HOST_DEVICE constexpr NormalVelocityChange<Scalar> plain_approaching_direction_velocity_change(
+    Scalar m1, Scalar m2, Scalar v1d, Scalar v2d, Scalar dd, Scalar restitution) noexcept {
+  const Scalar direction_speed = (v2d - v1d) / dd;
+  const Scalar approach_speed = (direction_speed - absolute_value(direction_speed)) / Scalar(2);
+  const Scalar restitution_factor = Scalar(1) + restitution;
+  const Scalar total_mass = m1 + m2;
+  const Scalar first_impulse_coefficient = m2 * restitution_factor / total_mass;
+  const Scalar second_impulse_coefficient = m1 * restitution_factor / total_mass;
+  const Scalar first_change = approach_speed * first_impulse_coefficient;
+  const Scalar second_change = approach_speed * second_impulse_coefficient;
+  return {first_change, -second_change};
+}
+
 /// Like direction_velocity_change with d pointing from ball 1 to ball 2, but only for approaching balls
 /// ((v2 − v1)·d < 0); separating or resting contacts are left unchanged (zero change), so rounding
 /// can never make a separating pair collide again.
@@ -174,12 +307,15 @@ BILLIARDS_HOST_DEVICE constexpr NormalVelocityChange<Scalar> direction_velocity_
 /// `kernel.approaching_direction_velocity_change` before it was printed; also implements
 /// `beyond.approaching.kernel_form`, `beyond.approaching.resolve_only_approaching`,
 /// `beyond.any_normal.direction_form`, `beyond.immovable.mass_ratio_form`,
-/// `beyond.immovable.small_mass_form`.
+/// `beyond.immovable.small_mass_form`, `beyond.plain_range.one_division_form`.
 ///
 /// Total ops: 21
 template <typename Scalar>
 BILLIARDS_HOST_DEVICE constexpr NormalVelocityChange<Scalar> approaching_direction_velocity_change(
     Scalar m1, Scalar m2, Scalar v1d, Scalar v2d, Scalar dd, Scalar restitution) noexcept {
+  if (plain_mass_low<Scalar>() <= m1 && m1 <= plain_mass_high<Scalar>() && plain_mass_low<Scalar>() <= m2 &&
+      m2 <= plain_mass_high<Scalar>())
+    return plain_approaching_direction_velocity_change(m1, m2, v1d, v2d, dd, restitution);
   const Scalar direction_speed = (v2d - v1d) / dd;
   const Scalar approach_speed = (direction_speed - absolute_value(direction_speed)) / Scalar(2);
   const Scalar first_mass_ratio = m1 / m2;

@@ -4,7 +4,7 @@
 // derivation of S. T. Parkin, "Billiard Ball Physics", 2023 before simplification,
 // printed from the same derived expressions as billiards/kernels.hpp and proven the same way.
 //
-// Fingerprint: fnv1a64:fc5cb1cd5ff9887d (of this header and the audit)
+// Fingerprint: fnv1a64:3e09a0128c338640 (of this header and the audit)
 #pragma once
 
 #include <billiards/kernels.hpp>

@@ -190,11 +190,19 @@ class InputGenerator {
     Inputs<Scalar> in;
     const int mode = sample % 8;  // which adversarial family this sample stresses
     if (kernel.name == "time_of_impact") return contact_geometry(mode);
+    // A kernel with a domain (a fast path's form) is measured inside it only: the plain form's mass
+    // range, the one domain the derivation gives (checked, so that a new one is not silently ignored).
+    const bool within_domain = !kernel.domain.empty();
+    if (within_domain) require_plain_mass_range(kernel);
     const Scalar limit = std::sqrt(std::numeric_limits<Scalar>::max()) / Scalar(64);
     const Scalar direction_length = log_uniform(std::sqrt(std::numeric_limits<Scalar>::min()), limit);
     for (const ex& parameter : kernel.parameters) {
       const std::string name = GiNaC::ex_to<GiNaC::symbol>(parameter).get_name();
-      if (name == "m1" || name == "m2") in[name] = finite_masses_ && mode == 0 ? mass(1) : mass(mode);
+      if (name == "m1" || name == "m2") {
+        in[name] = within_domain                 ? plain_range_mass(mode)
+                   : finite_masses_ && mode == 0 ? mass(1)
+                                                 : mass(mode);
+      }
       if (name == "restitution") in[name] = mode == 3 ? Scalar(0) : mode == 4 ? Scalar(1) : unit_(random_);
       if (name == "dd") in[name] = direction_length * direction_length;
       if (name == "v1n" || name == "v2n" || name == "vn") in[name] = speed(mode, limit);
@@ -278,6 +286,31 @@ class InputGenerator {
                                                     std::log2(static_cast<double>(high)));
     const Scalar x = static_cast<Scalar>(std::exp2(exponent(random_)));
     return std::min(std::max(x, low), high);
+  }
+  static void require_plain_mass_range(const billiards::derive::Kernel& kernel) {
+    for (const ex& condition : kernel.domain) {
+      for (GiNaC::const_preorder_iterator it = condition.preorder_begin(); it != condition.preorder_end();
+           ++it) {
+        if (!GiNaC::is_a<GiNaC::symbol>(*it)) continue;
+        const std::string name = GiNaC::ex_to<GiNaC::symbol>(*it).get_name();
+        if (name != "m1" && name != "m2" && !it->is_equal(billiards::derive::plain_mass_low()) &&
+            !it->is_equal(billiards::derive::plain_mass_high())) {
+          throw std::invalid_argument("kernel " + kernel.name + ": its domain reads " + name +
+                                      "; the accuracy tool knows only the plain mass range");
+        }
+      }
+    }
+  }
+  // A mass in [plain_mass_low, plain_mass_high]: its ends, powers of two, the whole range log-uniform.
+  Scalar plain_range_mass(int mode) {
+    const Scalar low = billiards::kernels::plain_mass_low<Scalar>(),
+                 high = billiards::kernels::plain_mass_high<Scalar>();
+    switch (mode) {
+      case 0: return random_() % 2 ? low : high;
+      case 1: return log_uniform(low, high);
+      case 2: return std::ldexp(Scalar(1), static_cast<int>(random_() % 40) - 20);
+      default: return log_uniform(Scalar(1e-3), Scalar(1e3));
+    }
   }
   Scalar mass(int mode) {
     const Scalar smallest = std::numeric_limits<Scalar>::denorm_min(),

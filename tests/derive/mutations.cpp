@@ -81,6 +81,23 @@ const std::vector<Mutation>& paper_mutations() {
        [](Kernel& k) { k.claims.push_back("cushion.no_such_claim"); }},
       {"equals_an_unverified_claim", "elastic_normal_velocity_change",
        [](Kernel& k) { k.equals = "assumption.tangential_velocity_unchanged"; }},
+      // The fast path (issue 14): its plain kernels and the way the full kernels take them.
+      {"plain_coefficient_mass_swapped", "plain_elastic_normal_velocity_change",
+       [](Kernel& k) {
+         step(k, "first_impulse_coefficient").expression =
+             2 * symbol(k, "m1") / (symbol(k, "m1") + symbol(k, "m2"));
+       }},
+      {"plain_restitution_dropped", "plain_normal_velocity_change",
+       [](Kernel& k) {
+         step(k, "second_impulse_coefficient").expression =
+             2 * symbol(k, "m1") / (symbol(k, "m1") + symbol(k, "m2"));
+       }},
+      {"fast_path_takes_another_claims_kernel", "normal_velocity_change",
+       [](Kernel& k) { k.fast_path->kernel = "plain_elastic_normal_velocity_change"; }},
+      {"fast_path_range_wider_than_the_plain_form", "direction_velocity_change",
+       [](Kernel& k) { k.fast_path->conditions.at(1) = symbol(k, "m1") <= infinity(); }},
+      {"fast_path_condition_reads_an_unknown_symbol", "approaching_direction_velocity_change",
+       [](Kernel& k) { k.fast_path->conditions.at(0) = plain_mass_low() <= GiNaC::symbol("m3"); }},
   };
   return mutations;
 }

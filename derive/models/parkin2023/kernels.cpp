@@ -78,10 +78,63 @@ std::vector<KernelStep> change_steps(const ChangeNames& names, const MassRatios&
           {names.second_change, names.second_factor * names.second_multiplier}};
 }
 
+// The mass range of the fast path, as conditions on the masses.
+std::vector<ex> plain_mass_range() {
+  const Symbols& s = symbols();
+  return {plain_mass_low() <= s.m1, s.m1 <= plain_mass_high(), plain_mass_low() <= s.m2,
+          s.m2 <= plain_mass_high()};
+}
+
+// `full` preceded by its one-division form for masses in the plain range: the same speed steps (the
+// first `speed_steps` of `full`), then (1 + e) m2/(m1 + m2) and (1 + e) m1/(m1 + m2) over one sum
+// (beyond.plain_range.one_division_form), each times the speed `by`; `full` takes it first there.
+std::vector<Kernel> with_fast_path(Kernel full, const PlainRange& plain, const MassRatios& ratios,
+                                   const ex& restitution, const ex& by, std::size_t speed_steps) {
+  const Symbols& s = symbols();
+  const ex e = s.restitution;
+  const GiNaC::symbol first_coefficient("first_impulse_coefficient"),
+      second_coefficient("second_impulse_coefficient");
+  const GiNaC::symbol first_change("first_change"), second_change("second_change");
+  Kernel fast{
+      .name = "plain_" + full.name,
+      .brief = "The same as " + full.name + " for masses in [plain_mass_low, plain_mass_high] (" +
+               "within_plain_mass_range), where it is as accurate: (1 + e) m2/(m1 + m2) and (1 + e) m1/(m1 + "
+               "m2) by one sum, the paper's plain form. " +
+               full.name +
+               " takes it there itself; call it "
+               "directly only where the masses are known to be in the range (collide_batch's vectorised "
+               "pass).",
+      .parameters = full.parameters,
+      .steps = {full.steps.begin(), full.steps.begin() + static_cast<std::ptrdiff_t>(speed_steps)},
+      .outputs = {with_sign(ratios.first_ratio_form, first_change),
+                  with_sign(ratios.second_ratio_form, second_change)},
+      .equals = full.equals,
+      .in_claim_terms = full.in_claim_terms,
+      .claims = {"beyond.plain_range.one_division_form", "beyond.plain_range.smallest_share"},
+      .names = {{"total_mass", s.m1 + s.m2}, {"restitution_factor", 1 + e}},
+      .domain = plain_mass_range(),
+  };
+  fast.steps.push_back({first_coefficient, plain.first_mass_form.subs(e == restitution)});
+  fast.steps.push_back({second_coefficient, plain.second_mass_form.subs(e == restitution)});
+  fast.steps.push_back({first_change, first_coefficient * by});
+  fast.steps.push_back({second_change, second_coefficient * by});
+  full.fast_path = FastPath{
+      .predicate = "within_plain_mass_range",
+      .brief =
+          "True when both masses lie in [plain_mass_low<Scalar>(), plain_mass_high<Scalar>()], where the "
+          "collision kernels take their plain one-division form (false for +∞ and NaN).",
+      .conditions = plain_mass_range(),
+      .kernel = fast.name,
+      .claim = "beyond.plain_range.one_division_form",
+  };
+  return {fast, full};
+}
+
 }  // namespace
 
 std::vector<Kernel> collision_kernels(const Setting& setting, const KernelPieces& pieces,
-                                      const MassRatios& ratios, const Direction& direction) {
+                                      const MassRatios& ratios, const PlainRange& plain,
+                                      const Direction& direction) {
   const Symbols& s = symbols();
   const Space& space = setting.space;
   const ex e = s.restitution;
@@ -102,59 +155,73 @@ std::vector<Kernel> collision_kernels(const Setting& setting, const KernelPieces
   const GiNaC::exmap direction_terms{
       {v1d, dot(space.v1, direction.d)}, {v2d, dot(space.v2, direction.d)}, {ddot, direction.dd}};
   std::vector<Kernel> kernels;
-  kernels.push_back({
-      .name = "elastic_normal_velocity_change",
-      .brief = "The paper's perfectly elastic collision in normal components: the changes x1·n − v1·n and "
-               "x2·n − v2·n of the two balls' velocities along the unit contact normal n, from the masses "
-               "and v1·n, v2·n. A mass may be +∞ (an immovable body), not both.",
-      .parameters = {s.m1, s.m2, s.v1n, s.v2n},
-      .steps = steps_then({{speed_name, s.v2n - s.v1n}}, change_steps(1, speed_name)),
-      .outputs = outputs(),
-      .equals = "kernel.elastic_normal_velocity_change",
-      .claims = {"result.x1_simplified_form", "result.x2_by_symmetry", "kernel.impulse_coefficient_first",
-                 "kernel.impulse_coefficient_second", "beyond.immovable.mass_ratio_form"},
-  });
-  kernels.push_back({
-      .name = "normal_velocity_change",
-      .brief = "A collision with coefficient of restitution e (0 ≤ e ≤ 1; e = 1 is the paper's): the "
-               "changes x1·n − v1·n and x2·n − v2·n along the unit contact normal n. A mass may be +∞.",
-      .parameters = {s.m1, s.m2, s.v1n, s.v2n, e},
-      .steps = steps_then({{speed_name, s.v2n - s.v1n}}, change_steps(e, speed_name)),
-      .outputs = outputs(),
-      .equals = "kernel.normal_velocity_change",
-      .claims = {"beyond.restitution.impulse_coefficients", "beyond.immovable.mass_ratio_form",
-                 "beyond.restitution.energy_loss"},
-      .names = {{"restitution_factor", 1 + e}},
-  });
-  kernels.push_back({
-      .name = "direction_velocity_change",
-      .brief = "The same along a direction d that need not be a unit vector: the multiples of d to add to "
-               "v1 and v2, from the masses, v1·d, v2·d, d·d and e. d must not be zero.",
-      .parameters = {s.m1, s.m2, v1d, v2d, ddot, e},
-      .steps = steps_then({{direction_speed, (v2d - v1d) / ddot}}, change_steps(e, direction_speed)),
-      .outputs = outputs(),
-      .equals = "kernel.direction_velocity_change",
-      .in_claim_terms = direction_terms,
-      .claims = {"beyond.any_normal.direction_form", "beyond.any_normal.scale_invariant",
-                 "beyond.immovable.mass_ratio_form"},
-      .names = {{"restitution_factor", 1 + e}},
-  });
-  kernels.push_back({
-      .name = "approaching_direction_velocity_change",
-      .brief = "Like direction_velocity_change with d pointing from ball 1 to ball 2, but only for "
-               "approaching balls ((v2 − v1)·d < 0); separating or resting contacts are left unchanged "
-               "(zero change), so rounding can never make a separating pair collide again.",
-      .parameters = {s.m1, s.m2, v1d, v2d, ddot, e},
-      .steps = steps_then({{direction_speed, (v2d - v1d) / ddot},
-                           {approach_name, (direction_speed - GiNaC::abs(direction_speed)) / 2}},
-                          change_steps(e, approach_name)),
-      .outputs = outputs(),
-      .equals = "kernel.approaching_direction_velocity_change",
-      .in_claim_terms = direction_terms,
-      .claims = {"beyond.approaching.kernel_form", "beyond.approaching.resolve_only_approaching",
-                 "beyond.any_normal.direction_form", "beyond.immovable.mass_ratio_form"},
-      .names = {{"restitution_factor", 1 + e}},
-  });
+  const auto add = [&](const Kernel& full, const ex& restitution, const ex& by, std::size_t speed_steps) {
+    for (const Kernel& kernel : with_fast_path(full, plain, ratios, restitution, by, speed_steps))
+      kernels.push_back(kernel);
+  };
+  add(
+      {
+          .name = "elastic_normal_velocity_change",
+          .brief =
+              "The paper's perfectly elastic collision in normal components: the changes x1·n − v1·n and "
+              "x2·n − v2·n of the two balls' velocities along the unit contact normal n, from the masses "
+              "and v1·n, v2·n. A mass may be +∞ (an immovable body), not both.",
+          .parameters = {s.m1, s.m2, s.v1n, s.v2n},
+          .steps = steps_then({{speed_name, s.v2n - s.v1n}}, change_steps(1, speed_name)),
+          .outputs = outputs(),
+          .equals = "kernel.elastic_normal_velocity_change",
+          .claims = {"result.x1_simplified_form", "result.x2_by_symmetry", "kernel.impulse_coefficient_first",
+                     "kernel.impulse_coefficient_second", "beyond.immovable.mass_ratio_form"},
+      },
+      1, speed_name, 1);
+  add(
+      {
+          .name = "normal_velocity_change",
+          .brief = "A collision with coefficient of restitution e (0 ≤ e ≤ 1; e = 1 is the paper's): the "
+                   "changes x1·n − v1·n and x2·n − v2·n along the unit contact normal n. A mass may be +∞.",
+          .parameters = {s.m1, s.m2, s.v1n, s.v2n, e},
+          .steps = steps_then({{speed_name, s.v2n - s.v1n}}, change_steps(e, speed_name)),
+          .outputs = outputs(),
+          .equals = "kernel.normal_velocity_change",
+          .claims = {"beyond.restitution.impulse_coefficients", "beyond.immovable.mass_ratio_form",
+                     "beyond.restitution.energy_loss"},
+          .names = {{"restitution_factor", 1 + e}},
+      },
+      e, speed_name, 1);
+  add(
+      {
+          .name = "direction_velocity_change",
+          .brief =
+              "The same along a direction d that need not be a unit vector: the multiples of d to add to "
+              "v1 and v2, from the masses, v1·d, v2·d, d·d and e. d must not be zero.",
+          .parameters = {s.m1, s.m2, v1d, v2d, ddot, e},
+          .steps = steps_then({{direction_speed, (v2d - v1d) / ddot}}, change_steps(e, direction_speed)),
+          .outputs = outputs(),
+          .equals = "kernel.direction_velocity_change",
+          .in_claim_terms = direction_terms,
+          .claims = {"beyond.any_normal.direction_form", "beyond.any_normal.scale_invariant",
+                     "beyond.immovable.mass_ratio_form"},
+          .names = {{"restitution_factor", 1 + e}},
+      },
+      e, direction_speed, 1);
+  add(
+      {
+          .name = "approaching_direction_velocity_change",
+          .brief = "Like direction_velocity_change with d pointing from ball 1 to ball 2, but only for "
+                   "approaching balls ((v2 − v1)·d < 0); separating or resting contacts are left unchanged "
+                   "(zero change), so rounding can never make a separating pair collide again.",
+          .parameters = {s.m1, s.m2, v1d, v2d, ddot, e},
+          .steps = steps_then({{direction_speed, (v2d - v1d) / ddot},
+                               {approach_name, (direction_speed - GiNaC::abs(direction_speed)) / 2}},
+                              change_steps(e, approach_name)),
+          .outputs = outputs(),
+          .equals = "kernel.approaching_direction_velocity_change",
+          .in_claim_terms = direction_terms,
+          .claims = {"beyond.approaching.kernel_form", "beyond.approaching.resolve_only_approaching",
+                     "beyond.any_normal.direction_form", "beyond.immovable.mass_ratio_form"},
+          .names = {{"restitution_factor", 1 + e}},
+      },
+      e, approach_name, 2);
   const GiNaC::realsymbol vn("vn");
   kernels.push_back({
       .name = "cushion_normal_velocity_change",

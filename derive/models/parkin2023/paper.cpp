@@ -80,6 +80,7 @@ Derivation derive(const Definitions& definitions) {
                  "and checked like the paper's claims; the paper states none of them.");
   const Restitution with_restitution = restitution(record, definitions);
   const MassRatios ratios = immovable_bodies(record, with_restitution);
+  const PlainRange plain = plain_range(record, with_restitution, ratios);
   const Direction direction = any_direction(record, setting, with_restitution);
   const Approaching approaching = approaching_contacts(record, definitions, selection, with_restitution);
   const TimeOfImpact toi = time_of_impact_quadratic(record);
@@ -91,7 +92,7 @@ Derivation derive(const Definitions& definitions) {
                  "compared with the formula the source prints. Every kernel is proven equal to the derived "
                  "side of its claim before it is printed (see \"The emitted kernels\" below).");
   kernel_outputs(record, setting, selection, with_restitution, direction, approaching);
-  derivation.kernels = collision_kernels(setting, pieces, ratios, direction);
+  derivation.kernels = collision_kernels(setting, pieces, ratios, plain, direction);
   derivation.kernels.push_back(time_of_impact_kernel(toi));
   derivation.reference_kernels = reference_kernels(quadratic);
   return derivation;

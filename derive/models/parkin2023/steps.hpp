@@ -186,6 +186,11 @@ struct MassRatios {
 };
 MassRatios immovable_bodies(Recorder& record, const Restitution& restitution);
 
+struct PlainRange {
+  ex first_mass_form, second_mass_form;  ///< (1 + e) m2/(m1 + m2) and (1 + e) m1/(m1 + m2), magnitudes
+};
+PlainRange plain_range(Recorder& record, const Restitution& restitution, const MassRatios& ratios);
+
 struct Direction {
   Vec d;               ///< a direction, not necessarily unit (3-D components)
   ex dd;               ///< d·d
@@ -222,7 +227,8 @@ void kernel_outputs(Recorder& record, const Setting& setting, const Selection& s
 // ---- The kernels ----------------------------------------------------------------------------------
 
 std::vector<Kernel> collision_kernels(const Setting& setting, const KernelPieces& pieces,
-                                      const MassRatios& ratios, const Direction& direction);
+                                      const MassRatios& ratios, const PlainRange& plain,
+                                      const Direction& direction);
 Kernel time_of_impact_kernel(const TimeOfImpact& toi);
 std::vector<Kernel> reference_kernels(const Quadratic& quadratic);
 

@@ -1,6 +1,6 @@
 // billiards::collide_batch: many collisions at once over structure-of-arrays spans, written so that
-// the compiler vectorises the loop (a straight-line body: the generated kernel, whose one branch is a
-// select between two computed values).
+// the compiler vectorises the loop (a straight-line body: the generated plain kernel and a select of its
+// change by the generated range test; the rare pairs outside that range in a second, scalar pass).
 #pragma once
 
 #include <billiards/detail/arithmetic.hpp>
@@ -22,10 +22,12 @@ using Components = std::array<std::span<Scalar>, Dimension>;
 ///
 /// Pair i has masses m1[i], m2[i], velocities (v1[0][i], …, v1[D−1][i]) and likewise v2, and unit
 /// contact normal (n[0][i], …); afterwards v1 and v2 hold x1 and x2 exactly as billiards::collide
-/// would compute them under the same compiler flags, bit for bit (the same generated kernel,
-/// kernels::elastic_normal_velocity_change, and the same dot product and update,
-/// detail/arithmetic.hpp; tested on random data with and without -march=native). A mass
-/// may be +∞. No allocation. The arrays must not overlap one another.
+/// would compute them under the same compiler flags, bit for bit (the same generated kernels:
+/// kernels::plain_elastic_normal_velocity_change, in one vectorised pass, for the pairs whose masses
+/// kernels::within_plain_mass_range accepts, as kernels::elastic_normal_velocity_change takes it there,
+/// then that kernel itself for the others in a second pass, run only when there are any; and the same
+/// dot product and update, detail/arithmetic.hpp; tested on random data with and without
+/// -march=native). A mass may be +∞. No allocation. The arrays must not overlap one another.
 /// \throws std::invalid_argument when a span's length differs from m1's (checked once, before any
 ///         update, so nothing is half-updated).
 #if defined(__clang__)
@@ -62,6 +64,9 @@ void collide_batch(std::span<const Scalar> m1, const Components<Scalar, Dimensio
   }
   const Scalar* __restrict mass1 = m1.data();
   const Scalar* __restrict mass2 = m2.data();
+  // One pass over pairs [begin, end) through `kernel` (a generated kernel of the masses and the normal
+  // velocities).
+  const auto pass = [&](std::size_t begin, std::size_t end, auto kernel) {
   // The arrays do not overlap (a documented precondition). The compilers must be told: otherwise they
   // would need a run-time overlap test for every pair of the 3D + 2 arrays, more than they are willing
   // to emit (GCC stops at 10), and leave the loop scalar.
@@ -70,16 +75,37 @@ void collide_batch(std::span<const Scalar> m1, const Components<Scalar, Dimensio
 #elif defined(__GNUC__)
 #pragma GCC ivdep
 #endif
-  for (std::size_t i = 0; i < count; ++i) {  // the batch loop: vectorised (see README, Performance)
-    // The same dot product and the same update as billiards::collide (detail/arithmetic.hpp), so the
-    // bits agree under the same flags.
-    const auto normal_at = [&](std::size_t k) { return normal[k][i]; };
-    const Scalar v1n = detail::dot<Dimension>([&](std::size_t k) { return x1[k][i]; }, normal_at);
-    const Scalar v2n = detail::dot<Dimension>([&](std::size_t k) { return x2[k][i]; }, normal_at);
-    const auto change = kernels::elastic_normal_velocity_change(mass1[i], mass2[i], v1n, v2n);
-    for (std::size_t k = 0; k < Dimension; ++k) {
-      x1[k][i] = detail::plus_multiple(x1[k][i], change.first, normal[k][i]);
-      x2[k][i] = detail::plus_multiple(x2[k][i], change.second, normal[k][i]);
+    for (std::size_t i = begin; i < end; ++i) {  // the batch loop: vectorised (see README, Performance)
+      // The same dot product and the same update as billiards::collide (detail/arithmetic.hpp), so the
+      // bits agree under the same flags.
+      const auto normal_at = [&](std::size_t k) { return normal[k][i]; };
+      const Scalar v1n = detail::dot<Dimension>([&](std::size_t k) { return x1[k][i]; }, normal_at);
+      const Scalar v2n = detail::dot<Dimension>([&](std::size_t k) { return x2[k][i]; }, normal_at);
+      const auto change = kernel(mass1[i], mass2[i], v1n, v2n);
+      for (std::size_t k = 0; k < Dimension; ++k) {
+        x1[k][i] = detail::plus_multiple(x1[k][i], change.first, normal[k][i]);
+        x2[k][i] = detail::plus_multiple(x2[k][i], change.second, normal[k][i]);
+      }
+    }
+  };
+  // In blocks small enough to stay in the first-level cache: where every pair's masses lie in the plain
+  // form's range, the plain kernel that elastic_normal_velocity_change itself takes there (two divisions
+  // by one sum); otherwise elastic_normal_velocity_change (its ratio form for the pairs outside). The
+  // range test reads two of the 6D + 2 arrays, once more, from that cache.
+  constexpr std::size_t block = 256;
+  for (std::size_t begin = 0; begin < count; begin += block) {
+    const std::size_t end = count - begin < block ? count : begin + block;
+    unsigned outside = 0;
+    for (std::size_t i = begin; i < end; ++i)
+      outside |= kernels::within_plain_mass_range(mass1[i], mass2[i]) ? 0u : 1u;
+    if (outside == 0) {
+      pass(begin, end, [](Scalar a, Scalar b, Scalar u, Scalar w) {
+        return kernels::plain_elastic_normal_velocity_change(a, b, u, w);
+      });
+    } else {
+      pass(begin, end, [](Scalar a, Scalar b, Scalar u, Scalar w) {
+        return kernels::elastic_normal_velocity_change(a, b, u, w);
+      });
     }
   }
 }

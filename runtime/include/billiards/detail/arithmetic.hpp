@@ -5,17 +5,32 @@
 // tree contracts the same way). No Eigen here.
 #pragma once
 
+#include <cmath>
 #include <cstddef>
+#include <type_traits>
 
 namespace billiards::detail {
 
-/// Σ a(k) b(k) for k = 0 … Dimension − 1, summed in that order: ((a0 b0 + a1 b1) + a2 b2) + …
+/// a b + c. Where the target has fused multiply-adds (__FMA__, as with -march=native) it is one, by
+/// std::fma: GCC contracts a0 b0 + a1 b1 into an FMA of either product, and chooses differently in
+/// different code around the same expression, so only an explicit one rounds alike in every caller.
+/// Elsewhere (and in constant evaluation) it is a b + c as written.
+template <typename Scalar>
+[[nodiscard]] constexpr Scalar multiply_add(Scalar a, Scalar b, Scalar c) noexcept {
+#if defined(__FMA__) && !defined(__CUDA_ARCH__)
+  if (!std::is_constant_evaluated()) return std::fma(a, b, c);
+#endif
+  return a * b + c;
+}
+
+/// Σ a(k) b(k) for k = 0 … Dimension − 1, summed in that order: ((a0 b0 + a1 b1) + a2 b2) + …, each
+/// step one multiply_add.
 /// `a` and `b` map a component index to a value.
 template <std::size_t Dimension, typename A, typename B>
 [[nodiscard]] constexpr auto dot(const A& a, const B& b) noexcept {
   static_assert(Dimension > 0, "billiards: vectors have at least one component");
   auto sum = a(0) * b(0);
-  for (std::size_t k = 1; k < Dimension; ++k) sum += a(k) * b(k);
+  for (std::size_t k = 1; k < Dimension; ++k) sum = multiply_add(a(k), b(k), sum);
   return sum;
 }
 
