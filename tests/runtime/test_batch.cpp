@@ -10,6 +10,8 @@
 #include <catch2/catch.hpp>
 
 #include <array>
+#include <cmath>
+#include <cstdint>
 #include <cstring>
 #include <random>
 #include <vector>
@@ -38,9 +40,15 @@ TEMPLATE_TEST_CASE("collide_batch gives collide's results bit for bit", "[runtim
   std::array<std::vector<Scalar>, dimension> v1, v2, n;
   for (std::size_t k = 0; k < dimension; ++k) v1[k].resize(count), v2[k].resize(count), n[k].resize(count);
   for (std::size_t i = 0; i < count; ++i) {
+    // The first half in the plain form's mass range, so whole blocks take the plain kernel; in the
+    // second half every 10th ball immovable and every 15th of extreme mass, so blocks there take the
+    // full kernel.
+    const bool second_half = i >= count / 2;
     m1[i] = static_cast<Scalar>(std::pow(10.0, decade(random)));
-    m2[i] = i % 10 == 0 ? std::numeric_limits<Scalar>::infinity()
-                        : static_cast<Scalar>(std::pow(10.0, decade(random)));
+    m2[i] = second_half && i % 10 == 0 ? std::numeric_limits<Scalar>::infinity()
+                                       : static_cast<Scalar>(std::pow(10.0, decade(random)));
+    if (second_half && i % 15 == 0) m1[i] = std::numeric_limits<Scalar>::max() / Scalar(4);
+    if (second_half && i % 15 == 7) m1[i] = std::numeric_limits<Scalar>::min();
     Vector direction;
     for (std::size_t k = 0; k < dimension; ++k)
       direction[Eigen::Index(k)] = static_cast<Scalar>(component(random));
@@ -88,4 +96,51 @@ TEMPLATE_TEST_CASE("collide_batch gives collide's results bit for bit", "[runtim
     CHECK(v1 == before1);
     CHECK(v2 == before2);
   }
+}
+
+TEMPLATE_TEST_CASE("the batch's bit test of the mass range is kernels::within_plain_mass_range",
+                   "[runtime][batch]", float, double) {
+  using Scalar = TestType;
+  using limits = std::numeric_limits<Scalar>;
+  const Scalar low = billiards::kernels::plain_mass_low<Scalar>(),
+               high = billiards::kernels::plain_mass_high<Scalar>();
+  std::vector<Scalar> values = {Scalar(0),
+                                Scalar(-0.0),
+                                limits::denorm_min(),
+                                limits::min(),
+                                std::nextafter(low, Scalar(0)),
+                                low,
+                                std::nextafter(low, high),
+                                Scalar(1),
+                                std::nextafter(high, Scalar(0)),
+                                high,
+                                std::nextafter(high, limits::infinity()),
+                                limits::max(),
+                                limits::infinity(),
+                                limits::quiet_NaN(),
+                                -limits::quiet_NaN(),
+                                -low,
+                                -Scalar(1),
+                                -limits::infinity()};
+  std::mt19937_64 random(11);
+  using Bits = std::conditional_t<sizeof(Scalar) == 8, std::uint64_t, std::uint32_t>;
+  for (int i = 0; i < 2000; ++i) {
+    const Bits bits = static_cast<Bits>(random());
+    Scalar x;
+    std::memcpy(&x, &bits, sizeof x);
+    values.push_back(x);
+  }
+  for (const Scalar a : values) {
+    for (const Scalar b :
+         {Scalar(1), low, high, std::nextafter(high, limits::infinity()), limits::quiet_NaN()}) {
+      INFO("m1 = " << a << ", m2 = " << b);
+      CHECK(billiards::detail::within_plain_mass_range_bits(a, b) ==
+            billiards::kernels::within_plain_mass_range(a, b));
+      CHECK(billiards::detail::within_plain_mass_range_bits(b, a) ==
+            billiards::kernels::within_plain_mass_range(b, a));
+    }
+  }
+  // The range's ends as the documentation states them.
+  CHECK(low == std::ldexp(Scalar(1), sizeof(Scalar) == 8 ? -509 : -61));
+  CHECK(high == std::ldexp(Scalar(1), sizeof(Scalar) == 8 ? 509 : 61));
 }

@@ -91,13 +91,16 @@ void collide_batch(std::span<const Scalar> m1, const Components<Scalar, Dimensio
   // In blocks small enough to stay in the first-level cache: where every pair's masses lie in the plain
   // form's range, the plain kernel that elastic_normal_velocity_change itself takes there (two divisions
   // by one sum); otherwise elastic_normal_velocity_change (its ratio form for the pairs outside). The
-  // range test reads two of the 6D + 2 arrays, once more, from that cache.
-  constexpr std::size_t block = 256;
+  // range test (kernels::within_plain_mass_range on the masses' bits, detail::within_plain_mass_range_bits:
+  // a few integer operations a pair) reads two of the 6D + 2 arrays, which the pass then finds in that
+  // cache.
+  constexpr std::size_t block = 1024;
   for (std::size_t begin = 0; begin < count; begin += block) {
     const std::size_t end = count - begin < block ? count : begin + block;
     unsigned outside = 0;
-    for (std::size_t i = begin; i < end; ++i)
-      outside |= kernels::within_plain_mass_range(mass1[i], mass2[i]) ? 0u : 1u;
+    for (std::size_t i = begin; i < end; ++i) {
+      outside |= detail::within_plain_mass_range_bits(mass1[i], mass2[i]) ? 0u : 1u;
+    }
     if (outside == 0) {
       pass(begin, end, [](Scalar a, Scalar b, Scalar u, Scalar w) {
         return kernels::plain_elastic_normal_velocity_change(a, b, u, w);
