@@ -42,7 +42,7 @@ def per_item_ns(b):
 def single_call_table(runs):
     lines = ["| variant | double (ns) | against the paper's formula | float (ns) | against the paper's formula |",
              "|---|---:|---:|---:|---:|"]
-    names = [("generated", "generated `collide` (mass-ratio form with the small-mass select)"),
+    names = [("generated", "generated `collide` (the plain form in its mass range, else the mass-ratio form)"),
              ("paper_formula", "the paper's formula by hand, 2 m2/(m1 + m2)"),
              ("engine_formula", "an engine's form by hand, stored inverse masses: J = 2 s/(w1 + w2)"),
              ("eigen_expression", "a plain Eigen expression of the paper's formula"),
@@ -254,7 +254,8 @@ Bytes per pair: 17 scalars (11 read, 6 written). The plain formula's loop (`plai
 formula over the same arrays, the loop a user would write instead. The bandwidth ceiling
 (`bandwidth/*`) has the batch's own access pattern — it reads the same arrays and writes v1 and v2 in
 place — with a multiply-add per component; memcpy is no ceiling (below glibc's non-temporal threshold it
-uses cached stores). The division limit is the kernel's five divisions per pair alone, vectorised over
+uses cached stores). The division limit is the ratio form's five divisions per pair alone (the batch
+takes that form only for blocks with a mass outside the plain range), vectorised over
 arrays of the same length (`divisions/*`): where the data sit in cache it, not the bandwidth, bounds the
 batch.
 
