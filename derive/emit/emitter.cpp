@@ -185,18 +185,17 @@ std::string wrapped_terms(std::size_t column, const std::string& head, const std
   return out;
 }
 
-// A fast path's predicate as a documented constexpr function: true where every condition holds. Every
-// comparison is evaluated (`&`, not `&&`), so a loop of it has no branch and vectorises.
+// A fast path's predicate as a documented constexpr function: true where every condition holds.
 std::string predicate_function(const Kernel& kernel) {
   const FastPath& path = *kernel.fast_path;
   std::vector<std::string> parameters, conditions;
   for (const std::string& name : parameters_read(kernel, path.conditions))
     parameters.push_back("Scalar " + name);
-  for (const ex& condition : path.conditions) conditions.push_back("(" + print_condition(condition) + ")");
+  for (const ex& condition : path.conditions) conditions.push_back(print_condition(condition));
   return "\n" + doc_comment(path.brief) + "template <typename Scalar>\n" +
          signature("BILLIARDS_HOST_DEVICE constexpr bool " + path.predicate + "(", parameters,
                    ") noexcept {") +
-         "\n" + wrapped_terms(0, "  return ", conditions, " &", "         ", ";") + "\n}\n";
+         "\n" + wrapped_terms(0, "  return ", conditions, " &&", "         ", ";") + "\n}\n";
 }
 
 // Every kernel as a documented `template <typename Scalar>` function: its brief, the audit claims it
@@ -275,17 +274,15 @@ EmittedKernel emit_kernel(const Kernel& kernel) {
 
   EmittedKernel emitted;
   if (kernel.fast_path) {
-    // Where the conditions hold, the faster kernel of the same claim, before any step is computed. The
-    // conditions are written out with `&&`, which a single call evaluates fastest (predicted branches);
-    // the predicate function, for loops, evaluates every one.
-    std::vector<std::string> arguments, conditions;
-    for (const ex& parameter : kernel.parameters)
+    // Where the predicate holds, the faster kernel of the same claim, before any step is computed.
+    std::vector<std::string> arguments;
+    for (const ex& parameter : kernel.parameters) {
       arguments.push_back(GiNaC::ex_to<GiNaC::symbol>(parameter).get_name());
-    for (const ex& condition : kernel.fast_path->conditions) conditions.push_back(print_condition(condition));
-    const std::string call = "return " + kernel.fast_path->kernel + "(" + joined(arguments, ", ") + ");";
-    const std::string test = wrapped_terms(2, "if (", conditions, " &&", "      ", ")");
-    emitted.body.push_back(test.find('\n') == std::string::npos ? short_if(test, call)
-                                                                : test + "\n    " + call);
+    }
+    const std::string test = "if (" + kernel.fast_path->predicate + "(" +
+                             joined(parameters_read(kernel, kernel.fast_path->conditions), ", ") + "))";
+    emitted.body.push_back(
+        short_if(test, "return " + kernel.fast_path->kernel + "(" + joined(arguments, ", ") + ");"));
   }
   std::vector<bool> placed(hoisted.size(), false);
   const auto define = [&](const std::string& name, const ex& expression) {

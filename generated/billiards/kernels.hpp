@@ -5,7 +5,7 @@
 // derivation audit before it was printed, and names the claims it implements. They take masses
 // and dot products, so they serve vectors of any dimension and need no Eigen.
 //
-// Fingerprint: fnv1a64:49fd143042fb52c6 (of this header and the audit)
+// Fingerprint: fnv1a64:2257eebb3caf6580 (of this header and the audit)
 #pragma once
 
 #include <cmath>
@@ -119,8 +119,8 @@ BILLIARDS_HOST_DEVICE constexpr NormalVelocityChange<Scalar> plain_elastic_norma
 /// collision kernels take their plain one-division form (false for +∞ and NaN).
 template <typename Scalar>
 BILLIARDS_HOST_DEVICE constexpr bool within_plain_mass_range(Scalar m1, Scalar m2) noexcept {
-  return (plain_mass_low<Scalar>() <= m1) & (m1 <= plain_mass_high<Scalar>()) &
-         (plain_mass_low<Scalar>() <= m2) & (m2 <= plain_mass_high<Scalar>());
+  return plain_mass_low<Scalar>() <= m1 && m1 <= plain_mass_high<Scalar>() &&
+         plain_mass_low<Scalar>() <= m2 && m2 <= plain_mass_high<Scalar>();
 }
 
 /// The paper's perfectly elastic collision in normal components: the changes x1·n − v1·n and x2·n
@@ -137,9 +137,7 @@ BILLIARDS_HOST_DEVICE constexpr bool within_plain_mass_range(Scalar m1, Scalar m
 template <typename Scalar>
 BILLIARDS_HOST_DEVICE constexpr NormalVelocityChange<Scalar> elastic_normal_velocity_change(
     Scalar m1, Scalar m2, Scalar v1n, Scalar v2n) noexcept {
-  if (plain_mass_low<Scalar>() <= m1 && m1 <= plain_mass_high<Scalar>() && plain_mass_low<Scalar>() <= m2 &&
-      m2 <= plain_mass_high<Scalar>())
-    return plain_elastic_normal_velocity_change(m1, m2, v1n, v2n);
+  if (within_plain_mass_range(m1, m2)) return plain_elastic_normal_velocity_change(m1, m2, v1n, v2n);
   const Scalar relative_normal_speed = v2n - v1n;
   const Scalar first_mass_ratio = m1 / m2;
   const Scalar second_mass_ratio = m2 / m1;
@@ -194,9 +192,7 @@ BILLIARDS_HOST_DEVICE constexpr NormalVelocityChange<Scalar> plain_normal_veloci
 template <typename Scalar>
 BILLIARDS_HOST_DEVICE constexpr NormalVelocityChange<Scalar> normal_velocity_change(
     Scalar m1, Scalar m2, Scalar v1n, Scalar v2n, Scalar restitution) noexcept {
-  if (plain_mass_low<Scalar>() <= m1 && m1 <= plain_mass_high<Scalar>() && plain_mass_low<Scalar>() <= m2 &&
-      m2 <= plain_mass_high<Scalar>())
-    return plain_normal_velocity_change(m1, m2, v1n, v2n, restitution);
+  if (within_plain_mass_range(m1, m2)) return plain_normal_velocity_change(m1, m2, v1n, v2n, restitution);
   const Scalar relative_normal_speed = v2n - v1n;
   const Scalar first_mass_ratio = m1 / m2;
   const Scalar second_mass_ratio = m2 / m1;
@@ -252,8 +248,7 @@ BILLIARDS_HOST_DEVICE constexpr NormalVelocityChange<Scalar> plain_direction_vel
 template <typename Scalar>
 BILLIARDS_HOST_DEVICE constexpr NormalVelocityChange<Scalar> direction_velocity_change(
     Scalar m1, Scalar m2, Scalar v1d, Scalar v2d, Scalar dd, Scalar restitution) noexcept {
-  if (plain_mass_low<Scalar>() <= m1 && m1 <= plain_mass_high<Scalar>() && plain_mass_low<Scalar>() <= m2 &&
-      m2 <= plain_mass_high<Scalar>())
+  if (within_plain_mass_range(m1, m2))
     return plain_direction_velocity_change(m1, m2, v1d, v2d, dd, restitution);
   const Scalar direction_speed = (v2d - v1d) / dd;
   const Scalar first_mass_ratio = m1 / m2;
@@ -313,8 +308,7 @@ BILLIARDS_HOST_DEVICE constexpr NormalVelocityChange<Scalar> plain_approaching_d
 template <typename Scalar>
 BILLIARDS_HOST_DEVICE constexpr NormalVelocityChange<Scalar> approaching_direction_velocity_change(
     Scalar m1, Scalar m2, Scalar v1d, Scalar v2d, Scalar dd, Scalar restitution) noexcept {
-  if (plain_mass_low<Scalar>() <= m1 && m1 <= plain_mass_high<Scalar>() && plain_mass_low<Scalar>() <= m2 &&
-      m2 <= plain_mass_high<Scalar>())
+  if (within_plain_mass_range(m1, m2))
     return plain_approaching_direction_velocity_change(m1, m2, v1d, v2d, dd, restitution);
   const Scalar direction_speed = (v2d - v1d) / dd;
   const Scalar approach_speed = (direction_speed - absolute_value(direction_speed)) / Scalar(2);
