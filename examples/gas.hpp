@@ -1,0 +1,507 @@
+// A hard-sphere gas, event-driven, on billiards::runtime: N balls of diameter σ = 1 and mass m = 1 in
+// a periodic square (2-D) or cubic (3-D) box, started from a square or FCC lattice with random
+// velocities (total momentum zero, kT = 1), run collision by collision with no time step.
+//
+// Each ball keeps its position at its own last update (positions are brought forward only when a
+// ball takes part in an event). The box is divided into a grid of cells at least one diameter wide;
+// each ball's next event is the earlier of its next cell crossing and its earliest predicted
+// collision with a ball in its own or a neighbouring cell (billiards::time_of_impact on the nearest
+// periodic image), so a prediction costs the same whatever N. The balls' next events sit in one
+// indexed binary heap. A collision event records its partner's collision count: when the partner has
+// collided since, the event is stale and the ball is predicted again. Collisions are resolved by
+// billiards::collide_if_approaching on the nearest images.
+//
+// Measured over the span after the equilibration: the collision virial Σ r_ij·Δp_i (r_ij = r_i − r_j at
+// contact, Δp_i ball i's change of momentum), which gives Z = PV/(N kT) = 1 + Σ r_ij·Δp_i/(d N kT t),
+// and the collision count, which gives the mean free time τ = t N/(2 C) and, through the identity
+// Z − 1 = σ √(π m/kT)/(2 d τ), a second estimate of Z from the collision rate alone.
+#pragma once
+
+#include <billiards/collision.hpp>
+
+#include <Eigen/Core>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <limits>
+#include <numbers>
+#include <random>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace billiards_example::gas {
+
+/// What to run: the command line of billiards-gas.
+struct Options {
+  int dimension = 3;
+  std::size_t balls = 1000;
+  double packing_fraction = 0.3;
+  std::uint64_t events = 100000;      ///< collisions measured
+  std::uint64_t equilibrate = 10000;  ///< collisions run first, not measured
+  std::uint64_t seed = 1;
+  /// Stop (throw NoCollisions) after this many events in a row without a collision; 0: 10^6 + 100 N.
+  std::uint64_t max_events_without_collision = 0;
+};
+
+/// What a run measured (units σ = m = kT = 1).
+struct Result {
+  int dimension = 0;
+  std::size_t balls = 0;
+  double packing_fraction = 0;
+  std::uint64_t collisions = 0;  ///< over the measured span
+  std::uint64_t cell_crossings = 0;
+  double time = 0;  ///< the measured span, in simulation time
+  double compressibility_factor = 0, compressibility_factor_error = 0;  ///< Z from the virial
+  /// Z from the collision rate, 1 + σ √(π m/kT)/(2 d τ), and its error.
+  double compressibility_factor_from_collision_rate = 0, compressibility_factor_from_collision_rate_error = 0;
+  double mean_free_time = 0;
+  double temperature = 0;                 ///< kT at the end, Σ m v²/(d N)
+  double largest_temperature_change = 0;  ///< |kT − kT0|/kT0, the largest over the blocks' ends
+  double momentum = 0;                    ///< |Σ m v| at the end
+  double largest_overlap = 0;             ///< in diameters, over every collision
+  double events_per_second = 0;           ///< collisions per second of wall time over the measured span
+};
+
+/// The packing fraction of close packing: π/(2√3) for disks, π/(3√2) for spheres.
+inline double close_packing(int dimension) {
+  return dimension == 2 ? std::numbers::pi / (2 * std::sqrt(3.0)) : std::numbers::pi / (3 * std::sqrt(2.0));
+}
+
+/// The volume of one ball of diameter 1: π/4 (a disk's area) or π/6.
+inline double ball_volume(int dimension) {
+  return dimension == 2 ? std::numbers::pi / 4 : std::numbers::pi / 6;
+}
+
+/// Henderson's equation of state for hard disks, (1 + η²/8)/(1 − η)².
+inline double henderson(double eta) { return (1 + eta * eta / 8) / ((1 - eta) * (1 - eta)); }
+
+/// Carnahan and Starling's for hard spheres, (1 + η + η² − η³)/(1 − η)³.
+inline double carnahan_starling(double eta) {
+  return (1 + eta + eta * eta - eta * eta * eta) / std::pow(1 - eta, 3);
+}
+
+/// The equation of state of the dimension: Henderson's (2-D) or Carnahan–Starling (3-D).
+inline double equation_of_state(int dimension, double eta) {
+  return dimension == 2 ? henderson(eta) : carnahan_starling(eta);
+}
+
+/// The box's side for N balls at packing fraction η.
+inline double box_side(int dimension, std::size_t balls, double eta) {
+  return std::pow(static_cast<double>(balls) * ball_volume(dimension) / eta, 1.0 / dimension);
+}
+
+/// Lattice sites per side of the start: a square lattice of n² ≥ N sites, or an FCC lattice of 4 k³.
+inline std::size_t lattice_cells(int dimension, std::size_t balls) {
+  std::size_t n = 1;
+  while ((dimension == 2 ? n * n : 4 * n * n * n) < balls) ++n;
+  return n;
+}
+
+/// Throws std::invalid_argument, naming the argument, its value and what was expected, where the run
+/// cannot be made: a dimension other than 2 or 3, fewer than 2 balls, η not in (0, close packing), a
+/// box narrower than 3 diameters (too few balls for the cell grid's neighbours to be distinct), or a
+/// lattice start whose nearest neighbours would overlap.
+inline void validate(const Options& o) {
+  if (o.dimension != 2 && o.dimension != 3) {
+    throw std::invalid_argument("--dimension is " + std::to_string(o.dimension) + ", expected 2 or 3");
+  }
+  if (o.balls < 2) {
+    throw std::invalid_argument("--balls is " + std::to_string(o.balls) + ", expected at least 2");
+  }
+  if (o.balls > (std::size_t(1) << 31)) {
+    throw std::invalid_argument("--balls is " + std::to_string(o.balls) + ", expected at most 2^31");
+  }
+  const double packing = close_packing(o.dimension);
+  if (!(o.packing_fraction > 0 && o.packing_fraction < packing)) {
+    throw std::invalid_argument("--packing-fraction is " + std::to_string(o.packing_fraction) +
+                                ", expected more than 0 and less than close packing, " +
+                                std::to_string(packing) + " in " + std::to_string(o.dimension) + "-D");
+  }
+  const double side = box_side(o.dimension, o.balls, o.packing_fraction);
+  if (side < 3) {
+    const double needed =
+        std::ceil(std::pow(3.0, o.dimension) * o.packing_fraction / ball_volume(o.dimension));
+    throw std::invalid_argument("--balls " + std::to_string(o.balls) +
+                                " is too few for the box: at packing " + "fraction " +
+                                std::to_string(o.packing_fraction) + " its side is " + std::to_string(side) +
+                                " diameters, expected at least 3 (at least " +
+                                std::to_string(static_cast<long long>(needed)) + " balls)");
+  }
+  const double spacing = side / static_cast<double>(lattice_cells(o.dimension, o.balls));
+  const double nearest = o.dimension == 2 ? spacing : spacing / std::sqrt(2.0);
+  if (nearest < 1 + 1e-9) {
+    throw std::invalid_argument("--packing-fraction " + std::to_string(o.packing_fraction) +
+                                " is too dense for a " + (o.dimension == 2 ? "square" : "FCC") +
+                                " lattice start of " + std::to_string(o.balls) + " balls: neighbours " +
+                                std::to_string(nearest) + " diameters apart, expected at least 1");
+  }
+}
+
+/// Thrown when a run goes on without collisions (the balls' paths never meet).
+struct NoCollisions : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+/// A d-dimensional hard-sphere gas.
+template <int D>
+class Gas {
+ public:
+  using Vector = Eigen::Matrix<double, D, 1>;
+
+  explicit Gas(const Options& options) : options_(options) {
+    validate(options);
+    if (options.dimension != D) throw std::invalid_argument("Gas<D>: --dimension differs from D");
+    const std::size_t n = options.balls;
+    side_ = box_side(D, n, options.packing_fraction);
+    cells_per_side_ = static_cast<int>(std::floor(side_));  // cells at least one diameter wide
+    cell_width_ = side_ / cells_per_side_;
+    std::size_t cell_count = 1;
+    for (int k = 0; k < D; ++k) cell_count *= static_cast<std::size_t>(cells_per_side_);
+    head_.assign(cell_count, none);
+    position_.resize(n);
+    velocity_.resize(n);
+    updated_.assign(n, 0.0);
+    collisions_of_.assign(n, 0);
+    cell_of_.assign(n, 0);
+    coordinates_.resize(n);
+    next_.assign(n, none);
+    previous_.assign(n, none);
+    event_.resize(n);
+    place_on_lattice();
+    draw_velocities();
+    for (std::size_t i = 0; i < n; ++i) {
+      for (int k = 0; k < D; ++k) {
+        coordinates_[i][k] = std::min(cells_per_side_ - 1, static_cast<int>(position_[i][k] / cell_width_));
+      }
+      cell_of_[i] = cell_index(coordinates_[i]);
+      insert(i);
+    }
+    heap_.resize(n);
+    slot_.resize(n);
+    for (std::size_t i = 0; i < n; ++i) heap_[i] = static_cast<std::uint32_t>(i), slot_[i] = i;
+    for (std::size_t i = 0; i < n; ++i) predict(i);
+    initial_temperature_ = temperature();
+  }
+
+  /// Runs the equilibration and the measured span and returns what was measured.
+  Result run() {
+    advance(options_.equilibrate, false);
+    virial_ = 0;
+    const double start = now_;
+    const std::uint64_t crossings_before = crossings_;
+    constexpr int blocks = 10;
+    std::vector<double> block_virial, block_time;
+    std::vector<std::uint64_t> block_collisions;
+    const auto wall_start = std::chrono::steady_clock::now();
+    std::uint64_t done = 0;
+    for (int b = 0; b < blocks; ++b) {
+      const std::uint64_t target = options_.events * static_cast<std::uint64_t>(b + 1) / blocks;
+      const double block_start = now_;
+      virial_ = 0;
+      advance(target - done, true);
+      block_collisions.push_back(target - done);
+      done = target;
+      block_virial.push_back(virial_);
+      block_time.push_back(now_ - block_start);
+      largest_temperature_change_ =
+          std::max(largest_temperature_change_,
+                   std::fabs(temperature() - initial_temperature_) / initial_temperature_);
+    }
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
+    Result r;
+    r.dimension = D;
+    r.balls = options_.balls;
+    r.packing_fraction = options_.packing_fraction;
+    r.collisions = done;
+    r.cell_crossings = crossings_ - crossings_before;
+    r.time = now_ - start;
+    r.temperature = temperature();
+    r.largest_temperature_change = largest_temperature_change_;
+    r.momentum = momentum().norm();
+    r.largest_overlap = largest_overlap_;
+    r.events_per_second = seconds > 0 ? static_cast<double>(done) / seconds : 0;
+    const double n = static_cast<double>(options_.balls), kT = initial_temperature_;
+    double total_virial = 0;
+    for (double w : block_virial) total_virial += w;
+    r.compressibility_factor = r.time > 0 ? 1 + total_virial / (D * n * kT * r.time) : 1;
+    r.mean_free_time =
+        done > 0 ? r.time * n / (2 * static_cast<double>(done)) : std::numeric_limits<double>::infinity();
+    const auto from_rate = [&](double time, double collisions) {
+      const double tau = time * n / (2 * collisions);
+      return 1 + std::sqrt(std::numbers::pi / kT) / (2 * D * tau);
+    };
+    r.compressibility_factor_from_collision_rate =
+        done > 0 ? from_rate(r.time, static_cast<double>(done)) : 1;
+    // Errors from the scatter of the blocks' estimates: the standard error of their mean.
+    std::vector<double> z_blocks, rate_blocks;
+    for (int b = 0; b < blocks; ++b) {
+      if (block_time[static_cast<std::size_t>(b)] <= 0 || block_collisions[static_cast<std::size_t>(b)] == 0)
+        continue;
+      z_blocks.push_back(1 + block_virial[static_cast<std::size_t>(b)] /
+                                 (D * n * kT * block_time[static_cast<std::size_t>(b)]));
+      rate_blocks.push_back(from_rate(block_time[static_cast<std::size_t>(b)],
+                                      static_cast<double>(block_collisions[static_cast<std::size_t>(b)])));
+    }
+    r.compressibility_factor_error = standard_error(z_blocks);
+    r.compressibility_factor_from_collision_rate_error = standard_error(rate_blocks);
+    return r;
+  }
+
+  /// kT = Σ m v²/(d N), long double sums.
+  double temperature() const {
+    long double sum = 0;
+    for (const Vector& v : velocity_) sum += static_cast<long double>(v.squaredNorm());
+    return static_cast<double>(sum / (D * static_cast<long double>(velocity_.size())));
+  }
+  Vector momentum() const {
+    Eigen::Matrix<long double, D, 1> sum = Eigen::Matrix<long double, D, 1>::Zero();
+    for (const Vector& v : velocity_) sum += v.template cast<long double>();
+    return sum.template cast<double>();
+  }
+  double side() const { return side_; }
+  int cells_per_side() const { return cells_per_side_; }
+  /// Every ball brought to the current time (for checks): their positions in [0, side).
+  std::vector<Vector> positions_now() const {
+    std::vector<Vector> out(position_.size());
+    for (std::size_t i = 0; i < out.size(); ++i) {
+      out[i] = position_[i] + velocity_[i] * (now_ - updated_[i]);
+      for (int k = 0; k < D; ++k) out[i][k] -= side_ * std::floor(out[i][k] / side_);
+    }
+    return out;
+  }
+  /// The displacement b − a to the nearest periodic image.
+  Vector nearest_image(const Vector& a, const Vector& b) const {
+    Vector p = b - a;
+    for (int k = 0; k < D; ++k) {
+      if (p[k] > side_ / 2) p[k] -= side_;
+      if (p[k] < -side_ / 2) p[k] += side_;
+    }
+    return p;
+  }
+
+ private:
+  static constexpr std::uint32_t none = std::numeric_limits<std::uint32_t>::max();
+  using Cell = Eigen::Matrix<int, D, 1>;
+
+  struct Event {
+    double time = std::numeric_limits<double>::infinity();
+    std::uint32_t partner = none;  ///< none: a cell crossing
+    std::uint64_t partner_collisions = 0;
+    int axis = 0, step = 0;  ///< the crossing: along which axis, +1 or −1
+  };
+
+  static double standard_error(const std::vector<double>& x) {
+    if (x.size() < 2) return 0;
+    double mean = 0;
+    for (double v : x) mean += v;
+    mean /= static_cast<double>(x.size());
+    double squares = 0;
+    for (double v : x) squares += (v - mean) * (v - mean);
+    return std::sqrt(squares / static_cast<double>(x.size() - 1) / static_cast<double>(x.size()));
+  }
+
+  void place_on_lattice() {
+    const std::size_t n = lattice_cells(D, options_.balls);
+    const double spacing = side_ / static_cast<double>(n);
+    std::size_t placed = 0;
+    if constexpr (D == 2) {
+      for (std::size_t i = 0; i < n && placed < options_.balls; ++i) {
+        for (std::size_t j = 0; j < n && placed < options_.balls; ++j) {
+          position_[placed++] =
+              Vector((static_cast<double>(i) + 0.5) * spacing, (static_cast<double>(j) + 0.5) * spacing);
+        }
+      }
+    } else {
+      const double basis[4][3] = {
+          {0.25, 0.25, 0.25}, {0.75, 0.75, 0.25}, {0.75, 0.25, 0.75}, {0.25, 0.75, 0.75}};
+      for (std::size_t i = 0; i < n && placed < options_.balls; ++i) {
+        for (std::size_t j = 0; j < n && placed < options_.balls; ++j) {
+          for (std::size_t k = 0; k < n && placed < options_.balls; ++k) {
+            for (int b = 0; b < 4 && placed < options_.balls; ++b) {
+              position_[placed++] = Vector((static_cast<double>(i) + basis[b][0]) * spacing,
+                                           (static_cast<double>(j) + basis[b][1]) * spacing,
+                                           (static_cast<double>(k) + basis[b][2]) * spacing);
+            }
+          }
+        }
+      }
+    }
+  }
+
+  void draw_velocities() {
+    std::mt19937_64 random(options_.seed);
+    std::normal_distribution<double> gaussian;
+    for (Vector& v : velocity_) {
+      for (int k = 0; k < D; ++k) v[k] = gaussian(random);
+    }
+    const Vector mean = momentum() / static_cast<double>(velocity_.size());
+    for (Vector& v : velocity_) v -= mean;
+    const double scale = 1 / std::sqrt(temperature());
+    for (Vector& v : velocity_) v *= scale;
+  }
+
+  std::size_t cell_index(const Cell& c) const {
+    std::size_t index = 0;
+    for (int k = D - 1; k >= 0; --k)
+      index = index * static_cast<std::size_t>(cells_per_side_) + static_cast<std::size_t>(c[k]);
+    return index;
+  }
+  void insert(std::size_t i) {
+    const std::size_t c = cell_of_[i];
+    previous_[i] = none;
+    next_[i] = head_[c];
+    if (head_[c] != none) previous_[head_[c]] = static_cast<std::uint32_t>(i);
+    head_[c] = static_cast<std::uint32_t>(i);
+  }
+  void remove(std::size_t i) {
+    if (previous_[i] != none)
+      next_[previous_[i]] = next_[i];
+    else
+      head_[cell_of_[i]] = next_[i];
+    if (next_[i] != none) previous_[next_[i]] = previous_[i];
+  }
+
+  void bring_to_now(std::size_t i) {
+    position_[i] += velocity_[i] * (now_ - updated_[i]);
+    updated_[i] = now_;
+  }
+
+  // Ball i's next event: the earlier of its next cell crossing and its earliest collision with a ball
+  // of the 3^D cells around its own; then its place in the heap.
+  void predict(std::size_t i) {
+    bring_to_now(i);
+    Event best;
+    for (int k = 0; k < D; ++k) {
+      const double v = velocity_[i][k];
+      if (v == 0) continue;
+      const double bound = (coordinates_[i][k] + (v > 0 ? 1 : 0)) * cell_width_;
+      const double t = now_ + std::max(0.0, (bound - position_[i][k]) / v);
+      if (t < best.time) best = Event{t, none, 0, k, v > 0 ? 1 : -1};
+    }
+    Cell offset = Cell::Constant(-1);
+    for (;;) {
+      Cell c;
+      for (int k = 0; k < D; ++k) c[k] = (coordinates_[i][k] + offset[k] + cells_per_side_) % cells_per_side_;
+      for (std::uint32_t j = head_[cell_index(c)]; j != none; j = next_[j]) {
+        if (j == i) continue;
+        const Vector other = position_[j] + velocity_[j] * (now_ - updated_[j]);
+        const Vector p = nearest_image(position_[i], other);
+        // A pair moving apart never meets (time_of_impact would say +∞): skip the call.
+        if (p.dot(velocity_[j] - velocity_[i]) >= 0) continue;
+        const double t = billiards::time_of_impact(Vector::Zero().eval(), velocity_[i], p, velocity_[j], 1.0);
+        if (now_ + t < best.time) best = Event{now_ + t, j, collisions_of_[j], 0, 0};
+      }
+      int k = 0;
+      while (k < D && offset[k] == 1) offset[k++] = -1;
+      if (k == D) break;
+      ++offset[k];
+    }
+    event_[i] = best;
+    sift(slot_[i]);
+  }
+
+  // The heap of balls by their next event's time: restores its order around slot s.
+  bool earlier(std::size_t a, std::size_t b) const { return event_[heap_[a]].time < event_[heap_[b]].time; }
+  void swap_slots(std::size_t a, std::size_t b) {
+    std::swap(heap_[a], heap_[b]);
+    slot_[heap_[a]] = a;
+    slot_[heap_[b]] = b;
+  }
+  void sift(std::size_t s) {
+    while (s > 0 && earlier(s, (s - 1) / 2)) {
+      swap_slots(s, (s - 1) / 2);
+      s = (s - 1) / 2;
+    }
+    for (;;) {
+      const std::size_t left = 2 * s + 1, right = left + 1;
+      std::size_t smallest = s;
+      if (left < heap_.size() && earlier(left, smallest)) smallest = left;
+      if (right < heap_.size() && earlier(right, smallest)) smallest = right;
+      if (smallest == s) return;
+      swap_slots(s, smallest);
+      s = smallest;
+    }
+  }
+
+  // Runs events until `collisions` more collisions; accumulates the virial where `measure`.
+  void advance(std::uint64_t collisions, bool measure) {
+    const std::uint64_t quiet_limit = options_.max_events_without_collision != 0
+                                          ? options_.max_events_without_collision
+                                          : 1000000 + 100 * static_cast<std::uint64_t>(options_.balls);
+    std::uint64_t quiet = 0;
+    for (std::uint64_t done = 0; done < collisions;) {
+      const std::size_t i = heap_[0];
+      const Event e = event_[i];
+      if (!std::isfinite(e.time)) throw NoCollisions("no ball has a next event");
+      now_ = e.time;
+      if (e.partner == none) {  // a cell crossing
+        bring_to_now(i);
+        remove(i);
+        int& c = coordinates_[i][e.axis];
+        c += e.step;
+        if (c == cells_per_side_) c = 0, position_[i][e.axis] -= side_;
+        if (c < 0) c = cells_per_side_ - 1, position_[i][e.axis] += side_;
+        cell_of_[i] = cell_index(coordinates_[i]);
+        insert(i);
+        ++crossings_;
+        predict(i);
+      } else if (collisions_of_[e.partner] != e.partner_collisions) {
+        predict(i);  // stale: the partner has collided since
+      } else {
+        const std::size_t j = e.partner;
+        bring_to_now(i);
+        bring_to_now(j);
+        const Vector image = position_[i] + nearest_image(position_[i], position_[j]);
+        largest_overlap_ = std::max(largest_overlap_, 1 - (image - position_[i]).norm());
+        const auto [vi, vj] =
+            billiards::collide_if_approaching(1.0, position_[i], velocity_[i], 1.0, image, velocity_[j]);
+        const Vector impulse = vi - velocity_[i];
+        const bool changed = !(vi.array() == velocity_[i].array()).all();
+        velocity_[i] = vi;
+        velocity_[j] = vj;
+        ++collisions_of_[i];
+        ++collisions_of_[j];
+        if (changed) {
+          if (measure) virial_ += (position_[i] - image).dot(impulse);
+          ++done;
+          quiet = 0;
+        }
+        predict(i);
+        predict(j);
+      }
+      if (++quiet > quiet_limit) {
+        throw NoCollisions("stopped after " + std::to_string(quiet_limit) +
+                           " events in a row without a collision: the balls' paths do not meet");
+      }
+    }
+  }
+
+  Options options_;
+  double side_ = 0, cell_width_ = 0, now_ = 0;
+  int cells_per_side_ = 0;
+  std::vector<Vector> position_, velocity_;
+  std::vector<double> updated_;
+  std::vector<std::uint64_t> collisions_of_;
+  std::vector<std::size_t> cell_of_;
+  std::vector<Cell> coordinates_;
+  std::vector<std::uint32_t> head_, next_, previous_;
+  std::vector<Event> event_;
+  std::vector<std::uint32_t> heap_;
+  std::vector<std::size_t> slot_;
+  std::uint64_t crossings_ = 0;
+  double virial_ = 0, largest_overlap_ = 0, initial_temperature_ = 1, largest_temperature_change_ = 0;
+};
+
+/// Validates `options`, runs the gas of its dimension and returns what it measured.
+inline Result run(const Options& options) {
+  validate(options);
+  if (options.dimension == 2) return Gas<2>(options).run();
+  return Gas<3>(options).run();
+}
+
+}  // namespace billiards_example::gas
