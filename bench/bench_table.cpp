@@ -3,11 +3,14 @@
 // two balls it changed against every other ball: O(N) per event, naive all-pairs prediction (see the
 // README for why). Overlap is checked for the event's balls only here (O(N)); the example program
 // checks every pair by default.
+#include "gas.hpp"
 #include "table.hpp"
 
 #include <benchmark/benchmark.h>
 
 #include <cmath>
+#include <cstdlib>
+#include <string>
 
 namespace {
 
@@ -26,6 +29,46 @@ void table_events(benchmark::State& state) {
   state.SetItemsProcessed(state.iterations());
   state.counters["balls"] = static_cast<double>(balls);
 }
+
+// The hard-sphere gas of examples/gas.hpp (issue 15) at a fixed packing fraction as N grows: each
+// event predicts against the balls of the neighbouring cells only, so the cost per event should not
+// grow with N (the heap's log N and the caches aside). Equilibrated for max(N, 20000) collisions before
+// the timing; each iteration runs 1000 collisions.
+template <int D>
+void gas_events(benchmark::State& state) {
+  billiards_example::gas::Options options;
+  options.dimension = D;
+  options.balls = static_cast<std::size_t>(state.range(0));
+  options.packing_fraction = 0.3;
+  billiards_example::gas::Gas<D> gas(options);
+  gas.run_collisions(std::max<std::uint64_t>(options.balls, 20000));
+  constexpr std::uint64_t per_iteration = 1000;
+  for (auto _ : state) gas.run_collisions(per_iteration);
+  state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * per_iteration));
+  state.counters["balls"] = static_cast<double>(options.balls);
+}
+
+// The largest gas benchmarked: BILLIARDS_BENCH_MAX_BALLS (default 10^6; CI's smoke run caps it).
+std::int64_t max_balls() {
+  const char* text = std::getenv("BILLIARDS_BENCH_MAX_BALLS");
+  return text != nullptr ? std::max<std::int64_t>(1024, std::atoll(text)) : 1000000;
+}
+
+const bool gas_registered = [] {
+  for (const std::int64_t balls :
+       {std::int64_t(1024), std::int64_t(10000), std::int64_t(100000), std::int64_t(1000000)}) {
+    if (balls > max_balls()) break;
+    benchmark::RegisterBenchmark("gas/events/3d", gas_events<3>)
+        ->Arg(balls)
+        ->UseRealTime()
+        ->Unit(benchmark::kMicrosecond);
+    benchmark::RegisterBenchmark("gas/events/2d", gas_events<2>)
+        ->Arg(balls)
+        ->UseRealTime()
+        ->Unit(benchmark::kMicrosecond);
+  }
+  return true;
+}();
 
 }  // namespace
 

@@ -252,6 +252,9 @@ class Gas {
     return r;
   }
 
+  /// Runs `count` more collisions without measuring them (the benchmark's step).
+  void run_collisions(std::uint64_t count) { advance(count, false); }
+
   /// kT = Σ m v²/(d N), long double sums.
   double temperature() const {
     long double sum = 0;
