@@ -431,6 +431,42 @@ class Gas {
     }
   }
 
+  // Renumbers the balls in the order of their cells, so that balls near in space are near in memory
+  // (a gas mixes them, and beyond the caches every prediction would otherwise miss them). Nothing
+  // physical changes: every ball is brought to now on its own line, and the events keep their times,
+  // with partners renumbered (their collision counts move with them); the heap is rebuilt in time order.
+  void reorder() {
+    const std::size_t n = position_.size();
+    for (std::size_t i = 0; i < n; ++i) bring_to_now(i);
+    std::vector<std::uint32_t> order;
+    order.reserve(n);
+    for (std::size_t c = 0; c < head_.size(); ++c) {
+      for (std::uint32_t i = head_[c]; i != none; i = next_[i]) order.push_back(i);
+    }
+    std::vector<std::uint32_t> renumbered(n);
+    for (std::size_t k = 0; k < n; ++k) renumbered[order[k]] = static_cast<std::uint32_t>(k);
+    const auto permute = [&](auto& values) {
+      auto copy = values;
+      for (std::size_t k = 0; k < n; ++k) values[k] = copy[order[k]];
+    };
+    permute(position_);
+    permute(velocity_);
+    permute(updated_);
+    permute(collisions_of_);
+    permute(cell_of_);
+    permute(coordinates_);
+    permute(event_);
+    for (Event& e : event_) {
+      if (e.partner != none) e.partner = renumbered[e.partner];
+    }
+    std::fill(head_.begin(), head_.end(), none);
+    for (std::size_t k = n; k-- > 0;) insert(k);
+    for (std::size_t k = 0; k < n; ++k) heap_[k] = static_cast<std::uint32_t>(k);
+    std::sort(heap_.begin(), heap_.end(),
+              [&](std::uint32_t a, std::uint32_t b) { return event_[a].time < event_[b].time; });
+    for (std::size_t k = 0; k < n; ++k) slot_[heap_[k]] = k;  // a sorted array is a heap
+  }
+
   // Runs events until `collisions` more collisions; accumulates the virial where `measure`.
   void advance(std::uint64_t collisions, bool measure) {
     const std::uint64_t quiet_limit = options_.max_events_without_collision != 0
@@ -469,13 +505,18 @@ class Gas {
         velocity_[j] = vj;
         ++collisions_of_[i];
         ++collisions_of_[j];
+        predict(i);
+        predict(j);
         if (changed) {
           if (measure) virial_ += (position_[i] - image).dot(impulse);
           ++done;
           quiet = 0;
+          // Every N collisions, for large gases: the balls renumbered by cell.
+          if (position_.size() >= reorder_from && ++since_reorder_ >= position_.size()) {
+            since_reorder_ = 0;
+            reorder();
+          }
         }
-        predict(i);
-        predict(j);
       }
       if (++quiet > quiet_limit) {
         throw NoCollisions("stopped after " + std::to_string(quiet_limit) +
@@ -496,7 +537,8 @@ class Gas {
   std::vector<Event> event_;
   std::vector<std::uint32_t> heap_;
   std::vector<std::size_t> slot_;
-  std::uint64_t crossings_ = 0;
+  std::uint64_t crossings_ = 0, since_reorder_ = 0;
+  static constexpr std::size_t reorder_from = 4096;  ///< fewer balls stay in the caches anyway
   double virial_ = 0, largest_overlap_ = 0, initial_temperature_ = 1, largest_temperature_change_ = 0;
 };
 
