@@ -182,7 +182,8 @@ class Gas {
     }
     heap_.resize(n);
     slot_.resize(n);
-    for (std::size_t i = 0; i < n; ++i) heap_[i] = static_cast<std::uint32_t>(i), slot_[i] = i;
+    for (std::size_t i = 0; i < n; ++i)
+      heap_[i] = {event_[i].time, static_cast<std::uint32_t>(i)}, slot_[i] = i;
     for (std::size_t i = 0; i < n; ++i) predict(i);
     initial_temperature_ = temperature();
   }
@@ -405,15 +406,17 @@ class Gas {
       ++offset[k];
     }
     event_[i] = best;
+    heap_[slot_[i]].time = best.time;
     sift(slot_[i]);
   }
 
   // The heap of balls by their next event's time: restores its order around slot s.
-  bool earlier(std::size_t a, std::size_t b) const { return event_[heap_[a]].time < event_[heap_[b]].time; }
+  // Each entry carries its event's time, so that a sift reads one array, not two.
+  bool earlier(std::size_t a, std::size_t b) const { return heap_[a].time < heap_[b].time; }
   void swap_slots(std::size_t a, std::size_t b) {
     std::swap(heap_[a], heap_[b]);
-    slot_[heap_[a]] = a;
-    slot_[heap_[b]] = b;
+    slot_[heap_[a].ball] = a;
+    slot_[heap_[b].ball] = b;
   }
   void sift(std::size_t s) {
     while (s > 0 && earlier(s, (s - 1) / 2)) {
@@ -461,10 +464,9 @@ class Gas {
     }
     std::fill(head_.begin(), head_.end(), none);
     for (std::size_t k = n; k-- > 0;) insert(k);
-    for (std::size_t k = 0; k < n; ++k) heap_[k] = static_cast<std::uint32_t>(k);
-    std::sort(heap_.begin(), heap_.end(),
-              [&](std::uint32_t a, std::uint32_t b) { return event_[a].time < event_[b].time; });
-    for (std::size_t k = 0; k < n; ++k) slot_[heap_[k]] = k;  // a sorted array is a heap
+    for (std::size_t k = 0; k < n; ++k) heap_[k] = {event_[k].time, static_cast<std::uint32_t>(k)};
+    std::sort(heap_.begin(), heap_.end(), [](const Entry& a, const Entry& b) { return a.time < b.time; });
+    for (std::size_t k = 0; k < n; ++k) slot_[heap_[k].ball] = k;  // a sorted array is a heap
   }
 
   // Runs events until `collisions` more collisions; accumulates the virial where `measure`.
@@ -474,7 +476,7 @@ class Gas {
                                           : 1000000 + 100 * static_cast<std::uint64_t>(options_.balls);
     std::uint64_t quiet = 0;
     for (std::uint64_t done = 0; done < collisions;) {
-      const std::size_t i = heap_[0];
+      const std::size_t i = heap_[0].ball;
       const Event e = event_[i];
       if (!std::isfinite(e.time)) throw NoCollisions("no ball has a next event");
       now_ = e.time;
@@ -535,7 +537,11 @@ class Gas {
   std::vector<Cell> coordinates_;
   std::vector<std::uint32_t> head_, next_, previous_;
   std::vector<Event> event_;
-  std::vector<std::uint32_t> heap_;
+  struct Entry {
+    double time;
+    std::uint32_t ball;
+  };
+  std::vector<Entry> heap_;
   std::vector<std::size_t> slot_;
   std::uint64_t crossings_ = 0, since_reorder_ = 0;
   static constexpr std::size_t reorder_from = 4096;  ///< fewer balls stay in the caches anyway
