@@ -180,27 +180,6 @@ template <typename Derived>
   return times_power_of_two(d, -largest_component_exponent(d));
 }
 
-/// A direction for the direction kernels and its d·d: d itself where d·d lies in [2^−(E/2), 2^(E/2)]
-/// (E the type's largest exponent: |d| from about 2^−256 to 2^256 in double), else
-/// power_of_two_scaled(d). Both give the same bits wherever the scaled products stay normal: scaling
-/// by a power of two commutes with rounding, and the kernels' change times the direction cancels it
-/// (`beyond.any_normal.scale_invariant`); the test skips the exponent search for every usual d.
-template <typename Derived>
-struct ScaledDirection {
-  PlainVector<Derived> direction;
-  typename Derived::Scalar squared_norm;
-};
-template <typename Derived>
-[[nodiscard]] ScaledDirection<Derived> moderately_scaled(const Eigen::MatrixBase<Derived>& d) noexcept {
-  using Scalar = typename Derived::Scalar;
-  constexpr int half = std::numeric_limits<Scalar>::max_exponent / 2;
-  const PlainVector<Derived> unscaled = d;
-  const Scalar dd = dot(unscaled, unscaled);
-  if (dd >= power_of_two<Scalar>(-half) && dd <= power_of_two<Scalar>(half)) return {unscaled, dd};
-  const PlainVector<Derived> scaled = power_of_two_scaled(d);
-  return {scaled, dot(scaled, scaled)};
-}
-
 /// |v| from v scaled by the power of two of its largest component (exact) and scaled back: the squares
 /// neither overflow nor underflow, as with Eigen's stableNorm(), at the cost of norm() and no libm call
 /// where the exponent is in the normal range.
@@ -336,7 +315,7 @@ template <typename D1, typename D2, typename DN>
 /// alike): the same as collide() with \f$n = d/|d|\f$, without a square root, and unchanged when
 /// \f$d\f$ is scaled. Audit claims `beyond.any_normal.direction_form`,
 /// `beyond.any_normal.scale_invariant`; kernel kernels::direction_velocity_change.
-/// d is first scaled by a power of two (exact) where |d| is extreme, so its length never matters.
+/// d is first scaled by a power of two (exact), so its length never matters.
 /// Preconditions (not checked): \f$d \ne 0\f$ and finite (a zero direction gives NaN), masses as
 /// for collide().
 template <typename D1, typename D2, typename DD>
@@ -347,9 +326,10 @@ template <typename D1, typename D2, typename DD>
   detail::require_vectors<D1, D2, DD>();
   detail::assert_masses(m1, m2);
   detail::assert_restitution(restitution);
-  const auto [direction, dd] = detail::moderately_scaled(d);
-  const auto change = kernels::direction_velocity_change(m1, m2, detail::dot(v1, direction),
-                                                         detail::dot(v2, direction), dd, restitution);
+  const detail::PlainVector<D1> direction = detail::power_of_two_scaled(d);
+  const auto change =
+      kernels::direction_velocity_change(m1, m2, detail::dot(v1, direction), detail::dot(v2, direction),
+                                         detail::dot(direction, direction), restitution);
   return {detail::plus_multiple(v1, change.first, direction),
           detail::plus_multiple(v2, change.second, direction)};
 }
@@ -371,9 +351,9 @@ template <typename DP1, typename D1, typename DP2, typename D2>
   detail::require_vectors<D1, D2, DP1, DP2>();
   detail::assert_masses(m1, m2);
   detail::assert_restitution(restitution);
-  const auto [d, dd] = detail::moderately_scaled(p2 - p1);
-  const auto change = kernels::approaching_direction_velocity_change(m1, m2, detail::dot(v1, d),
-                                                                     detail::dot(v2, d), dd, restitution);
+  const detail::PlainVector<D1> d = detail::power_of_two_scaled(p2 - p1);
+  const auto change = kernels::approaching_direction_velocity_change(
+      m1, m2, detail::dot(v1, d), detail::dot(v2, d), detail::dot(d, d), restitution);
   return {detail::plus_multiple(v1, change.first, d), detail::plus_multiple(v2, change.second, d)};
 }
 
