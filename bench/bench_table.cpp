@@ -10,7 +10,6 @@
 
 #include <cmath>
 #include <cstdlib>
-#include <string>
 
 namespace {
 

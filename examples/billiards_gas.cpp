@@ -8,13 +8,13 @@
 // Exit status: 0 on success; 2 on a bad command line (one line on stderr naming the argument, its value
 // and what was expected); 3 when the JSON file cannot be written; 4 when the run stops because the
 // balls' paths do not meet.
+#include "cli_checks.hpp"
 #include "gas.hpp"
 
 #include <billiards_support/atomic_file.hpp>
 
 #include <CLI/CLI.hpp>
 
-#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -67,37 +67,12 @@ int main(int argc, char** argv) {
       "billiards-gas"};
   Options options;
   std::string json_file;
-  // Counts are checked as text before conversion: "-1" must not wrap to 2^64 − 1.
-  const auto count = [](std::uint64_t smallest) {
-    return CLI::Validator(
-        [smallest](std::string& text) -> std::string {
-          std::uint64_t value = 0;
-          const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
-          const std::string quoted = "'" + text.substr(0, 40) + (text.size() > 40 ? "…'" : "'");
-          if (text.empty() || end != text.data() + text.size() || error == std::errc::invalid_argument) {
-            return quoted + " is not a whole number, expected one of at least " + std::to_string(smallest);
-          }
-          if (error == std::errc::result_out_of_range) return quoted + " is larger than 2^64 - 1";
-          if (value < smallest) return quoted + " is less than " + std::to_string(smallest);
-          return {};
-        },
-        "COUNT");
-  };
-  const CLI::Validator fraction(
-      [](std::string& text) -> std::string {
-        char* end = nullptr;
-        const double value = std::strtod(text.c_str(), &end);
-        if (text.empty() || end != text.c_str() + text.size() || !std::isfinite(value)) {
-          return "'" + text.substr(0, 40) + (text.size() > 40 ? "…'" : "'") + " is not a finite number";
-        }
-        return {};
-      },
-      "NUMBER");
+  const auto count = billiards_example::count_at_least;
   app.add_option("--dimension", options.dimension, "2 (disks) or 3 (spheres); default 3")->check(count(0));
   app.add_option("--balls", options.balls, "Number of balls N (default 1000)")->check(count(0));
   app.add_option("--packing-fraction", options.packing_fraction,
                  "η, the fraction of the volume the balls fill: π ρ σ²/4 (2-D), π ρ σ³/6 (3-D); default 0.3")
-      ->check(fraction);
+      ->check(billiards_example::finite_number(true));
   app.add_option("--events", options.events, "Collisions measured (default 100000)")->check(count(1));
   app.add_option("--equilibrate", options.equilibrate, "Collisions run first, not measured (default 10000)")
       ->check(count(0));

@@ -10,12 +10,12 @@
 // 2 on a bad command line or setup (one line on stderr naming what and why); 3 when the SVG cannot be
 // written; 4 when the run stops because no ball–ball collision can happen (fewer than two balls, every
 // ball at rest, or K events in a row without one).
+#include "cli_checks.hpp"
 #include "table.hpp"
 #include "table_io.hpp"
 
 #include <CLI/CLI.hpp>
 
-#include <charconv>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -40,42 +40,13 @@ int main(int argc, char** argv) {
   std::optional<double> max_drift;
   std::uint64_t svg_events = 120;
   std::uint64_t max_quiet_events = 1000000;
-  // Counts are checked as text before conversion: "-1" must not wrap to 2^64 − 1.
-  const auto count = [](std::uint64_t smallest) {
-    return CLI::Validator(
-        [smallest](std::string& text) -> std::string {
-          std::uint64_t value = 0;
-          const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
-          const std::string quoted = "'" + text.substr(0, 40) + (text.size() > 40 ? "…'" : "'");
-          if (text.empty() || end != text.data() + text.size() || error == std::errc::invalid_argument) {
-            return quoted + " is not a whole number, expected one of at least " + std::to_string(smallest);
-          }
-          if (error == std::errc::result_out_of_range) return quoted + " is larger than 2^64 - 1";
-          if (value < smallest) return quoted + " is less than " + std::to_string(smallest);
-          return {};
-        },
-        "COUNT");
-  };
-  const CLI::Validator whole_number = count(0), positive_count = count(1);
-  // A finite number, positive or at least zero: NaN and infinities are rejected by name.
-  const auto number = [](bool positive) {
-    return CLI::Validator(
-        [positive](std::string& text) -> std::string {
-          char* end = nullptr;
-          const double value = std::strtod(text.c_str(), &end);
-          const bool in_range = positive ? value > 0 : value >= 0;
-          if (text.empty() || end != text.c_str() + text.size() || !std::isfinite(value) || !in_range) {
-            return "'" + text.substr(0, 40) + (text.size() > 40 ? "…'" : "'") + " is not a " +
-                   (positive ? "positive" : "non-negative") + " finite number";
-          }
-          return {};
-        },
-        positive ? "NUMBER > 0" : "NUMBER >= 0");
-  };
+  const CLI::Validator whole_number = count_at_least(0), positive_count = count_at_least(1);
   app.add_option("--balls", balls, "Number of balls placed at random (default 16)")->check(positive_count);
-  app.add_option("--width", table.width, "Table width in metres (default 2.54)")->check(number(true));
-  app.add_option("--height", table.height, "Table height in metres (default 1.27)")->check(number(true));
-  app.add_option("--radius", table.radius, "Ball radius in metres (default 0.028575)")->check(number(true));
+  app.add_option("--width", table.width, "Table width in metres (default 2.54)")->check(finite_number(true));
+  app.add_option("--height", table.height, "Table height in metres (default 1.27)")
+      ->check(finite_number(true));
+  app.add_option("--radius", table.radius, "Ball radius in metres (default 0.028575)")
+      ->check(finite_number(true));
   app.add_option("--seed", seed, "Seed of the random placement (default 1)")->check(whole_number);
   app.add_option("--collisions", collisions, "Ball-ball collisions to run (default 1000000)")
       ->check(whole_number);
@@ -87,7 +58,7 @@ int main(int argc, char** argv) {
   app.add_option("--svg-events", svg_events, "Events drawn in the SVG (default 120)")->check(positive_count);
   app.add_option("--max-drift", max_drift,
                  "Exit 1 if the relative drift of the kinetic energy exceeds this (or is NaN)")
-      ->check(number(false));
+      ->check(finite_number(false));
   app.add_option(
          "--max-events-without-collision", max_quiet_events,
          "Stop (exit 4) after this many events in a row without a ball-ball collision (default 1000000)")

@@ -1,6 +1,6 @@
 // billiards::collide_batch: many collisions at once over structure-of-arrays spans, written so that
-// the compiler vectorises the loop (a straight-line body: the generated plain kernel and a select of its
-// change by the generated range test; the rare pairs outside that range in a second, scalar pass).
+// the compiler vectorises the loop (a straight-line body: per block of pairs, the generated plain kernel
+// where every mass lies in its range, else the generated full kernel, whose one branch is a select).
 #pragma once
 
 #include <billiards/detail/arithmetic.hpp>
@@ -22,12 +22,11 @@ using Components = std::array<std::span<Scalar>, Dimension>;
 ///
 /// Pair i has masses m1[i], m2[i], velocities (v1[0][i], …, v1[D−1][i]) and likewise v2, and unit
 /// contact normal (n[0][i], …); afterwards v1 and v2 hold x1 and x2 exactly as billiards::collide
-/// would compute them under the same compiler flags, bit for bit (the same generated kernels:
-/// kernels::plain_elastic_normal_velocity_change, in one vectorised pass, for the pairs whose masses
-/// kernels::within_plain_mass_range accepts, as kernels::elastic_normal_velocity_change takes it there,
-/// then that kernel itself for the others in a second pass, run only when there are any; and the same
-/// dot product and update, detail/arithmetic.hpp; tested on random data with and without
-/// -march=native). A mass may be +∞. No allocation. The arrays must not overlap one another.
+/// would compute them under the same compiler flags, bit for bit (the same generated kernels: for each
+/// block of 1024 pairs whose masses kernels::within_plain_mass_range all accepts,
+/// kernels::plain_elastic_normal_velocity_change, as kernels::elastic_normal_velocity_change takes it
+/// there; for any other block that kernel itself; both vectorised; and the same dot product and
+/// update, detail/arithmetic.hpp; tested on random data with and without -march=native). A mass may be +∞. No allocation. The arrays must not overlap one another.
 /// \throws std::invalid_argument when a span's length differs from m1's (checked once, before any
 ///         update, so nothing is half-updated).
 #if defined(__clang__)

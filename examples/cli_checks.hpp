@@ -1,0 +1,48 @@
+// The examples' command-line checks, one definition for every program: counts and numbers are checked
+// as text before conversion ("-1" must not wrap to 2^64 − 1; NaN and infinities are rejected by name).
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+#include <charconv>
+#include <cmath>
+#include <cstdint>
+#include <cstdlib>
+#include <string>
+
+namespace billiards_example {
+
+/// A whole number of at least `smallest`, at most 2^64 − 1.
+inline CLI::Validator count_at_least(std::uint64_t smallest) {
+  return CLI::Validator(
+      [smallest](std::string& text) -> std::string {
+        std::uint64_t value = 0;
+        const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+        const std::string quoted = "'" + text.substr(0, 40) + (text.size() > 40 ? "…'" : "'");
+        if (text.empty() || end != text.data() + text.size() || error == std::errc::invalid_argument) {
+          return quoted + " is not a whole number, expected one of at least " + std::to_string(smallest);
+        }
+        if (error == std::errc::result_out_of_range) return quoted + " is larger than 2^64 - 1";
+        if (value < smallest) return quoted + " is less than " + std::to_string(smallest);
+        return {};
+      },
+      "COUNT");
+}
+
+/// A finite number, positive (`positive`) or at least zero.
+inline CLI::Validator finite_number(bool positive) {
+  return CLI::Validator(
+      [positive](std::string& text) -> std::string {
+        char* end = nullptr;
+        const double value = std::strtod(text.c_str(), &end);
+        const bool in_range = positive ? value > 0 : value >= 0;
+        if (text.empty() || end != text.c_str() + text.size() || !std::isfinite(value) || !in_range) {
+          return "'" + text.substr(0, 40) + (text.size() > 40 ? "…'" : "'") + " is not a " +
+                 (positive ? "positive" : "non-negative") + " finite number";
+        }
+        return {};
+      },
+      positive ? "NUMBER > 0" : "NUMBER >= 0");
+}
+
+}  // namespace billiards_example
