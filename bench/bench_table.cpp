@@ -31,7 +31,7 @@ void table_events(benchmark::State& state) {
 
 // The hard-sphere gas of examples/gas.hpp (issue 15) at a fixed packing fraction as N grows: each
 // event predicts against the balls of the neighbouring cells only, so the cost per event should not
-// grow with N (the heap's log N and the caches aside). Equilibrated for max(N, 20000) collisions before
+// grow with N (the caches aside). Equilibrated for max(N, 20000) collisions before
 // the timing; each iteration runs 1000 collisions.
 template <int D>
 void gas_events(benchmark::State& state) {

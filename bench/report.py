@@ -312,8 +312,8 @@ grows as O(N): the last column should grow about as the number of balls.
 ## The hard-sphere gas (examples/gas.hpp), events per second as the balls grow
 
 At packing fraction 0.3, equilibrated for max(N, 20 000) collisions first; each event predicts only
-against the balls of the neighbouring cells, so the cost per event should not grow with N (the heap's
-log N and the caches aside). One core; the all-pairs table beside it where it ran the same N.
+against the balls of the neighbouring cells and its next event is filed in a calendar queue (O(1)), so
+the cost per event should not grow with N (the caches aside). One core; the all-pairs table beside it where it ran the same N.
 
 {gas_events(runs)}
 """

@@ -6,16 +6,18 @@
 // ball takes part in an event). The box is divided into a grid of cells at least one diameter wide;
 // each ball's next event is the earlier of its next cell crossing and its earliest predicted
 // collision with a ball in its own or a neighbouring cell (billiards::time_of_impact on the nearest
-// periodic image), so a prediction costs the same whatever N. The balls' next events sit in one
-// indexed binary heap. A collision event records its partner's collision count: when the partner has
-// collided since, the event is stale and the ball is predicted again. Collisions are resolved by
-// billiards::collide_if_approaching on the nearest images.
+// periodic image), so a prediction costs the same whatever N. The balls' next events sit in an event
+// calendar (event_calendar.hpp: a calendar queue, O(1) a step on average). A collision event records its
+// partner's collision count: when the partner has collided since, the event is stale and the ball is
+// predicted again. Collisions are resolved by billiards::collide_if_approaching on the nearest images.
 //
 // Measured over the span after the equilibration: the collision virial Σ r_ij·Δp_i (r_ij = r_i − r_j at
 // contact, Δp_i ball i's change of momentum), which gives Z = PV/(N kT) = 1 + Σ r_ij·Δp_i/(d N kT t),
 // and the collision count, which gives the mean free time τ = t N/(2 C) and, through the identity
 // Z − 1 = σ √(π m/kT)/(2 d τ), a second estimate of Z from the collision rate alone.
 #pragma once
+
+#include "event_calendar.hpp"
 
 #include <billiards/collision.hpp>
 
@@ -161,30 +163,23 @@ class Gas {
     cell_width_ = side_ / cells_per_side_;
     std::size_t cell_count = 1;
     for (int k = 0; k < D; ++k) cell_count *= static_cast<std::size_t>(cells_per_side_);
+    if (cell_count >= none) throw std::invalid_argument("Gas<D>: more cells than 32-bit numbers");
     head_.assign(cell_count, none);
-    position_.resize(n);
-    velocity_.resize(n);
-    updated_.assign(n, 0.0);
-    collisions_of_.assign(n, 0);
-    cell_of_.assign(n, 0);
-    coordinates_.resize(n);
-    next_.assign(n, none);
-    previous_.assign(n, none);
-    event_.resize(n);
+    ball_.resize(n);
+    own_.resize(n);
     place_on_lattice();
     draw_velocities();
     for (std::size_t i = 0; i < n; ++i) {
       for (int k = 0; k < D; ++k) {
-        coordinates_[i][k] = std::min(cells_per_side_ - 1, static_cast<int>(position_[i][k] / cell_width_));
+        own_[i].coordinates[k] =
+            std::min(cells_per_side_ - 1, static_cast<int>(ball_[i].position[k] / cell_width_));
       }
-      cell_of_[i] = cell_index(coordinates_[i]);
+      own_[i].cell = static_cast<std::uint32_t>(cell_index(own_[i].coordinates));
       insert(i);
     }
-    heap_.resize(n);
-    slot_.resize(n);
-    for (std::size_t i = 0; i < n; ++i)
-      heap_[i] = {event_[i].time, static_cast<std::uint32_t>(i)}, slot_[i] = i;
+    calendar_.reset(std::vector<double>(n, std::numeric_limits<double>::infinity()), now_);
     for (std::size_t i = 0; i < n; ++i) predict(i);
+    refile();
     initial_temperature_ = temperature();
   }
 
@@ -259,21 +254,21 @@ class Gas {
   /// kT = Σ m v²/(d N), long double sums.
   double temperature() const {
     long double sum = 0;
-    for (const Vector& v : velocity_) sum += static_cast<long double>(v.squaredNorm());
-    return static_cast<double>(sum / (D * static_cast<long double>(velocity_.size())));
+    for (const Ball& b : ball_) sum += static_cast<long double>(b.velocity.squaredNorm());
+    return static_cast<double>(sum / (D * static_cast<long double>(ball_.size())));
   }
   Vector momentum() const {
     Eigen::Matrix<long double, D, 1> sum = Eigen::Matrix<long double, D, 1>::Zero();
-    for (const Vector& v : velocity_) sum += v.template cast<long double>();
+    for (const Ball& b : ball_) sum += b.velocity.template cast<long double>();
     return sum.template cast<double>();
   }
   double side() const { return side_; }
   int cells_per_side() const { return cells_per_side_; }
   /// Every ball brought to the current time (for checks): their positions in [0, side).
   std::vector<Vector> positions_now() const {
-    std::vector<Vector> out(position_.size());
+    std::vector<Vector> out(ball_.size());
     for (std::size_t i = 0; i < out.size(); ++i) {
-      out[i] = position_[i] + velocity_[i] * (now_ - updated_[i]);
+      out[i] = ball_[i].position + ball_[i].velocity * (now_ - ball_[i].updated);
       for (int k = 0; k < D; ++k) out[i][k] -= side_ * std::floor(out[i][k] / side_);
     }
     return out;
@@ -316,7 +311,7 @@ class Gas {
     if constexpr (D == 2) {
       for (std::size_t i = 0; i < n && placed < options_.balls; ++i) {
         for (std::size_t j = 0; j < n && placed < options_.balls; ++j) {
-          position_[placed++] =
+          ball_[placed++].position =
               Vector((static_cast<double>(i) + 0.5) * spacing, (static_cast<double>(j) + 0.5) * spacing);
         }
       }
@@ -327,9 +322,9 @@ class Gas {
         for (std::size_t j = 0; j < n && placed < options_.balls; ++j) {
           for (std::size_t k = 0; k < n && placed < options_.balls; ++k) {
             for (int b = 0; b < 4 && placed < options_.balls; ++b) {
-              position_[placed++] = Vector((static_cast<double>(i) + basis[b][0]) * spacing,
-                                           (static_cast<double>(j) + basis[b][1]) * spacing,
-                                           (static_cast<double>(k) + basis[b][2]) * spacing);
+              ball_[placed++].position = Vector((static_cast<double>(i) + basis[b][0]) * spacing,
+                                                (static_cast<double>(j) + basis[b][1]) * spacing,
+                                                (static_cast<double>(k) + basis[b][2]) * spacing);
             }
           }
         }
@@ -340,13 +335,13 @@ class Gas {
   void draw_velocities() {
     std::mt19937_64 random(options_.seed);
     std::normal_distribution<double> gaussian;
-    for (Vector& v : velocity_) {
-      for (int k = 0; k < D; ++k) v[k] = gaussian(random);
+    for (Ball& b : ball_) {
+      for (int k = 0; k < D; ++k) b.velocity[k] = gaussian(random);
     }
-    const Vector mean = momentum() / static_cast<double>(velocity_.size());
-    for (Vector& v : velocity_) v -= mean;
+    const Vector mean = momentum() / static_cast<double>(ball_.size());
+    for (Ball& b : ball_) b.velocity -= mean;
     const double scale = 1 / std::sqrt(temperature());
-    for (Vector& v : velocity_) v *= scale;
+    for (Ball& b : ball_) b.velocity *= scale;
   }
 
   std::size_t cell_index(const Cell& c) const {
@@ -356,95 +351,94 @@ class Gas {
     return index;
   }
   void insert(std::size_t i) {
-    const std::size_t c = cell_of_[i];
-    previous_[i] = none;
-    next_[i] = head_[c];
-    if (head_[c] != none) previous_[head_[c]] = static_cast<std::uint32_t>(i);
+    const std::size_t c = own_[i].cell;
+    ball_[i].previous = none;
+    ball_[i].next = head_[c];
+    if (head_[c] != none) ball_[head_[c]].previous = static_cast<std::uint32_t>(i);
     head_[c] = static_cast<std::uint32_t>(i);
   }
   void remove(std::size_t i) {
-    if (previous_[i] != none)
-      next_[previous_[i]] = next_[i];
+    if (ball_[i].previous != none)
+      ball_[ball_[i].previous].next = ball_[i].next;
     else
-      head_[cell_of_[i]] = next_[i];
-    if (next_[i] != none) previous_[next_[i]] = previous_[i];
+      head_[own_[i].cell] = ball_[i].next;
+    if (ball_[i].next != none) ball_[ball_[i].next].previous = ball_[i].previous;
   }
 
   void bring_to_now(std::size_t i) {
-    position_[i] += velocity_[i] * (now_ - updated_[i]);
-    updated_[i] = now_;
+    ball_[i].position += ball_[i].velocity * (now_ - ball_[i].updated);
+    ball_[i].updated = now_;
   }
 
   // Ball i's next event: the earlier of its next cell crossing and its earliest collision with a ball
-  // of the 3^D cells around its own; then its place in the heap.
+  // of the 3^D cells around its own; then its place in the calendar.
   void predict(std::size_t i) {
     bring_to_now(i);
     Event best;
     for (int k = 0; k < D; ++k) {
-      const double v = velocity_[i][k];
+      const double v = ball_[i].velocity[k];
       if (v == 0) continue;
-      const double bound = (coordinates_[i][k] + (v > 0 ? 1 : 0)) * cell_width_;
-      const double t = now_ + std::max(0.0, (bound - position_[i][k]) / v);
+      const double bound = (own_[i].coordinates[k] + (v > 0 ? 1 : 0)) * cell_width_;
+      const double t = now_ + std::max(0.0, (bound - ball_[i].position[k]) / v);
       if (t < best.time) best = Event{t, none, 0, k, v > 0 ? 1 : -1};
     }
-    Cell offset = Cell::Constant(-1);
-    for (;;) {
-      Cell c;
-      for (int k = 0; k < D; ++k) c[k] = (coordinates_[i][k] + offset[k] + cells_per_side_) % cells_per_side_;
-      for (std::uint32_t j = head_[cell_index(c)]; j != none; j = next_[j]) {
-        if (j == i) continue;
-        const Vector other = position_[j] + velocity_[j] * (now_ - updated_[j]);
-        const Vector p = nearest_image(position_[i], other);
-        // A pair moving apart never meets (time_of_impact would say +∞): skip the call.
-        if (p.dot(velocity_[j] - velocity_[i]) >= 0) continue;
-        const double t = billiards::time_of_impact(Vector::Zero().eval(), velocity_[i], p, velocity_[j], 1.0);
-        if (now_ + t < best.time) best = Event{now_ + t, j, collisions_of_[j], 0, 0};
+    // The cells around, their heads and their first balls asked of memory all at once before any is
+    // read: beyond the caches the misses then overlap instead of following one another.
+    constexpr int around = D == 2 ? 9 : 27;
+    std::uint32_t first[around];
+    {
+      std::size_t cell[around];
+      Cell offset = Cell::Constant(-1);
+      for (int n = 0; n < around; ++n) {
+        Cell c;
+        for (int k = 0; k < D; ++k)
+          c[k] = (own_[i].coordinates[k] + offset[k] + cells_per_side_) % cells_per_side_;
+        cell[n] = cell_index(c);
+        __builtin_prefetch(&head_[cell[n]]);
+        int k = 0;
+        while (k < D && offset[k] == 1) offset[k++] = -1;
+        if (k < D) ++offset[k];
       }
-      int k = 0;
-      while (k < D && offset[k] == 1) offset[k++] = -1;
-      if (k == D) break;
-      ++offset[k];
+      for (int n = 0; n < around; ++n) {
+        first[n] = head_[cell[n]];
+        if (first[n] != none) __builtin_prefetch(&ball_[first[n]]);
+      }
     }
-    event_[i] = best;
-    heap_[slot_[i]].time = best.time;
-    sift(slot_[i]);
+    for (int n = 0; n < around; ++n) {
+      for (std::uint32_t j = first[n]; j != none; j = ball_[j].next) {
+        if (j == i) continue;
+        const Vector other = ball_[j].position + ball_[j].velocity * (now_ - ball_[j].updated);
+        const Vector p = nearest_image(ball_[i].position, other);
+        // A pair moving apart never meets (time_of_impact would say +∞): skip the call.
+        if (p.dot(ball_[j].velocity - ball_[i].velocity) >= 0) continue;
+        const double t =
+            billiards::time_of_impact(Vector::Zero().eval(), ball_[i].velocity, p, ball_[j].velocity, 1.0);
+        if (now_ + t < best.time) best = Event{now_ + t, j, 0, 0, 0};
+      }
+    }
+    if (best.partner != none) best.partner_collisions = own_[best.partner].collisions;
+    own_[i].event = best;
+    calendar_.update(static_cast<std::uint32_t>(i), best.time);
   }
 
-  // The heap of balls by their next event's time: restores its order around slot s.
-  // Each entry carries its event's time, so that a sift reads one array, not two.
-  bool earlier(std::size_t a, std::size_t b) const { return heap_[a].time < heap_[b].time; }
-  void swap_slots(std::size_t a, std::size_t b) {
-    std::swap(heap_[a], heap_[b]);
-    slot_[heap_[a].ball] = a;
-    slot_[heap_[b].ball] = b;
-  }
-  void sift(std::size_t s) {
-    while (s > 0 && earlier(s, (s - 1) / 2)) {
-      swap_slots(s, (s - 1) / 2);
-      s = (s - 1) / 2;
-    }
-    for (;;) {
-      const std::size_t left = 2 * s + 1, right = left + 1;
-      std::size_t smallest = s;
-      if (left < heap_.size() && earlier(left, smallest)) smallest = left;
-      if (right < heap_.size() && earlier(right, smallest)) smallest = right;
-      if (smallest == s) return;
-      swap_slots(s, smallest);
-      s = smallest;
-    }
+  // Files every ball's next event in the calendar anew, its bucket width chosen from the times now.
+  void refile() {
+    std::vector<double> times(own_.size());
+    for (std::size_t i = 0; i < times.size(); ++i) times[i] = own_[i].event.time;
+    calendar_.reset(times, now_);
   }
 
   // Renumbers the balls in the order of their cells, so that balls near in space are near in memory
   // (a gas mixes them, and beyond the caches every prediction would otherwise miss them). Nothing
   // physical changes: every ball is brought to now on its own line, and the events keep their times,
-  // with partners renumbered (their collision counts move with them); the heap is rebuilt in time order.
+  // with partners renumbered (their collision counts move with them), filed anew in the calendar.
   void reorder() {
-    const std::size_t n = position_.size();
+    const std::size_t n = ball_.size();
     for (std::size_t i = 0; i < n; ++i) bring_to_now(i);
     std::vector<std::uint32_t> order;
     order.reserve(n);
     for (std::size_t c = 0; c < head_.size(); ++c) {
-      for (std::uint32_t i = head_[c]; i != none; i = next_[i]) order.push_back(i);
+      for (std::uint32_t i = head_[c]; i != none; i = ball_[i].next) order.push_back(i);
     }
     std::vector<std::uint32_t> renumbered(n);
     for (std::size_t k = 0; k < n; ++k) renumbered[order[k]] = static_cast<std::uint32_t>(k);
@@ -452,21 +446,14 @@ class Gas {
       auto copy = values;
       for (std::size_t k = 0; k < n; ++k) values[k] = copy[order[k]];
     };
-    permute(position_);
-    permute(velocity_);
-    permute(updated_);
-    permute(collisions_of_);
-    permute(cell_of_);
-    permute(coordinates_);
-    permute(event_);
-    for (Event& e : event_) {
-      if (e.partner != none) e.partner = renumbered[e.partner];
+    permute(ball_);
+    permute(own_);
+    for (Own& o : own_) {
+      if (o.event.partner != none) o.event.partner = renumbered[o.event.partner];
     }
     std::fill(head_.begin(), head_.end(), none);
     for (std::size_t k = n; k-- > 0;) insert(k);
-    for (std::size_t k = 0; k < n; ++k) heap_[k] = {event_[k].time, static_cast<std::uint32_t>(k)};
-    std::sort(heap_.begin(), heap_.end(), [](const Entry& a, const Entry& b) { return a.time < b.time; });
-    for (std::size_t k = 0; k < n; ++k) slot_[heap_[k].ball] = k;  // a sorted array is a heap
+    refile();
   }
 
   // Runs events until `collisions` more collisions; accumulates the virial where `measure`.
@@ -476,47 +463,52 @@ class Gas {
                                           : 1000000 + 100 * static_cast<std::uint64_t>(options_.balls);
     std::uint64_t quiet = 0;
     for (std::uint64_t done = 0; done < collisions;) {
-      const std::size_t i = heap_[0].ball;
-      const Event e = event_[i];
-      if (!std::isfinite(e.time)) throw NoCollisions("no ball has a next event");
+      const std::uint32_t earliest = calendar_.earliest();
+      if (earliest == EventCalendar::none) throw NoCollisions("no ball has a next event");
+      const std::size_t i = earliest;
+      const Event e = own_[i].event;
       now_ = e.time;
       if (e.partner == none) {  // a cell crossing
         bring_to_now(i);
         remove(i);
-        int& c = coordinates_[i][e.axis];
+        int& c = own_[i].coordinates[e.axis];
         c += e.step;
-        if (c == cells_per_side_) c = 0, position_[i][e.axis] -= side_;
-        if (c < 0) c = cells_per_side_ - 1, position_[i][e.axis] += side_;
-        cell_of_[i] = cell_index(coordinates_[i]);
+        if (c == cells_per_side_) c = 0, ball_[i].position[e.axis] -= side_;
+        if (c < 0) c = cells_per_side_ - 1, ball_[i].position[e.axis] += side_;
+        own_[i].cell = static_cast<std::uint32_t>(cell_index(own_[i].coordinates));
         insert(i);
         ++crossings_;
         predict(i);
-      } else if (collisions_of_[e.partner] != e.partner_collisions) {
+      } else if (own_[e.partner].collisions != e.partner_collisions) {
         predict(i);  // stale: the partner has collided since
       } else {
         const std::size_t j = e.partner;
         bring_to_now(i);
         bring_to_now(j);
-        const Vector image = position_[i] + nearest_image(position_[i], position_[j]);
-        largest_overlap_ = std::max(largest_overlap_, 1 - (image - position_[i]).norm());
-        const auto [vi, vj] =
-            billiards::collide_if_approaching(1.0, position_[i], velocity_[i], 1.0, image, velocity_[j]);
-        const Vector impulse = vi - velocity_[i];
-        const bool changed = !(vi.array() == velocity_[i].array()).all();
-        velocity_[i] = vi;
-        velocity_[j] = vj;
-        ++collisions_of_[i];
-        ++collisions_of_[j];
+        const Vector image = ball_[i].position + nearest_image(ball_[i].position, ball_[j].position);
+        largest_overlap_ = std::max(largest_overlap_, 1 - (image - ball_[i].position).norm());
+        const auto [vi, vj] = billiards::collide_if_approaching(1.0, ball_[i].position, ball_[i].velocity,
+                                                                1.0, image, ball_[j].velocity);
+        const Vector impulse = vi - ball_[i].velocity;
+        const bool changed = !(vi.array() == ball_[i].velocity.array()).all();
+        ball_[i].velocity = vi;
+        ball_[j].velocity = vj;
+        ++own_[i].collisions;
+        ++own_[j].collisions;
         predict(i);
         predict(j);
         if (changed) {
-          if (measure) virial_ += (position_[i] - image).dot(impulse);
+          if (measure) virial_ += (ball_[i].position - image).dot(impulse);
           ++done;
           quiet = 0;
-          // Every N collisions, for large gases: the balls renumbered by cell.
-          if (position_.size() >= reorder_from && ++since_reorder_ >= position_.size()) {
-            since_reorder_ = 0;
-            reorder();
+          // Every N collisions: the calendar's width fitted to the times again, and for large gases
+          // the balls renumbered by cell.
+          if (++since_refile_ >= ball_.size()) {
+            since_refile_ = 0;
+            if (ball_.size() >= reorder_from)
+              reorder();
+            else
+              refile();
           }
         }
       }
@@ -530,20 +522,27 @@ class Gas {
   Options options_;
   double side_ = 0, cell_width_ = 0, now_ = 0;
   int cells_per_side_ = 0;
-  std::vector<Vector> position_, velocity_;
-  std::vector<double> updated_;
-  std::vector<std::uint64_t> collisions_of_;
-  std::vector<std::size_t> cell_of_;
-  std::vector<Cell> coordinates_;
-  std::vector<std::uint32_t> head_, next_, previous_;
-  std::vector<Event> event_;
-  struct Entry {
-    double time;
-    std::uint32_t ball;
+  // What a prediction reads of each neighbour, in one place (one cache line in 3-D): its position at
+  // its last update, that time, its velocity, and its links in its cell's list.
+  struct alignas(D == 3 ? 64 : 16) Ball {
+    Vector position = Vector::Zero();
+    double updated = 0;
+    Vector velocity = Vector::Zero();
+    std::uint32_t next = none, previous = none;
   };
-  std::vector<Entry> heap_;
-  std::vector<std::size_t> slot_;
-  std::uint64_t crossings_ = 0, since_reorder_ = 0;
+  std::vector<Ball> ball_;
+  std::vector<std::uint32_t> head_;
+  // What an event reads of its own ball, in one place (one cache line): its next event, its cell, its
+  // collision count.
+  struct alignas(64) Own {
+    Event event;
+    Cell coordinates = Cell::Zero();
+    std::uint32_t cell = 0;
+    std::uint64_t collisions = 0;
+  };
+  std::vector<Own> own_;
+  EventCalendar calendar_;
+  std::uint64_t crossings_ = 0, since_refile_ = 0;
   static constexpr std::size_t reorder_from = 4096;  ///< fewer balls stay in the caches anyway
   double virial_ = 0, largest_overlap_ = 0, initial_temperature_ = 1, largest_temperature_change_ = 0;
 };

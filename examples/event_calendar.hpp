@@ -1,0 +1,202 @@
+// The calendar of an event-driven simulation's next events: one pending time per item (a ball), the
+// earliest found in O(1) on average whatever the number of items — a calendar queue (R. Brown, CACM
+// 31 (1988) 1220), in the bounded form event-driven molecular dynamics uses (G. Paul, J. Comput. Phys.
+// 221 (2007) 615; DynamO's "bounded priority queue").
+//
+// Time is cut into buckets of one width. A year of B buckets (B a power of two, at least twice the
+// number of items) is a ring of doubly linked lists, one per bucket; a time beyond the year waits in
+// an overflow list and enters the ring when its year comes. The bucket at the front is moved into a
+// small binary heap (it may hold many equal times: a lattice's first events), whose top is the
+// earliest time. Moving an item touches two short lists: no sift through log N levels of one big
+// heap, most of them beyond the caches.
+//
+// The width is chosen from the pending times themselves (reset): their mean spacing over the nearer
+// half, so that a bucket holds an item or two when the front reaches it and few times fall beyond the
+// year. Any width gives the right order; the width decides only the speed.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <limits>
+#include <stdexcept>
+#include <vector>
+
+namespace billiards_example {
+
+class EventCalendar {
+ public:
+  static constexpr std::uint32_t none = std::numeric_limits<std::uint32_t>::max();
+
+  /// Files item i at times[i] for every i, with the width chosen from times − now. Every time must be
+  /// ≥ now, or +∞ (an item with no event); none may be NaN.
+  void reset(const std::vector<double>& times, double now) {
+    if (times.size() > (std::size_t{1} << 31)) throw std::length_error("EventCalendar: more than 2^31 items");
+    std::size_t buckets = 256;
+    while (buckets < 2 * times.size()) buckets *= 2;
+    mask_ = buckets - 1;
+    head_.assign(buckets, none);
+    item_.assign(times.size(), Item{});
+    front_.clear();
+    overflow_ = none;
+    in_ring_ = 0;
+    // The width: the mean spacing of the nearer half of the pending times (the median distance from
+    // now over half the count). A median, not the nearest few, which may sit within rounding of now
+    // (a lattice's balls on the cells' faces) and would make the year far too short.
+    std::vector<double> ahead;
+    ahead.reserve(times.size());
+    for (double t : times) {
+      if (std::isnan(t) || t < now) throw std::invalid_argument("EventCalendar: a time is NaN or before now");
+      if (std::isfinite(t) && t > now) ahead.push_back(t - now);  // times at now say nothing of a spacing
+    }
+    width_ = 0;
+    if (!ahead.empty()) {
+      const std::size_t k = (ahead.size() + 1) / 2;
+      std::nth_element(ahead.begin(), ahead.begin() + static_cast<std::ptrdiff_t>(k - 1), ahead.end());
+      width_ = ahead[k - 1] / static_cast<double>(k);
+    }
+    // The width must resolve now: bucket numbers below 2^52 stay exact integers in a double.
+    width_ = std::max(width_, std::fabs(now) * 0x1p-50);
+    if (!(width_ > 0) || !std::isfinite(width_)) width_ = 1;
+    year_ = current_ = bucket_number(now);
+    for (std::size_t i = 0; i < times.size(); ++i) file(static_cast<std::uint32_t>(i), times[i]);
+  }
+
+  std::size_t size() const { return item_.size(); }
+  double time(std::uint32_t i) const { return item_[i].time; }
+
+  /// Moves item i to `time` (≥ the last earliest time returned, or +∞).
+  void update(std::uint32_t i, double time) {
+    unfile(i);
+    file(i, time);
+  }
+
+  /// The item with the earliest time (any one of equal times); none when every time is +∞.
+  std::uint32_t earliest() {
+    for (;;) {
+      while (!front_.empty() && stale(front_.front())) {
+        std::pop_heap(front_.begin(), front_.end(), later);
+        front_.pop_back();
+      }
+      if (!front_.empty()) return front_.front().item;
+      if (in_ring_ == 0) {
+        if (!next_year()) return none;
+        continue;
+      }
+      if (++current_ == year_ + static_cast<std::int64_t>(mask_ + 1)) {
+        next_year();
+        continue;
+      }
+      std::uint32_t& head = head_[static_cast<std::uint64_t>(current_) & mask_];
+      for (std::uint32_t i = head; i != none;) {
+        const std::uint32_t next = item_[i].next;
+        to_front(i);
+        i = next;
+      }
+      head = none;
+    }
+  }
+
+ private:
+  static constexpr std::uint32_t overflow_list = none, front = none - 1;
+  struct Item {
+    double time = std::numeric_limits<double>::infinity();
+    std::uint32_t next = none, previous = none;
+    std::uint32_t bucket = overflow_list;  ///< the ring's index, front, or overflow_list
+    std::uint32_t version = 0;             ///< counts the filings: tells a front entry it is stale
+  };
+  struct Entry {
+    double time;
+    std::uint32_t item, version;
+  };
+  static bool later(const Entry& a, const Entry& b) { return a.time > b.time; }
+  bool stale(const Entry& e) const {
+    return item_[e.item].version != e.version || item_[e.item].bucket != front;
+  }
+
+  std::int64_t bucket_number(double time) const {
+    return static_cast<std::int64_t>(std::floor(time / width_));
+  }
+  std::uint32_t& list_of(const Item& item) {
+    return item.bucket == overflow_list ? overflow_ : head_[item.bucket];
+  }
+
+  // The current bucket's items sit in a small heap (many may share one time: a lattice's first events).
+  void to_front(std::uint32_t i) {
+    Item& item = item_[i];
+    item.bucket = front;
+    front_.push_back({item.time, i, item.version});
+    std::push_heap(front_.begin(), front_.end(), later);
+  }
+
+  void file(std::uint32_t i, double time) {
+    Item& item = item_[i];
+    item.time = time;
+    ++item.version;
+    const double q = time / width_;
+    const std::int64_t end = year_ + static_cast<std::int64_t>(mask_ + 1);
+    if (q < static_cast<double>(end)) {  // in this year (+∞ and NaN are not)
+      ++in_ring_;
+      const std::int64_t b = std::max(current_, static_cast<std::int64_t>(std::floor(q)));
+      if (b == current_) return to_front(i);
+      item.bucket = static_cast<std::uint32_t>(static_cast<std::uint64_t>(b) & mask_);
+    } else {
+      item.bucket = overflow_list;
+    }
+    std::uint32_t& head = list_of(item);
+    item.previous = none;
+    item.next = head;
+    if (head != none) item_[head].previous = i;
+    head = i;
+  }
+
+  void unfile(std::uint32_t i) {
+    Item& item = item_[i];
+    if (item.bucket != overflow_list) --in_ring_;
+    if (item.bucket == front) {  // its entry goes stale
+      item.bucket = overflow_list;
+      item.next = item.previous = none;
+      return;
+    }
+    if (item.previous != none)
+      item_[item.previous].next = item.next;
+    else
+      list_of(item) = item.next;
+    if (item.next != none) item_[item.next].previous = item.previous;
+  }
+
+  // The next year: from the end of this one, or, with the ring empty, from the earliest waiting time
+  // (no walk through empty years); the waiting times within it enter the ring. False when nothing waits
+  // but +∞.
+  bool next_year() {
+    double earliest = std::numeric_limits<double>::infinity();
+    for (std::uint32_t i = overflow_; i != none; i = item_[i].next)
+      earliest = std::min(earliest, item_[i].time);
+    if (in_ring_ == 0) {
+      if (!std::isfinite(earliest)) return false;
+      year_ = current_ = std::max(year_ + static_cast<std::int64_t>(mask_ + 1), bucket_number(earliest));
+    } else {
+      year_ += static_cast<std::int64_t>(mask_ + 1);
+      current_ = year_;
+    }
+    std::uint32_t i = overflow_;
+    overflow_ = none;
+    while (i != none) {
+      const std::uint32_t next = item_[i].next;
+      file(i, item_[i].time);
+      i = next;
+    }
+    return true;
+  }
+
+  std::vector<std::uint32_t> head_;
+  std::vector<Item> item_;
+  std::vector<Entry> front_;
+  std::uint32_t overflow_ = none;
+  std::size_t mask_ = 0, in_ring_ = 0;
+  std::int64_t year_ = 0, current_ = 0;
+  double width_ = 1;
+};
+
+}  // namespace billiards_example

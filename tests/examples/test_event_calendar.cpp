@@ -1,0 +1,96 @@
+// The event calendar of examples/event_calendar.hpp against a reference it does not share code with:
+// a std::set of (time, item) pairs. Random moves of random items, times drawn near now, far beyond
+// the year, equal, and +∞; each step the earliest must be an item with the reference's earliest time.
+#include "event_calendar.hpp"
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <limits>
+#include <random>
+#include <set>
+#include <utility>
+#include <vector>
+
+using billiards_example::EventCalendar;
+
+namespace {
+
+constexpr double inf = std::numeric_limits<double>::infinity();
+
+// Runs `steps` events: each takes the earliest item, moves now to its time and files it (and
+// `others` random items) at a later time drawn by `draw`.
+template <class Draw>
+void run_against_reference(std::size_t items, int steps, int others, Draw draw) {
+  std::mt19937_64 random(items * 7919 + static_cast<std::size_t>(steps));
+  std::vector<double> times(items);
+  double now = 0;
+  for (double& t : times) t = draw(random, now);
+  EventCalendar calendar;
+  calendar.reset(times, now);
+  std::set<std::pair<double, std::uint32_t>> reference;
+  for (std::uint32_t i = 0; i < items; ++i) reference.insert({times[i], i});
+  std::uniform_int_distribution<std::uint32_t> pick(0, static_cast<std::uint32_t>(items - 1));
+  const auto move = [&](std::uint32_t i, double t) {
+    reference.erase({times[i], i});
+    times[i] = t;
+    reference.insert({t, i});
+    calendar.update(i, t);
+  };
+  for (int step = 0; step < steps; ++step) {
+    const std::uint32_t earliest = calendar.earliest();
+    if (reference.begin()->first == inf) {
+      REQUIRE(earliest == EventCalendar::none);
+      return;
+    }
+    REQUIRE(earliest != EventCalendar::none);
+    REQUIRE(times[earliest] == reference.begin()->first);
+    REQUIRE(calendar.time(earliest) == times[earliest]);
+    now = times[earliest];
+    move(earliest, draw(random, now));
+    for (int k = 0; k < others; ++k) move(pick(random), draw(random, now));
+    if (step % 5000 == 4999) calendar.reset(times, now);  // refiled mid-run, as the gas does
+  }
+}
+
+}  // namespace
+
+TEST_CASE("the event calendar returns the earliest time, as a sorted set does") {
+  SECTION("exponential times, as a gas's events") {
+    run_against_reference(1000, 50000, 1, [](std::mt19937_64& r, double now) {
+      return now + std::exponential_distribution<double>(1.0)(r);
+    });
+  }
+  SECTION("a few items, times far beyond the year among near ones") {
+    run_against_reference(5, 20000, 2, [](std::mt19937_64& r, double now) {
+      const double u = std::uniform_real_distribution<double>(0, 1)(r);
+      return u < 0.2 ? now + 1e6 * u : now + 1e-3 * u;
+    });
+  }
+  SECTION("equal times and items without an event") {
+    run_against_reference(300, 30000, 3, [](std::mt19937_64& r, double now) {
+      const int k = std::uniform_int_distribution<int>(0, 9)(r);
+      if (k == 0) return inf;
+      if (k < 4) return now;       // at once
+      return std::floor(now) + k;  // many equal times
+    });
+  }
+  SECTION("every time +∞ but one, then none") {
+    run_against_reference(64, 100, 0, [](std::mt19937_64& r, double now) {
+      return now == 0 && std::uniform_int_distribution<int>(0, 63)(r) == 0 ? 1.0 : inf;
+    });
+  }
+  SECTION("times spread over 300 orders of magnitude") {
+    run_against_reference(200, 20000, 1, [](std::mt19937_64& r, double now) {
+      return now + std::pow(10.0, std::uniform_real_distribution<double>(-150, 150)(r));
+    });
+  }
+}
+
+TEST_CASE("the event calendar rejects a NaN time or one before now") {
+  EventCalendar calendar;
+  CHECK_THROWS_AS(calendar.reset({1.0, std::nan("")}, 0), std::invalid_argument);
+  CHECK_THROWS_AS(calendar.reset({1.0, 0.5}, 0.75), std::invalid_argument);
+  calendar.reset({}, 0);
+  CHECK(calendar.earliest() == EventCalendar::none);
+}
