@@ -5,7 +5,7 @@
 // derivation audit before it was printed, and names the claims it implements. They take masses
 // and dot products, so they serve vectors of any dimension and need no Eigen.
 //
-// Fingerprint: fnv1a64:2257eebb3caf6580 (of this header and the audit)
+// Fingerprint: fnv1a64:eb7cb6df2ba5f2d4 (of this header and the audit)
 #pragma once
 
 #include <cmath>
@@ -42,35 +42,39 @@ BILLIARDS_HOST_DEVICE constexpr Scalar absolute_value(Scalar x) noexcept {
   return x < Scalar(0) ? -x : x;
 }
 
-/// The smallest positive normal number, std::numeric_limits<Scalar>::min(), also in device code.
+/// The smallest positive normal number, `std::numeric_limits<Scalar>::min()`, also in device code.
 template <typename Scalar>
 BILLIARDS_HOST_DEVICE constexpr Scalar smallest_normal() noexcept {
   return std::numeric_limits<Scalar>::min();
 }
+/// The smallest positive normal float, 2^−126.
 template <>
 BILLIARDS_HOST_DEVICE constexpr float smallest_normal<float>() noexcept {
   return 0x1p-126f;
 }
+/// The smallest positive normal double, 2^−1022.
 template <>
 BILLIARDS_HOST_DEVICE constexpr double smallest_normal<double>() noexcept {
   return 0x1p-1022;
 }
 
-/// +∞, std::numeric_limits<Scalar>::infinity(), also in device code.
+/// +∞, `std::numeric_limits<Scalar>::infinity()`, also in device code.
 template <typename Scalar>
 BILLIARDS_HOST_DEVICE constexpr Scalar infinity() noexcept {
   return std::numeric_limits<Scalar>::infinity();
 }
+/// +∞ in float.
 template <>
 BILLIARDS_HOST_DEVICE constexpr float infinity<float>() noexcept {
   return __builtin_huge_valf();
 }
+/// +∞ in double.
 template <>
 BILLIARDS_HOST_DEVICE constexpr double infinity<double>() noexcept {
   return __builtin_huge_val();
 }
 
-/// The plain form's mass range [4 √x_min, 1/(4 √x_min)], x_min = smallest_normal<Scalar>(): 2^−509 to
+/// The plain form's mass range [4 √x_min, 1/(4 √x_min)], x_min = `smallest_normal<Scalar>()`: 2^−509 to
 /// 2^509 in double, 2^−61 to 2^61 in float. Within it m1 + m2, (1 + e)/(m1 + m2) and each
 /// (1 + e) m_i/(m1 + m2) are normal numbers, so the one-division form keeps every digit.
 template <typename Scalar>
@@ -79,15 +83,17 @@ BILLIARDS_HOST_DEVICE constexpr Scalar plain_mass_low() noexcept {
   for (int k = 0; k < (1 - std::numeric_limits<Scalar>::min_exponent) / 2; ++k) low /= Scalar(2);
   return low;
 }
+/// 2^−61 in float.
 template <>
 BILLIARDS_HOST_DEVICE constexpr float plain_mass_low<float>() noexcept {
   return 0x1p-61f;
 }
+/// 2^−509 in double.
 template <>
 BILLIARDS_HOST_DEVICE constexpr double plain_mass_low<double>() noexcept {
   return 0x1p-509;
 }
-/// 1/plain_mass_low<Scalar>(), exactly (a power of two).
+/// `1/plain_mass_low<Scalar>()`, exactly (a power of two).
 template <typename Scalar>
 BILLIARDS_HOST_DEVICE constexpr Scalar plain_mass_high() noexcept {
   return Scalar(1) / plain_mass_low<Scalar>();

@@ -5,7 +5,7 @@
 // derivation audit before it was printed, and names the claims it implements. They take masses
 // and dot products, so they serve vectors of any dimension and need no Eigen.
 //
-// Fingerprint: fnv1a64:5c80bf57bc9bbe83 (of this header and the audit)
+// Fingerprint: fnv1a64:143134a4fd1ea39b (of this header and the audit)
 #pragma once
 
 #include <limits>
@@ -41,29 +41,33 @@ BILLIARDS_HOST_DEVICE constexpr Scalar absolute_value(Scalar x) noexcept {
   return x < Scalar(0) ? -x : x;
 }
 
-/// The smallest positive normal number, std::numeric_limits<Scalar>::min(), also in device code.
+/// The smallest positive normal number, `std::numeric_limits<Scalar>::min()`, also in device code.
 template <typename Scalar>
 BILLIARDS_HOST_DEVICE constexpr Scalar smallest_normal() noexcept {
   return std::numeric_limits<Scalar>::min();
 }
+/// The smallest positive normal float, 2^−126.
 template <>
 BILLIARDS_HOST_DEVICE constexpr float smallest_normal<float>() noexcept {
   return 0x1p-126f;
 }
+/// The smallest positive normal double, 2^−1022.
 template <>
 BILLIARDS_HOST_DEVICE constexpr double smallest_normal<double>() noexcept {
   return 0x1p-1022;
 }
 
-/// +∞, std::numeric_limits<Scalar>::infinity(), also in device code.
+/// +∞, `std::numeric_limits<Scalar>::infinity()`, also in device code.
 template <typename Scalar>
 BILLIARDS_HOST_DEVICE constexpr Scalar infinity() noexcept {
   return std::numeric_limits<Scalar>::infinity();
 }
+/// +∞ in float.
 template <>
 BILLIARDS_HOST_DEVICE constexpr float infinity<float>() noexcept {
   return __builtin_huge_valf();
 }
+/// +∞ in double.
 template <>
 BILLIARDS_HOST_DEVICE constexpr double infinity<double>() noexcept {
   return __builtin_huge_val();

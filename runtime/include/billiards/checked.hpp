@@ -22,6 +22,7 @@ namespace billiards {
 /// Thrown by the checked calls for an argument outside their documented domain.
 class invalid_argument : public std::invalid_argument {
  public:
+  /// The message reads "function: argument is value, expected expected".
   invalid_argument(std::string function, std::string argument, std::string value, std::string expected)
       : std::invalid_argument(function + ": " + argument + " is " + value + ", expected " + expected),
         argument_(std::move(argument)),

@@ -30,10 +30,10 @@ struct Cloth {
 /// and radius. The mass does not enter the motion on the cloth.
 template <typename Scalar>
 struct BallOnCloth {
-  Eigen::Matrix<Scalar, 3, 1> position;
-  Eigen::Matrix<Scalar, 3, 1> velocity;
-  Eigen::Matrix<Scalar, 3, 1> angular_velocity;
-  Scalar radius;
+  Eigen::Matrix<Scalar, 3, 1> position;          ///< the centre, at height \f$z = R\f$ on the table
+  Eigen::Matrix<Scalar, 3, 1> velocity;          ///< \f$v\f$, horizontal (\f$v_z = 0\f$)
+  Eigen::Matrix<Scalar, 3, 1> angular_velocity;  ///< \f$\omega\f$, rad/s
+  Scalar radius;                                 ///< \f$R > 0\f$, finite
 };
 
 /// The phase of a ball's motion on the cloth.
