@@ -4,9 +4,10 @@
 For each page: Chromium loads it from file:// (no server), runs its scripts with a virtual time
 budget long enough for MathJax, and dumps the DOM. The page passes when every formula of its source
 (each \\( \\) or \\[ \\] pair) became a MathJax element (a typeset frame per formula, at least
---least-formulas of them), no formula failed (no MathJax error element), and the rendered text, with
-scripts and styles left out, holds no raw TeX (no \\frac, no \\( delimiter). A screenshot of each page
-must not be blank: at least 0.5 % of its pixels differ from its most common colour.
+LEAST_FORMULAS of them), no formula failed (no MathJax error element), and the rendered text, with
+scripts, styles and code left out, holds no raw TeX (no \\frac, no \\( delimiter). A screenshot of each page
+must not be blank: at least 0.5 % of its pixels differ from its most common colour. Every relative
+link of a page must lead to a file that was built.
 
 Usage: browser_test.py --chromium PATH --html DIR PAGE[:LEAST_FORMULAS]...
 Exit status 0 when every page passes, 1 when one fails, 77 (ctest's skip) when Chromium is missing.
@@ -38,7 +39,8 @@ def formulas_in_source(text):
 
 
 def rendered_text(dom):
-    text = re.sub(r"<(script|style)\b.*?</\1>", " ", dom, flags=re.S)
+    """The text a reader sees, less code (which may quote TeX as TeX)."""
+    text = re.sub(r"<(script|style|code|pre)\b.*?</\1>", " ", dom, flags=re.S)
     return re.sub(r"<[^>]+>", " ", text)
 
 
@@ -95,11 +97,18 @@ def not_blank_fraction(png):
 
 def check_page(binary, html_dir, page, least, work):
     path = os.path.join(html_dir, page)
-    problems = []
     if not os.path.isfile(path):
         return [f"{page}: not built"]
+    problems = []
     with open(path, encoding="utf-8") as f:
-        expected = formulas_in_source(f.read())
+        source = f.read()
+    expected = formulas_in_source(source)
+    # Every link within the manual leads to a file that was built.
+    for href in sorted(set(re.findall(r'href="([^"#?]+)', source))):
+        if re.match(r"[a-z]+:", href):
+            continue
+        if not os.path.exists(os.path.join(os.path.dirname(path), href)):
+            problems.append(f"{page}: a link to {href}, which was not built")
     url = "file://" + os.path.abspath(path)
     dump = chromium(binary, os.path.join(work, "profile"), "--dump-dom", url)
     dom = dump.stdout.decode("utf-8", "replace")

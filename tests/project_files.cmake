@@ -1,0 +1,17 @@
+# CITATION.cff and CHANGELOG.md agree with the project's version: the citation carries the keys CFF
+# 1.2.0 requires and `version: VERSION`, the changelog a section `## [VERSION]`.
+file(READ ${SOURCE}/CITATION.cff citation)
+foreach(key cff-version message title authors version)
+  if(NOT citation MATCHES "(^|\n)${key}:")
+    message(FATAL_ERROR "CITATION.cff: no '${key}:', which CFF 1.2.0 requires (or the version test needs)")
+  endif()
+endforeach()
+if(NOT citation MATCHES "\nversion: ${VERSION}\n")
+  message(FATAL_ERROR "CITATION.cff: the version is not ${VERSION}, the project's (CMakeLists.txt)")
+endif()
+file(READ ${SOURCE}/CHANGELOG.md changelog)
+string(REPLACE "." "\\." escaped ${VERSION})
+if(NOT changelog MATCHES "\n## \\[${escaped}\\]")
+  message(FATAL_ERROR "CHANGELOG.md: no section '## [${VERSION}]' for the project's version")
+endif()
+message(STATUS "CITATION.cff and CHANGELOG.md name version ${VERSION}")
