@@ -3,7 +3,7 @@
 # the text in the checkout. Run by the docs target: cmake -D SOURCE=... -D OUT=... -P prepare_sources.cmake
 file(READ ${SOURCE}/README.md readme)
 string(REPLACE "](generated/AUDIT.md)" "](audit/parkin2023.html)" readme "${readme}")
-string(REPLACE "](generated/spinning/AUDIT.md)" "](audit/spinning.html)" readme "${readme}")
+string(REPLACE "](generated/spinning/AUDIT.md)" "](audit/spinning_balls.html)" readme "${readme}")
 string(REPLACE "](generated/billiards/kernels.hpp)" "](namespacebilliards_1_1kernels.html)" readme "${readme}")
 string(REPLACE "](bench/throughput.svg)" "](throughput.svg)" readme "${readme}")
 string(REPLACE "](generated/audit.json)" "](file://${SOURCE}/generated/audit.json)" readme "${readme}")
