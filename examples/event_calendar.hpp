@@ -63,7 +63,6 @@ class EventCalendar {
     for (std::size_t i = 0; i < times.size(); ++i) file(static_cast<std::uint32_t>(i), times[i]);
   }
 
-  std::size_t size() const { return item_.size(); }
   double time(std::uint32_t i) const { return item_[i].time; }
 
   /// Moves item i to `time` (≥ the last earliest time returned, or +∞).

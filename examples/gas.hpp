@@ -177,8 +177,7 @@ class Gas {
       own_[i].cell = static_cast<std::uint32_t>(cell_index(own_[i].coordinates));
       insert(i);
     }
-    calendar_.reset(std::vector<double>(n, std::numeric_limits<double>::infinity()), now_);
-    for (std::size_t i = 0; i < n; ++i) predict(i);
+    for (std::size_t i = 0; i < n; ++i) own_[i].event = next_event(i);
     refile();
     initial_temperature_ = temperature();
   }
@@ -370,9 +369,15 @@ class Gas {
     ball_[i].updated = now_;
   }
 
-  // Ball i's next event: the earlier of its next cell crossing and its earliest collision with a ball
-  // of the 3^D cells around its own; then its place in the calendar.
+  // Ball i's next event and its place in the calendar.
   void predict(std::size_t i) {
+    own_[i].event = next_event(i);
+    calendar_.update(static_cast<std::uint32_t>(i), own_[i].event.time);
+  }
+
+  // Ball i's next event: the earlier of its next cell crossing and its earliest collision with a ball
+  // of the 3^D cells around its own.
+  Event next_event(std::size_t i) {
     bring_to_now(i);
     Event best;
     for (int k = 0; k < D; ++k) {
@@ -417,8 +422,7 @@ class Gas {
       }
     }
     if (best.partner != none) best.partner_collisions = own_[best.partner].collisions;
-    own_[i].event = best;
-    calendar_.update(static_cast<std::uint32_t>(i), best.time);
+    return best;
   }
 
   // Files every ball's next event in the calendar anew, its bucket width chosen from the times now.

@@ -8,6 +8,8 @@
 #include <map>
 #include <sstream>
 #include <stdexcept>
+#include <string>
+#include <tuple>
 
 namespace billiards::derive {
 
@@ -373,6 +375,21 @@ std::string preamble(const std::string& description) {
          fingerprint_marker + " (of this header and the audit)\n";
 }
 
+// The explicit float and double specialisations of a constant function template `name<Scalar>()`,
+// each with its comment and its literal (device code has no std::numeric_limits).
+std::string float_and_double(const std::string& name, const std::string& float_brief,
+                             const std::string& float_value, const std::string& double_brief,
+                             const std::string& double_value) {
+  std::string text;
+  for (const auto& [type, brief, value] :
+       {std::tuple<std::string, std::string, std::string>{"float", float_brief, float_value},
+        {"double", double_brief, double_value}}) {
+    text += "/// " + brief + "\ntemplate <>\nBILLIARDS_HOST_DEVICE constexpr " + type + " " + name + "<" +
+            type + ">() noexcept {\n  return " + value + ";\n}\n";
+  }
+  return text;
+}
+
 }  // namespace
 
 std::string kernels_header(const Derivation& derivation, const std::string& audit_text) {
@@ -426,31 +443,16 @@ std::string kernels_header(const Derivation& derivation, const std::string& audi
       << "BILLIARDS_HOST_DEVICE constexpr Scalar smallest_normal() noexcept {\n"
       << "  return std::numeric_limits<Scalar>::min();\n"
       << "}\n"
-      << "/// The smallest positive normal float, 2^−126.\n"
-      << "template <>\n"
-      << "BILLIARDS_HOST_DEVICE constexpr float smallest_normal<float>() noexcept {\n"
-      << "  return 0x1p-126f;\n"
-      << "}\n"
-      << "/// The smallest positive normal double, 2^−1022.\n"
-      << "template <>\n"
-      << "BILLIARDS_HOST_DEVICE constexpr double smallest_normal<double>() noexcept {\n"
-      << "  return 0x1p-1022;\n"
-      << "}\n\n"
+      << float_and_double("smallest_normal", "The smallest positive normal float, 2^−126.", "0x1p-126f",
+                          "The smallest positive normal double, 2^−1022.", "0x1p-1022")
+      << "\n"
       << "/// +∞, `std::numeric_limits<Scalar>::infinity()`, also in device code.\n"
       << "template <typename Scalar>\n"
       << "BILLIARDS_HOST_DEVICE constexpr Scalar infinity() noexcept {\n"
       << "  return std::numeric_limits<Scalar>::infinity();\n"
       << "}\n"
-      << "/// +∞ in float.\n"
-      << "template <>\n"
-      << "BILLIARDS_HOST_DEVICE constexpr float infinity<float>() noexcept {\n"
-      << "  return __builtin_huge_valf();\n"
-      << "}\n"
-      << "/// +∞ in double.\n"
-      << "template <>\n"
-      << "BILLIARDS_HOST_DEVICE constexpr double infinity<double>() noexcept {\n"
-      << "  return __builtin_huge_val();\n"
-      << "}\n";
+      << float_and_double("infinity", "+∞ in float.", "__builtin_huge_valf()", "+∞ in double.",
+                          "__builtin_huge_val()");
   const bool plain_range = std::any_of(derivation.kernels.begin(), derivation.kernels.end(),
                                        [](const Kernel& k) { return k.fast_path || !k.domain.empty(); });
   if (plain_range) {
@@ -465,16 +467,7 @@ std::string kernels_header(const Derivation& derivation, const std::string& audi
            "Scalar(2);\n"
         << "  return low;\n"
         << "}\n"
-        << "/// 2^−61 in float.\n"
-        << "template <>\n"
-        << "BILLIARDS_HOST_DEVICE constexpr float plain_mass_low<float>() noexcept {\n"
-        << "  return 0x1p-61f;\n"
-        << "}\n"
-        << "/// 2^−509 in double.\n"
-        << "template <>\n"
-        << "BILLIARDS_HOST_DEVICE constexpr double plain_mass_low<double>() noexcept {\n"
-        << "  return 0x1p-509;\n"
-        << "}\n"
+        << float_and_double("plain_mass_low", "2^−61 in float.", "0x1p-61f", "2^−509 in double.", "0x1p-509")
         << "/// `1/plain_mass_low<Scalar>()`, exactly (a power of two).\n"
         << "template <typename Scalar>\n"
         << "BILLIARDS_HOST_DEVICE constexpr Scalar plain_mass_high() noexcept {\n"
