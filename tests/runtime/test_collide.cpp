@@ -8,6 +8,8 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
+#include <bit>
 #include <cmath>
 #include <limits>
 #include <random>
@@ -244,8 +246,50 @@ TEMPLATE_TEST_CASE("binary_exponent and power_of_two read and build the exponent
   }
 }
 
-TEMPLATE_TEST_CASE("scaled_norm is the norm without overflow or underflow of the squares", "[runtime][detail]",
-                   float, double) {
+TEMPLATE_TEST_CASE(
+    "power_of_two_scaled puts the largest component in [1/2, 1) as ldexp does, at every exponent",
+    "[runtime][detail]", float, double) {
+  using Scalar = TestType;
+  using limits = std::numeric_limits<Scalar>;
+  using V = Eigen::Matrix<Scalar, 3, 1>;
+  std::mt19937_64 random(23);
+  std::uniform_real_distribution<double> mantissa(1, 2), fraction(-1, 1);
+  // The reference by frexp and ldexp, component by component: d · 2^−e with e frexp's exponent of
+  // the largest |component|; d itself where that is 0 or not finite.
+  const auto expected = [](const V& d) {
+    const Scalar largest = std::max({std::fabs(d[0]), std::fabs(d[1]), std::fabs(d[2])});
+    int e = 0;
+    if (largest > 0 && std::isfinite(largest)) static_cast<void>(std::frexp(largest, &e));
+    return V(std::ldexp(d[0], -e), std::ldexp(d[1], -e), std::ldexp(d[2], -e));
+  };
+  // Every exponent, subnormal and the top binades included (the fast path's edges), at the ends of
+  // each binade and at a random mantissa, the largest component in each place and of either sign.
+  for (int e = limits::min_exponent - limits::digits; e <= limits::max_exponent; ++e) {
+    for (const Scalar x :
+         {std::ldexp(Scalar(1), e - 1), std::ldexp(static_cast<Scalar>(mantissa(random)), e - 1),
+          std::nextafter(std::ldexp(Scalar(1), e), Scalar(0))}) {
+      if (!(x > 0) || !std::isfinite(x)) continue;
+      for (int place = 0; place < 3; ++place) {
+        V d(static_cast<Scalar>(fraction(random)) * x, static_cast<Scalar>(fraction(random)) * x,
+            static_cast<Scalar>(fraction(random)) * x);
+        d[place] = place == 1 ? -x : x;
+        INFO("d = " << d.transpose());
+        const V scaled = billiards::detail::power_of_two_scaled(d), reference = expected(d);
+        for (int k = 0; k < 3; ++k)
+          CHECK(std::bit_cast<billiards::detail::FloatBits<Scalar>>(scaled[k]) ==
+                std::bit_cast<billiards::detail::FloatBits<Scalar>>(reference[k]));
+        CHECK(billiards::detail::largest_magnitude(scaled) >= Scalar(0.5));
+        CHECK(billiards::detail::largest_magnitude(scaled) < Scalar(1));
+      }
+    }
+  }
+  CHECK(billiards::detail::power_of_two_scaled(V::Zero().eval()) == V::Zero());
+  const V infinite(limits::infinity(), 1, 0);
+  CHECK(billiards::detail::power_of_two_scaled(infinite) == infinite);
+}
+
+TEMPLATE_TEST_CASE("scaled_norm is the norm without overflow or underflow of the squares",
+                   "[runtime][detail]", float, double) {
   using Scalar = TestType;
   using limits = std::numeric_limits<Scalar>;
   using V = Eigen::Matrix<Scalar, 3, 1>;
@@ -255,8 +299,8 @@ TEMPLATE_TEST_CASE("scaled_norm is the norm without overflow or underflow of the
     const V v(static_cast<Scalar>(component(random)), static_cast<Scalar>(component(random)),
               static_cast<Scalar>(component(random)));
     const V w = v * std::ldexp(Scalar(1), e);  // exact where w stays normal
-    const long double expected = std::sqrt((long double)w[0] * w[0] + (long double)w[1] * w[1] +
-                                           (long double)w[2] * w[2]);
+    const long double expected =
+        std::sqrt((long double)w[0] * w[0] + (long double)w[1] * w[1] + (long double)w[2] * w[2]);
     INFO("exponent " << e);
     CHECK(std::fabs(billiards::detail::scaled_norm(w) - expected) <=
           4 * limits::epsilon() * expected + limits::denorm_min());

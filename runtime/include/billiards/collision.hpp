@@ -153,10 +153,19 @@ requires std::is_floating_point_v<Scalar>
                                                   : std::ldexp(x, exponent);
 }
 
+/// max_k |v_k|, in component order, by scalar std::max: for the short fixed-size vectors here Eigen's
+/// cwiseAbs().maxCoeff() builds a partial SIMD reduction that costs several times as much.
+template <typename Derived>
+[[nodiscard]] typename Derived::Scalar largest_magnitude(const Eigen::MatrixBase<Derived>& v) noexcept {
+  typename Derived::Scalar largest = std::fabs(v[0]);
+  for (Eigen::Index k = 1; k < v.size(); ++k) largest = std::max(largest, std::fabs(v[k]));
+  return largest;
+}
+
 /// The binary exponent of v's largest component magnitude (0 for a zero vector).
 template <typename Derived>
 [[nodiscard]] int largest_component_exponent(const Eigen::MatrixBase<Derived>& v) noexcept {
-  return binary_exponent(v.cwiseAbs().maxCoeff());
+  return binary_exponent(largest_magnitude(v));
 }
 
 /// v · 2^exponent, each component correctly rounded (exact unless it falls into the subnormal range):
@@ -175,8 +184,24 @@ template <typename Derived>
 /// (short of components 2^p times smaller than the largest, which change by less than rounding) and a
 /// collision along d does not depend on |d| (audit claim `beyond.any_normal.scale_invariant`); it keeps
 /// the multiple of d that a kernel returns from underflowing or overflowing because |d| is extreme.
+///
+/// For IEEE float and double whose largest component is normal and below the top two binades (every d
+/// but the subnormal, the huge and the non-finite) the factor 2^−e is built straight from that
+/// component's exponent field, f: e = f − bias + 1, so 2^−e has the field 2·bias − 1 − f — one
+/// integer subtraction, no branch on the exponent's range. The rest take times_power_of_two's general
+/// path; both give the same factor wherever both apply.
 template <typename Derived>
 [[nodiscard]] PlainVector<Derived> power_of_two_scaled(const Eigen::MatrixBase<Derived>& d) noexcept {
+  using Scalar = typename Derived::Scalar;
+  if constexpr (has_exponent_field<Scalar>) {
+    using Bits = FloatBits<Scalar>;
+    constexpr int fraction_bits = std::numeric_limits<Scalar>::digits - 1;
+    constexpr Bits bias = std::numeric_limits<Scalar>::max_exponent - 1;
+    const Bits field = std::bit_cast<Bits>(largest_magnitude(d)) >> fraction_bits;  // |·|: no sign bit
+    if (field - 1 < 2 * bias - 2) {  // 1 ≤ f ≤ 2 bias − 2 (unsigned): 2^−e is then a normal number
+      return d * std::bit_cast<Scalar>(static_cast<Bits>((2 * bias - 1 - field) << fraction_bits));
+    }
+  }
   return times_power_of_two(d, -largest_component_exponent(d));
 }
 
@@ -402,7 +427,7 @@ template <typename DP1, typename D1, typename DP2, typename D2>
   // speed component lie in [1/2, 1): no square the kernel forms overflows, and r² w·w underflows only
   // when r is below the precondition's 4 √(smallest normal) |p2 − p1|, however small or large the
   // inputs. The scalings are exact but for components that fall into the subnormal range.
-  const Scalar centre_distance = p.cwiseAbs().maxCoeff();
+  const Scalar centre_distance = detail::largest_magnitude(p);
   const int length_exponent = detail::binary_exponent(std::max(centre_distance, contact_distance));
   const int speed_exponent = detail::largest_component_exponent(w);
   // Spheres whose centres are closer than 2^−(digits + 2) r overlap by all but rounding: p·p − r² is
