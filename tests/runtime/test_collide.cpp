@@ -246,10 +246,8 @@ TEMPLATE_TEST_CASE("binary_exponent and power_of_two read and build the exponent
   }
 }
 
-TEMPLATE_TEST_CASE(
-    "power_of_two_scaled scales the largest component to at least 1/2 and below 1 as ldexp does, at every "
-    "exponent",
-    "[runtime][detail]", float, double) {
+TEMPLATE_TEST_CASE("power_of_two_scaled is frexp's and ldexp's scaling, at every exponent",
+                   "[runtime][detail]", float, double) {
   using Scalar = TestType;
   using limits = std::numeric_limits<Scalar>;
   using V = Eigen::Matrix<Scalar, 3, 1>;
