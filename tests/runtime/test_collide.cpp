@@ -30,6 +30,21 @@ Vector random_unit_normal(std::mt19937_64& random) {
   return (n / n.norm()).template cast<typename Vector::Scalar>();
 }
 
+// Calls sample(x) for positive finite x of Scalar at every exponent, subnormal ones and the top
+// binades included: each binade's first number, one at a random mantissa and its last number.
+template <typename Scalar, typename Sample>
+void at_every_exponent(std::mt19937_64& random, Sample sample) {
+  using limits = std::numeric_limits<Scalar>;
+  std::uniform_real_distribution<double> mantissa(1, 2);
+  for (int e = limits::min_exponent - limits::digits; e <= limits::max_exponent; ++e) {
+    for (const Scalar x :
+         {std::ldexp(Scalar(1), e - 1), std::ldexp(static_cast<Scalar>(mantissa(random)), e - 1),
+          std::nextafter(std::ldexp(Scalar(1), e), Scalar(0))}) {
+      if (x > 0 && std::isfinite(x)) sample(x);
+    }
+  }
+}
+
 template <typename Vector>
 Vector random_velocity(std::mt19937_64& random) {
   std::uniform_real_distribution<double> component(-10, 10);
@@ -223,19 +238,12 @@ TEMPLATE_TEST_CASE("binary_exponent and power_of_two read and build the exponent
   using Scalar = TestType;
   using limits = std::numeric_limits<Scalar>;
   std::mt19937_64 random(21);
-  std::uniform_real_distribution<double> mantissa(1, 2);
-  // Every exponent of the type, subnormal ones included, at random mantissas and at the ends.
-  for (int e = limits::min_exponent - limits::digits; e <= limits::max_exponent; ++e) {
-    for (const Scalar x :
-         {std::ldexp(Scalar(1), e - 1), std::ldexp(static_cast<Scalar>(mantissa(random)), e - 1),
-          std::nextafter(std::ldexp(Scalar(1), e), Scalar(0))}) {
-      if (!(x > 0) || !std::isfinite(x)) continue;
-      int expected = 0;
-      static_cast<void>(std::frexp(x, &expected));
-      INFO("x = " << x);
-      CHECK(billiards::detail::binary_exponent(x) == expected);
-    }
-  }
+  at_every_exponent<Scalar>(random, [](Scalar x) {
+    int expected = 0;
+    static_cast<void>(std::frexp(x, &expected));
+    INFO("x = " << x);
+    CHECK(billiards::detail::binary_exponent(x) == expected);
+  });
   CHECK(billiards::detail::binary_exponent(limits::denorm_min()) ==
         limits::min_exponent - limits::digits + 1);
   CHECK(billiards::detail::binary_exponent(limits::max()) == limits::max_exponent);
@@ -252,7 +260,7 @@ TEMPLATE_TEST_CASE("power_of_two_scaled is frexp's and ldexp's scaling, at every
   using limits = std::numeric_limits<Scalar>;
   using V = Eigen::Matrix<Scalar, 3, 1>;
   std::mt19937_64 random(23);
-  std::uniform_real_distribution<double> mantissa(1, 2), fraction(-1, 1);
+  std::uniform_real_distribution<double> fraction(-1, 1);
   // The reference by frexp and ldexp, component by component: d · 2^−e with e frexp's exponent of
   // the largest |component|; d itself where that is 0 or not finite.
   const auto expected = [](const V& d) {
@@ -261,27 +269,22 @@ TEMPLATE_TEST_CASE("power_of_two_scaled is frexp's and ldexp's scaling, at every
     if (largest > 0 && std::isfinite(largest)) static_cast<void>(std::frexp(largest, &e));
     return V(std::ldexp(d[0], -e), std::ldexp(d[1], -e), std::ldexp(d[2], -e));
   };
-  // Every exponent, subnormal and the top binades included (the fast path's edges), at the ends of
-  // each binade and at a random mantissa, the largest component in each place and of either sign.
-  for (int e = limits::min_exponent - limits::digits; e <= limits::max_exponent; ++e) {
-    for (const Scalar x :
-         {std::ldexp(Scalar(1), e - 1), std::ldexp(static_cast<Scalar>(mantissa(random)), e - 1),
-          std::nextafter(std::ldexp(Scalar(1), e), Scalar(0))}) {
-      if (!(x > 0) || !std::isfinite(x)) continue;
-      for (int place = 0; place < 3; ++place) {
-        V d(static_cast<Scalar>(fraction(random)) * x, static_cast<Scalar>(fraction(random)) * x,
-            static_cast<Scalar>(fraction(random)) * x);
-        d[place] = place == 1 ? -x : x;
-        INFO("d = " << d.transpose());
-        const V scaled = billiards::detail::power_of_two_scaled(d), reference = expected(d);
-        for (int k = 0; k < 3; ++k)
-          CHECK(std::bit_cast<billiards::detail::FloatBits<Scalar>>(scaled[k]) ==
-                std::bit_cast<billiards::detail::FloatBits<Scalar>>(reference[k]));
-        CHECK(billiards::detail::largest_magnitude(scaled) >= Scalar(0.5));
-        CHECK(billiards::detail::largest_magnitude(scaled) < Scalar(1));
-      }
+  // Every exponent (subnormal and the top binades are the fast path's edges), the largest component
+  // in each place and of either sign.
+  at_every_exponent<Scalar>(random, [&](Scalar x) {
+    for (int place = 0; place < 3; ++place) {
+      V d(static_cast<Scalar>(fraction(random)) * x, static_cast<Scalar>(fraction(random)) * x,
+          static_cast<Scalar>(fraction(random)) * x);
+      d[place] = place == 1 ? -x : x;
+      INFO("d = " << d.transpose());
+      const V scaled = billiards::detail::power_of_two_scaled(d), reference = expected(d);
+      for (int k = 0; k < 3; ++k)
+        CHECK(std::bit_cast<billiards::detail::FloatBits<Scalar>>(scaled[k]) ==
+              std::bit_cast<billiards::detail::FloatBits<Scalar>>(reference[k]));
+      CHECK(billiards::detail::largest_magnitude(scaled) >= Scalar(0.5));
+      CHECK(billiards::detail::largest_magnitude(scaled) < Scalar(1));
     }
-  }
+  });
   CHECK(billiards::detail::power_of_two_scaled(V::Zero().eval()) == V::Zero());
   const V infinite(limits::infinity(), 1, 0);
   CHECK(billiards::detail::power_of_two_scaled(infinite) == infinite);
