@@ -423,13 +423,7 @@ void bandwidth_ceiling(benchmark::State& state) {
     // Each array read once and v1, v2 written once, as collide_batch makes.
     for (std::size_t begin = 0; begin < count; begin += block) {
       const std::size_t end = std::min(count, begin + block);
-      if (prefetched && count >= billiards::detail::batch_prefetch_from) {
-        const std::size_t next_end = std::min(count, end + block);
-        billiards::detail::prefetch_items<false>(masses, end, next_end);
-        billiards::detail::prefetch_items<false>(d, end, next_end);
-        billiards::detail::prefetch_items<true>(x, end, next_end);
-        billiards::detail::prefetch_items<true>(y, end, next_end);
-      }
+      if (prefetched) billiards::detail::prefetch_next_block(end, count, masses, d, x, y);
       BILLIARDS_BENCH_ARRAYS_DO_NOT_OVERLAP
       for (std::size_t i = begin; i < end; ++i) {
         for (int k = 0; k < 3; ++k) {

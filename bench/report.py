@@ -296,10 +296,9 @@ has the batch's own access pattern — it reads the same arrays and writes v1 an
 multiply-add per component, and is the faster of two such loops: one pass left to the hardware
 prefetcher (`bandwidth/*`), and the batch's blocks of 1024 pairs with its software prefetch of the next
 block from 2^17 pairs up (`bandwidth_prefetched/*`); memcpy is no ceiling (below glibc's non-temporal
-threshold it uses cached stores). The division limit is the ratio form's five divisions per pair alone (the batch
-takes that form only for blocks with a mass outside the plain range), vectorised over
-arrays of the same length (`divisions/*`): where the data sit in cache it, not the bandwidth, bounds the
-batch.
+threshold it uses cached stores). The division limit is the ratio form's five divisions per pair alone
+(the batch takes that form only for blocks with a mass outside the plain range), vectorised over arrays
+of the same length (`divisions/*`): where the data sit in cache it, not the bandwidth, bounds the batch.
 
 {batch_table(runs)}
 
