@@ -6,7 +6,9 @@
 // ball takes part in an event). The box is divided into a grid of cells at least one diameter wide;
 // each ball's next event is the earlier of its next cell crossing and its earliest predicted
 // collision with a ball in its own or a neighbouring cell (billiards::time_of_impact on the nearest
-// periodic image), so a prediction costs the same whatever N. The balls' next events sit in an event
+// periodic image), so a prediction costs the same whatever N. After a cell crossing only the cells that
+// have just come around the ball are searched, the earliest collision found before kept beside them
+// (3^(D−1) cells, not 3^D). The balls' next events sit in an event
 // calendar (event_calendar.hpp: a calendar queue, O(1) a step on average). A collision event records its
 // partner's collision count: when the partner has collided since, the event is stale and the ball is
 // predicted again. Collisions are resolved by billiards::collide_if_approaching on the nearest images.
@@ -177,7 +179,10 @@ class Gas {
       own_[i].cell = static_cast<std::uint32_t>(cell_index(own_[i].coordinates));
       insert(i);
     }
-    for (std::size_t i = 0; i < n; ++i) own_[i].event = next_event(i);
+    for (std::size_t i = 0; i < n; ++i) {
+      predict_crossing(i);
+      predict_collisions(i, all_axes, 0);
+    }
     refile();
     initial_temperature_ = temperature();
   }
@@ -286,12 +291,7 @@ class Gas {
   static constexpr std::uint32_t none = std::numeric_limits<std::uint32_t>::max();
   using Cell = Eigen::Matrix<int, D, 1>;
 
-  struct Event {
-    double time = std::numeric_limits<double>::infinity();
-    std::uint32_t partner = none;  ///< none: a cell crossing
-    std::uint64_t partner_collisions = 0;
-    int axis = 0, step = 0;  ///< the crossing: along which axis, +1 or −1
-  };
+  static constexpr double infinity = std::numeric_limits<double>::infinity();
 
   static double standard_error(const std::vector<double>& x) {
     if (x.size() < 2) return 0;
@@ -369,47 +369,79 @@ class Gas {
     ball_[i].updated = now_;
   }
 
-  // Ball i's next event and its place in the calendar.
+  // Ball i's next event, predicted in full, and its place in the calendar.
   void predict(std::size_t i) {
-    own_[i].event = next_event(i);
-    calendar_.update(static_cast<std::uint32_t>(i), own_[i].event.time);
+    predict_crossing(i);
+    own_[i].collision_time = infinity;
+    own_[i].partner = none;
+    predict_collisions(i, all_axes, 0);
+    calendar_.update(static_cast<std::uint32_t>(i), own_[i].event_time());
   }
 
-  // Ball i's next event: the earlier of its next cell crossing and its earliest collision with a ball
-  // of the 3^D cells around its own.
-  Event next_event(std::size_t i) {
+  // After ball i crossed into a new cell along `axis` by `step`: its next crossing, and collisions with
+  // the balls of the cells that have just come around it (3^(D−1), not 3^D: the rest were around it
+  // before). The earliest collision found before stays a candidate: its pair was predicted on the
+  // same paths, and a pair first around it now lies in the new cells. (A ball of the new cells that
+  // predicted ball i on its own paths since keeps that event itself.)
+  void predict_after_crossing(std::size_t i, int axis, int step) {
+    predict_crossing(i);
+    predict_collisions(i, axis, step);
+    calendar_.update(static_cast<std::uint32_t>(i), own_[i].event_time());
+  }
+
+  // Ball i's next cell crossing: the earliest time it reaches a face of its cell.
+  void predict_crossing(std::size_t i) {
     bring_to_now(i);
-    Event best;
+    Own& own = own_[i];
+    own.crossing_time = infinity;
     for (int k = 0; k < D; ++k) {
       const double v = ball_[i].velocity[k];
       if (v == 0) continue;
-      const double bound = (own_[i].coordinates[k] + (v > 0 ? 1 : 0)) * cell_width_;
+      const double bound = (own.coordinates[k] + (v > 0 ? 1 : 0)) * cell_width_;
       const double t = now_ + std::max(0.0, (bound - ball_[i].position[k]) / v);
-      if (t < best.time) best = Event{t, none, 0, k, v > 0 ? 1 : -1};
+      if (t < own.crossing_time) {
+        own.crossing_time = t;
+        own.axis = static_cast<std::int8_t>(k);
+        own.step = static_cast<std::int8_t>(v > 0 ? 1 : -1);
+      }
     }
-    // The cells around, their heads and their first balls asked of memory all at once before any is
-    // read: beyond the caches the misses then overlap instead of following one another.
+  }
+
+  static constexpr int all_axes = -1;
+
+  // Ball i's earliest collision with a ball of the cells around its own (every one of the 3^D when
+  // `axis` is all_axes, else those one step beyond it along `axis`), kept where earlier than the
+  // candidate it has. Ball i is at now.
+  void predict_collisions(std::size_t i, int axis, int step) {
+    // The cells, their heads and their first balls asked of memory all at once before any is read:
+    // beyond the caches the misses then overlap instead of following one another.
     constexpr int around = D == 2 ? 9 : 27;
     std::uint32_t first[around];
+    int cells = 0;
     {
       std::size_t cell[around];
       Cell offset = Cell::Constant(-1);
       for (int n = 0; n < around; ++n) {
-        Cell c;
-        for (int k = 0; k < D; ++k)
-          c[k] = (own_[i].coordinates[k] + offset[k] + cells_per_side_) % cells_per_side_;
-        cell[n] = cell_index(c);
-        __builtin_prefetch(&head_[cell[n]]);
+        if (axis == all_axes || offset[axis] == step) {
+          Cell c;
+          for (int k = 0; k < D; ++k)
+            c[k] = (own_[i].coordinates[k] + offset[k] + cells_per_side_) % cells_per_side_;
+          cell[cells] = cell_index(c);
+          __builtin_prefetch(&head_[cell[cells]]);
+          ++cells;
+        }
         int k = 0;
         while (k < D && offset[k] == 1) offset[k++] = -1;
         if (k < D) ++offset[k];
       }
-      for (int n = 0; n < around; ++n) {
+      for (int n = 0; n < cells; ++n) {
         first[n] = head_[cell[n]];
         if (first[n] != none) __builtin_prefetch(&ball_[first[n]]);
       }
     }
-    for (int n = 0; n < around; ++n) {
+    Own& own = own_[i];
+    const double before = own.collision_time;
+    for (int n = 0; n < cells; ++n) {
       for (std::uint32_t j = first[n]; j != none; j = ball_[j].next) {
         if (j == i) continue;
         const Vector other = ball_[j].position + ball_[j].velocity * (now_ - ball_[j].updated);
@@ -418,17 +450,19 @@ class Gas {
         if (p.dot(ball_[j].velocity - ball_[i].velocity) >= 0) continue;
         const double t =
             billiards::time_of_impact(Vector::Zero().eval(), ball_[i].velocity, p, ball_[j].velocity, 1.0);
-        if (now_ + t < best.time) best = Event{now_ + t, j, 0, 0, 0};
+        if (now_ + t < own.collision_time) {
+          own.collision_time = now_ + t;
+          own.partner = j;
+        }
       }
     }
-    if (best.partner != none) best.partner_collisions = own_[best.partner].collisions;
-    return best;
+    if (own.collision_time < before) own.partner_collisions = own_[own.partner].collisions;
   }
 
   // Files every ball's next event in the calendar anew, its bucket width chosen from the times now.
   void refile() {
     std::vector<double> times(own_.size());
-    for (std::size_t i = 0; i < times.size(); ++i) times[i] = own_[i].event.time;
+    for (std::size_t i = 0; i < times.size(); ++i) times[i] = own_[i].event_time();
     calendar_.reset(times, now_);
   }
 
@@ -453,7 +487,7 @@ class Gas {
     permute(ball_);
     permute(own_);
     for (Own& o : own_) {
-      if (o.event.partner != none) o.event.partner = renumbered[o.event.partner];
+      if (o.partner != none) o.partner = renumbered[o.partner];
     }
     std::fill(head_.begin(), head_.end(), none);
     for (std::size_t k = n; k-- > 0;) insert(k);
@@ -470,23 +504,24 @@ class Gas {
       const std::uint32_t earliest = calendar_.earliest();
       if (earliest == EventCalendar::none) throw NoCollisions("no ball has a next event");
       const std::size_t i = earliest;
-      const Event e = own_[i].event;
-      now_ = e.time;
-      if (e.partner == none) {  // a cell crossing
+      Own& own = own_[i];
+      now_ = own.event_time();
+      if (own.crossing_first()) {  // a cell crossing
         bring_to_now(i);
         remove(i);
-        int& c = own_[i].coordinates[e.axis];
-        c += e.step;
-        if (c == cells_per_side_) c = 0, ball_[i].position[e.axis] -= side_;
-        if (c < 0) c = cells_per_side_ - 1, ball_[i].position[e.axis] += side_;
-        own_[i].cell = static_cast<std::uint32_t>(cell_index(own_[i].coordinates));
+        const int axis = own.axis, step = own.step;
+        int& c = own.coordinates[axis];
+        c += step;
+        if (c == cells_per_side_) c = 0, ball_[i].position[axis] -= side_;
+        if (c < 0) c = cells_per_side_ - 1, ball_[i].position[axis] += side_;
+        own.cell = static_cast<std::uint32_t>(cell_index(own.coordinates));
         insert(i);
         ++crossings_;
-        predict(i);
-      } else if (own_[e.partner].collisions != e.partner_collisions) {
+        predict_after_crossing(i, axis, step);
+      } else if (own_[own.partner].collisions != own.partner_collisions) {
         predict(i);  // stale: the partner has collided since
       } else {
-        const std::size_t j = e.partner;
+        const std::size_t j = own.partner;
         bring_to_now(i);
         bring_to_now(j);
         const Vector image = ball_[i].position + nearest_image(ball_[i].position, ball_[j].position);
@@ -536,13 +571,18 @@ class Gas {
   };
   std::vector<Ball> ball_;
   std::vector<std::uint32_t> head_;
-  // What an event reads of its own ball, in one place (one cache line): its next event, its cell, its
-  // collision count.
+  // What an event reads of its own ball, in one place (one cache line): its next crossing, its earliest
+  // predicted collision (the partner and the partner's collision count then), its cell, its collision
+  // count. Its next event is the earlier of the two (the crossing where they tie).
   struct alignas(64) Own {
-    Event event;
-    Cell coordinates = Cell::Zero();
+    double crossing_time = infinity, collision_time = infinity;
+    std::uint64_t partner_collisions = 0, collisions = 0;
+    std::uint32_t partner = none;
     std::uint32_t cell = 0;
-    std::uint64_t collisions = 0;
+    Cell coordinates = Cell::Zero();
+    std::int8_t axis = 0, step = 0;  ///< the crossing: along which axis, +1 or −1
+    double event_time() const { return std::min(crossing_time, collision_time); }
+    bool crossing_first() const { return !(collision_time < crossing_time); }
   };
   std::vector<Own> own_;
   EventCalendar calendar_;
