@@ -15,6 +15,8 @@
 // year. Any width gives the right order; the width decides only the speed.
 #pragma once
 
+#include "prefetch.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
@@ -60,6 +62,7 @@ class EventCalendar {
     width_ = std::max(width_, std::fabs(now) * 0x1p-50);
     if (!(width_ > 0) || !std::isfinite(width_)) width_ = 1;
     year_ = current_ = bucket_number(now);
+    looked_ahead_from_ = std::numeric_limits<std::int64_t>::min();
     for (std::size_t i = 0; i < times.size(); ++i) file(static_cast<std::uint32_t>(i), times[i]);
   }
 
@@ -69,6 +72,21 @@ class EventCalendar {
   void update(std::uint32_t i, double time) {
     unfile(i);
     file(i, time);
+  }
+
+  /// A look ahead at the events that come next, for prefetching: once the front has moved to a new
+  /// bucket, calls `soon(item, ahead)` for each item of the `buckets` buckets after it (`ahead` 1 for
+  /// the next, 2 for the one after, …), and asks memory for the calendar's records of the items of the
+  /// bucket after those. A hint, never an order: an item filed meanwhile may come first.
+  template <class Soon>
+  void look_ahead(int buckets, Soon&& soon) {
+    if (current_ == looked_ahead_from_) return;
+    looked_ahead_from_ = current_;
+    for (int ahead = 1; ahead <= buckets; ++ahead) {
+      for (std::uint32_t i = head_[bucket_index(current_ + ahead)]; i != none; i = item_[i].next) soon(i, ahead);
+    }
+    const std::uint32_t beyond = head_[bucket_index(current_ + buckets + 1)];
+    if (beyond != none) prefetch(&item_[beyond]);
   }
 
   /// The item with the earliest time (any one of equal times); none when every time is +∞.
@@ -87,7 +105,7 @@ class EventCalendar {
         next_year();
         continue;
       }
-      std::uint32_t& head = head_[static_cast<std::uint64_t>(current_) & mask_];
+      std::uint32_t& head = head_[bucket_index(current_)];
       for (std::uint32_t i = head; i != none;) {
         const std::uint32_t next = item_[i].next;
         to_front(i);
@@ -114,6 +132,7 @@ class EventCalendar {
     return item_[e.item].version != e.version || item_[e.item].bucket != front;
   }
 
+  std::size_t bucket_index(std::int64_t number) const { return static_cast<std::uint64_t>(number) & mask_; }
   std::int64_t bucket_number(double time) const {
     return static_cast<std::int64_t>(std::floor(time / width_));
   }
@@ -195,6 +214,7 @@ class EventCalendar {
   std::uint32_t overflow_ = none;
   std::size_t mask_ = 0, in_ring_ = 0;
   std::int64_t year_ = 0, current_ = 0;
+  std::int64_t looked_ahead_from_ = std::numeric_limits<std::int64_t>::min();
   double width_ = 1;
 };
 

@@ -20,6 +20,7 @@
 #pragma once
 
 #include "event_calendar.hpp"
+#include "prefetch.hpp"
 
 #include <billiards/collision.hpp>
 
@@ -427,7 +428,7 @@ class Gas {
           for (int k = 0; k < D; ++k)
             c[k] = (own_[i].coordinates[k] + offset[k] + cells_per_side_) % cells_per_side_;
           cell[cells] = cell_index(c);
-          __builtin_prefetch(&head_[cell[cells]]);
+          prefetch(&head_[cell[cells]]);
           ++cells;
         }
         int k = 0;
@@ -436,7 +437,7 @@ class Gas {
       }
       for (int n = 0; n < cells; ++n) {
         first[n] = head_[cell[n]];
-        if (first[n] != none) __builtin_prefetch(&ball_[first[n]]);
+        if (first[n] != none) prefetch(&ball_[first[n]]);
       }
     }
     Own& own = own_[i];
@@ -457,6 +458,21 @@ class Gas {
       }
     }
     if (own.collision_time < before) own.partner_collisions = own_[own.partner].collisions;
+  }
+
+  // Asks memory for what the next events will read, so that their misses overlap this event's work
+  // instead of following it (the calendar's look ahead): the records of the balls two buckets ahead,
+  // and for those one bucket ahead, whose records were asked for before, their partners' records.
+  void prefetch_next_events() {
+    calendar_.look_ahead(2, [this](std::uint32_t k, int ahead) {
+      if (ahead > 1) {
+        prefetch(&own_[k]);
+        prefetch(&ball_[k]);
+      } else if (const Own& own = own_[k]; !own.crossing_first()) {
+        prefetch(&own_[own.partner]);
+        prefetch(&ball_[own.partner]);
+      }
+    });
   }
 
   // Files every ball's next event in the calendar anew, its bucket width chosen from the times now.
@@ -504,6 +520,7 @@ class Gas {
       const std::uint32_t earliest = calendar_.earliest();
       if (earliest == EventCalendar::none) throw NoCollisions("no ball has a next event");
       const std::size_t i = earliest;
+      if (ball_.size() >= look_ahead_from) prefetch_next_events();
       Own& own = own_[i];
       now_ = own.event_time();
       if (own.crossing_first()) {  // a cell crossing
@@ -588,6 +605,9 @@ class Gas {
   EventCalendar calendar_;
   std::uint64_t crossings_ = 0, since_refile_ = 0;
   static constexpr std::size_t reorder_from = 4096;  ///< fewer balls stay in the caches anyway
+  /// From here the balls lie beyond the caches and the look ahead pays (10^4 disks: 2 % slower with it,
+  /// 10^5: 12–16 % faster; at 1024 it costs 10 %).
+  static constexpr std::size_t look_ahead_from = std::size_t{1} << 15;
   double virial_ = 0, largest_overlap_ = 0, initial_temperature_ = 1, largest_temperature_change_ = 0;
 };
 

@@ -1,10 +1,12 @@
 // The event calendar of examples/event_calendar.hpp against a reference it does not share code with:
 // a std::set of (time, item) pairs. Random moves of random items, times drawn near now, far beyond
-// the year, equal, and +∞; each step the earliest must be an item with the reference's earliest time.
+// the year, equal, and +∞; each step the earliest must be an item with the reference's earliest time,
+// and what the look ahead reports must be the pending items of a span of times after it, nearer first.
 #include "event_calendar.hpp"
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <random>
@@ -17,6 +19,34 @@ using billiards_example::EventCalendar;
 namespace {
 
 constexpr double inf = std::numeric_limits<double>::infinity();
+
+// The look ahead's report, where it makes one: items with finite times after the earliest's, none
+// twice, those one bucket ahead no later than those two ahead, and every item whose time lies
+// within the span reported among them (a whole bucket, not its first items).
+void check_look_ahead(EventCalendar& calendar, const std::set<std::pair<double, std::uint32_t>>& reference,
+                      const std::vector<double>& times, std::uint32_t earliest) {
+  std::vector<std::pair<std::uint32_t, int>> soon;
+  calendar.look_ahead(2, [&](std::uint32_t i, int ahead) { soon.push_back({i, ahead}); });
+  if (soon.empty()) return;
+  double lo = inf, hi = -inf, latest_first = -inf, earliest_second = inf;
+  std::set<std::uint32_t> seen;
+  for (const auto& [i, ahead] : soon) {
+    REQUIRE(i < times.size());
+    REQUIRE((ahead == 1 || ahead == 2));
+    REQUIRE(seen.insert(i).second);
+    REQUIRE(std::isfinite(times[i]));
+    REQUIRE(times[i] >= times[earliest]);
+    lo = std::min(lo, times[i]);
+    hi = std::max(hi, times[i]);
+    if (ahead == 1) latest_first = std::max(latest_first, times[i]);
+    if (ahead == 2) earliest_second = std::min(earliest_second, times[i]);
+  }
+  REQUIRE(latest_first <= earliest_second);
+  for (auto it = reference.lower_bound({lo, 0}); it != reference.end() && it->first <= hi; ++it) {
+    INFO("item " << it->second << " at " << it->first << " lies in the span reported, [" << lo << ", " << hi << "]");
+    REQUIRE(seen.count(it->second) == 1);
+  }
+}
 
 // Runs `steps` events: each takes the earliest item, moves now to its time and files it (and
 // `others` random items) at a later time drawn by `draw`.
@@ -46,6 +76,7 @@ void run_against_reference(std::size_t items, int steps, int others, Draw draw) 
     REQUIRE(earliest != EventCalendar::none);
     REQUIRE(times[earliest] == reference.begin()->first);
     REQUIRE(calendar.time(earliest) == times[earliest]);
+    check_look_ahead(calendar, reference, times, earliest);
     now = times[earliest];
     move(earliest, draw(random, now));
     for (int k = 0; k < others; ++k) move(pick(random), draw(random, now));

@@ -86,6 +86,18 @@ TEST_CASE("a million collisions keep the energy, the momentum and the spheres ap
   check_conservation(r);
 }
 
+TEST_CASE("a gas beyond the caches, where each event prefetches the next ones, keeps its laws", "[gas]") {
+  // 40000 disks: above the 2^15 balls from which the gas looks ahead in its calendar (and above the
+  // 4096 from which it renumbers the balls by cell), so these paths run here and under the sanitizers.
+  for (const int dimension : {2, 3}) {
+    const gas::Result r = gas::run(options(dimension, 40000, 0.3, 120000, 40000));
+    INFO(dimension << "-D");
+    CHECK(r.collisions == 120000);
+    check_conservation(r);
+    check_identity(r);
+  }
+}
+
 TEST_CASE("no pair overlaps at the end: no collision was missed", "[gas]") {
   for (const int dimension : {2, 3}) {
     const auto check = [&](auto gas_of_dimension) {
