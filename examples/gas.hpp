@@ -180,10 +180,7 @@ class Gas {
       own_[i].cell = static_cast<std::uint32_t>(cell_index(own_[i].coordinates));
       insert(i);
     }
-    for (std::size_t i = 0; i < n; ++i) {
-      predict_crossing(i);
-      predict_collisions(i, all_axes, 0);
-    }
+    for (std::size_t i = 0; i < n; ++i) predict_in_full(i);
     refile();
     initial_temperature_ = temperature();
   }
@@ -372,11 +369,17 @@ class Gas {
 
   // Ball i's next event, predicted in full, and its place in the calendar.
   void predict(std::size_t i) {
+    predict_in_full(i);
+    calendar_.update(static_cast<std::uint32_t>(i), own_[i].event_time());
+  }
+
+  // Ball i's next crossing and its earliest collision with a ball of the 3^D cells around it, any
+  // candidate it had forgotten.
+  void predict_in_full(std::size_t i) {
     predict_crossing(i);
     own_[i].collision_time = infinity;
     own_[i].partner = none;
     predict_collisions(i, all_axes, 0);
-    calendar_.update(static_cast<std::uint32_t>(i), own_[i].event_time());
   }
 
   // After ball i crossed into a new cell along `axis` by `step`: its next crossing, and collisions with
