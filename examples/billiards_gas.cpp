@@ -52,6 +52,7 @@ std::string json(const billiards_example::gas::Result& r) {
       << "  \"largest_temperature_change\": " << json_number(r.largest_temperature_change) << ",\n"
       << "  \"momentum\": " << json_number(r.momentum) << ",\n"
       << "  \"largest_overlap\": " << json_number(r.largest_overlap) << ",\n"
+      << "  \"largest_gap\": " << json_number(r.largest_gap) << ",\n"
       << "  \"cell_crossings\": " << r.cell_crossings << ",\n"
       << "  \"events_per_second\": " << json_number(r.events_per_second) << "\n"
       << "}\n";

@@ -9,9 +9,9 @@
 // periodic image), so a prediction costs the same whatever N. After a cell crossing only the cells that
 // have just come around the ball are searched, the earliest collision found before kept beside them
 // (3^(D−1) cells, not 3^D). The balls' next events sit in an event
-// calendar (event_calendar.hpp: a calendar queue, O(1) a step on average). A collision event records its
-// partner's collision count: when the partner has collided since, the event is stale and the ball is
-// predicted again. Collisions are resolved by billiards::collide_if_approaching on the nearest images.
+// calendar (event_calendar.hpp: a calendar queue, O(1) a step on average). Collisions are numbered; a collision event records
+// the number of the last collision before its prediction: when the partner has collided since, the
+// event is stale and the ball is predicted again. Collisions are resolved by billiards::collide_if_approaching on the nearest images.
 //
 // Measured over the span after the equilibration: the collision virial Σ r_ij·Δp_i (r_ij = r_i − r_j at
 // contact, Δp_i ball i's change of momentum), which gives Z = PV/(N kT) = 1 + Σ r_ij·Δp_i/(d N kT t),
@@ -68,6 +68,9 @@ struct Result {
   double largest_temperature_change = 0;  ///< |kT − kT0|/kT0, the largest over the blocks' ends
   double momentum = 0;                    ///< |Σ m v| at the end
   double largest_overlap = 0;             ///< in diameters, over every collision
+  /// In diameters, over every collision: how far apart beyond touching the centres were (a collision
+  /// taken when it is not due, from a stale prediction, shows here).
+  double largest_gap = 0;
   double events_per_second = 0;           ///< collisions per second of wall time over the measured span
 };
 
@@ -222,6 +225,7 @@ class Gas {
     r.largest_temperature_change = largest_temperature_change_;
     r.momentum = momentum().norm();
     r.largest_overlap = largest_overlap_;
+    r.largest_gap = largest_gap_;
     r.events_per_second = seconds > 0 ? static_cast<double>(done) / seconds : 0;
     const double n = static_cast<double>(options_.balls), kT = initial_temperature_;
     double total_virial = 0;
@@ -460,7 +464,7 @@ class Gas {
         }
       }
     }
-    if (own.collision_time < before) own.partner_collisions = own_[own.partner].collisions;
+    if (own.collision_time < before) own.predicted_after = collision_number_;
   }
 
   // Asks memory for what the next events will read, so that their misses overlap this event's work
@@ -488,7 +492,7 @@ class Gas {
   // Renumbers the balls in the order of their cells, so that balls near in space are near in memory
   // (a gas mixes them, and beyond the caches every prediction would otherwise miss them). Nothing
   // physical changes: every ball is brought to now on its own line, and the events keep their times,
-  // with partners renumbered (their collision counts move with them), filed anew in the calendar.
+  // with partners renumbered, filed anew in the calendar.
   void reorder() {
     const std::size_t n = ball_.size();
     for (std::size_t i = 0; i < n; ++i) bring_to_now(i);
@@ -538,22 +542,23 @@ class Gas {
         insert(i);
         ++crossings_;
         predict_after_crossing(i, axis, step);
-      } else if (own_[own.partner].collisions != own.partner_collisions) {
+      } else if (own_[own.partner].last_collision > own.predicted_after) {
         predict(i);  // stale: the partner has collided since
       } else {
         const std::size_t j = own.partner;
         bring_to_now(i);
         bring_to_now(j);
         const Vector image = ball_[i].position + nearest_image(ball_[i].position, ball_[j].position);
-        largest_overlap_ = std::max(largest_overlap_, 1 - (image - ball_[i].position).norm());
+        const double distance = (image - ball_[i].position).norm();
+        largest_overlap_ = std::max(largest_overlap_, 1 - distance);
+        largest_gap_ = std::max(largest_gap_, distance - 1);
         const auto [vi, vj] = billiards::collide_if_approaching(1.0, ball_[i].position, ball_[i].velocity,
                                                                 1.0, image, ball_[j].velocity);
         const Vector impulse = vi - ball_[i].velocity;
         const bool changed = !(vi.array() == ball_[i].velocity.array()).all();
         ball_[i].velocity = vi;
         ball_[j].velocity = vj;
-        ++own_[i].collisions;
-        ++own_[j].collisions;
+        own_[i].last_collision = own_[j].last_collision = ++collision_number_;
         predict(i);
         predict(j);
         if (changed) {
@@ -592,11 +597,13 @@ class Gas {
   std::vector<Ball> ball_;
   std::vector<std::uint32_t> head_;
   // What an event reads of its own ball, in one place (one cache line): its next crossing, its earliest
-  // predicted collision (the partner and the partner's collision count then), its cell, its collision
-  // count. Its next event is the earlier of the two (the crossing where they tie).
+  // predicted collision (the partner, and the number of the last collision before it was predicted),
+  // its cell, the number of its own last collision. Its next event is the earlier of the two (the
+  // crossing where they tie). A prediction reads nothing of the partner's record: the event checks, when
+  // it comes, that the partner's last collision is not a later one.
   struct alignas(64) Own {
     double crossing_time = infinity, collision_time = infinity;
-    std::uint64_t partner_collisions = 0, collisions = 0;
+    std::uint64_t predicted_after = 0, last_collision = 0;
     std::uint32_t partner = none;
     std::uint32_t cell = 0;
     Cell coordinates = Cell::Zero();
@@ -607,11 +614,12 @@ class Gas {
   std::vector<Own> own_;
   EventCalendar calendar_;
   std::uint64_t crossings_ = 0, since_refile_ = 0;
+  std::uint64_t collision_number_ = 0;  ///< collisions resolved so far, every event's included
   static constexpr std::size_t reorder_from = 4096;  ///< fewer balls stay in the caches anyway
   /// From here the balls lie beyond the caches and the look ahead pays (10^4 disks: 2 % slower with it,
   /// 10^5: 12–16 % faster; at 1024 it costs 10 %).
   static constexpr std::size_t look_ahead_from = std::size_t{1} << 15;
-  double virial_ = 0, largest_overlap_ = 0, initial_temperature_ = 1, largest_temperature_change_ = 0;
+  double virial_ = 0, largest_overlap_ = 0, largest_gap_ = 0, initial_temperature_ = 1, largest_temperature_change_ = 0;
 };
 
 /// Validates `options`, runs the gas of its dimension and returns what it measured.

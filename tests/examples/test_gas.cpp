@@ -1,7 +1,7 @@
 // The hard-sphere gas of examples/gas.hpp against results no one here wrote: the equations of state
 // of Henderson (disks) and Carnahan and Starling (spheres), the virial series at low density, the
 // identity that ties the virial to the collision rate; conservation of energy and momentum; no overlap,
-// checked over every pair at the end; and the arguments it rejects.
+// checked over every pair at the end; every collision taken at contact; and the arguments it rejects.
 #include "gas.hpp"
 
 #include <catch2/catch.hpp>
@@ -48,6 +48,7 @@ void check_conservation(const gas::Result& r) {
   CHECK(r.largest_temperature_change < 1e-12);
   CHECK(r.momentum < 1e-10);
   CHECK(r.largest_overlap < 1e-9);
+  CHECK(r.largest_gap < 1e-9);  // no collision taken before the balls touch (a stale one)
 }
 
 }  // namespace
