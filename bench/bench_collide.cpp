@@ -1,7 +1,7 @@
 // Figures, not pass/fail: one collision per call for the generated code beside hand-written
 // formulas (the paper's, an engine's with stored inverse masses) and a plain Eigen expression, over the
-// same 4096 random cases; the restitution, direction and friction calls beside their plain forms; and
-// the batch path against a bandwidth ceiling with its own access pattern and against its division
+// same 4096 random cases; the restitution, direction, friction and time-of-impact calls beside their
+// plain forms; and the batch path against a bandwidth ceiling with its own access pattern and against its division
 // limit. Every benchmark is timed in real (wall-clock) time. Report ratios from one run (the machines
 // are shared).
 //
@@ -229,6 +229,54 @@ template <typename Scalar>
 void hand_written_friction(benchmark::State& state) {
   one_collision_per_call<Scalar>(state, friction_formula<Scalar>);
 }
+// When two spheres touch: centres p1 and p2 a gap of 0 to 9 apart beyond the contact distance 1, along
+// a random direction, with the collide cases' velocities (about half the pairs approach, and some of
+// those miss), as an event-driven simulation predicts its neighbours.
+template <typename Scalar>
+struct Impact {
+  Eigen::Matrix<Scalar, 3, 1> p1, v1, p2, v2;
+};
+
+template <typename Scalar>
+const std::vector<Impact<Scalar>>& impact_cases() {
+  static const std::vector<Impact<Scalar>> all = [] {
+    std::mt19937_64 random(2024);
+    std::uniform_real_distribution<double> coordinate(-5, 5), gap(0, 9);
+    std::normal_distribution<double> gaussian;
+    const std::vector<Case<Scalar>>& collisions = random_cases<Scalar>();
+    std::vector<Impact<Scalar>> made(collisions.size());
+    for (std::size_t i = 0; i < made.size(); ++i) {
+      const Eigen::Vector3d p1(coordinate(random), coordinate(random), coordinate(random));
+      const Eigen::Vector3d direction =
+          Eigen::Vector3d(gaussian(random), gaussian(random), gaussian(random)).normalized();
+      made[i] = {p1.cast<Scalar>(), collisions[i].v1, (p1 + (1 + gap(random)) * direction).cast<Scalar>(),
+                 collisions[i].v2};
+    }
+    return made;
+  }();
+  return all;
+}
+
+template <typename Scalar>
+void generated_time_of_impact(benchmark::State& state) {
+  one_call_per_case(state, impact_cases<Scalar>(), [](const Impact<Scalar>& c) {
+    return billiards::time_of_impact(c.p1, c.v1, c.p2, c.v2, Scalar(1));
+  });
+}
+// By hand: a = w·w, b = p·w, c = p·p − r², the earlier root (−b − √(b² − a c))/a; +∞ when they
+// separate or miss, 0 when they already touch.
+template <typename Scalar>
+void hand_written_time_of_impact(benchmark::State& state) {
+  one_call_per_case(state, impact_cases<Scalar>(), [](const Impact<Scalar>& c) {
+    const Eigen::Matrix<Scalar, 3, 1> p = c.p2 - c.p1, w = c.v2 - c.v1;
+    const Scalar b = p.dot(w), a = w.dot(w), gap = p.dot(p) - Scalar(1);
+    const Scalar discriminant = b * b - a * gap;
+    if (b >= 0 || discriminant <= 0) return std::numeric_limits<Scalar>::infinity();
+    if (gap < 0) return Scalar(0);
+    return (-b - std::sqrt(discriminant)) / a;
+  });
+}
+
 // The raw derivation before simplification (quadratic formula with √D), emitted by derive as a
 // reference kernel, in the same wrapper as collide().
 template <typename Scalar>
@@ -463,6 +511,8 @@ void register_type(const std::string& type) {
       {"friction_formula", hand_written_friction<Scalar>},
       {"evolve", generated_evolve<Scalar>},
       {"evolve_formula", hand_written_evolve<Scalar>},
+      {"time_of_impact", generated_time_of_impact<Scalar>},
+      {"time_of_impact_formula", hand_written_time_of_impact<Scalar>},
   };
   for (const auto& [variant, function] : one_call) {
     benchmark::RegisterBenchmark(("collide/" + std::string(variant) + "/" + type).c_str(), function)

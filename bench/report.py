@@ -76,7 +76,9 @@ def other_calls_table(runs):
              ("friction", "`collide_with_friction`", "J_n, k = (7/2)(1/m1 + 1/m2), j = min(μ J_n, |u_t|/k), J/m",
               "measured"),
              ("evolve", "`evolve` (half a slide on the cloth)", "v0 − μ_s g t û, ω and p by the sliding closed form",
-              "measured")]
+              "measured"),
+             ("time_of_impact", "`time_of_impact(p1, v1, p2, v2, r)`",
+              "a = w·w, b = p·w, c = p·p − r², (−b − √(b² − a c))/a", "measured")]
     for key, call, plain, goal in calls:
         row = [call, plain]
         for scalar in ("double", "float"):

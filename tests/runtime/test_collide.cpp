@@ -254,6 +254,32 @@ TEMPLATE_TEST_CASE("binary_exponent and power_of_two read and build the exponent
   }
 }
 
+TEMPLATE_TEST_CASE("times_power_of_two is ldexp to the bit, for every exponent of x and of the power",
+                   "[runtime][detail]", float, double) {
+  using Scalar = TestType;
+  using limits = std::numeric_limits<Scalar>;
+  using Bits = billiards::detail::FloatBits<Scalar>;
+  std::mt19937_64 random(24);
+  // Powers from 2^−(2·range) to 2^(2·range): the normal ones (one multiplication) and beyond (ldexp),
+  // with results normal, subnormal, rounded to 0 and overflowing to ∞; x of either sign, and 0 and ∞.
+  const int range = limits::max_exponent - limits::min_exponent + limits::digits;
+  const auto check = [&](Scalar x) {
+    for (const Scalar signed_x : {x, -x}) {
+      int differs_at = 0;  // the first exponent where the bits differ (0 is always checked first)
+      for (int e = 0; e <= 2 * range && differs_at == 0; e = e > 0 ? -e : 1 - e) {
+        if (std::bit_cast<Bits>(billiards::detail::times_power_of_two(signed_x, e)) !=
+            std::bit_cast<Bits>(std::ldexp(signed_x, e)))
+          differs_at = e == 0 ? range * 4 : e;
+      }
+      INFO("x = " << signed_x << ": the bits differ from ldexp's at the exponent " << differs_at);
+      CHECK(differs_at == 0);
+    }
+  };
+  at_every_exponent<Scalar>(random, check);
+  check(Scalar(0));
+  check(limits::infinity());
+}
+
 TEMPLATE_TEST_CASE("power_of_two_scaled is frexp's and ldexp's scaling, at every exponent",
                    "[runtime][detail]", float, double) {
   using Scalar = TestType;

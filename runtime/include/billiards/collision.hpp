@@ -439,10 +439,12 @@ template <typename DP1, typename D1, typename DP2, typename D2>
   const int position_exponent = centres_negligible ? centre_exponent + negligible : length_exponent;
   const detail::PlainVector<D1> q = detail::times_power_of_two(p, -position_exponent),
                                 u = detail::times_power_of_two(w, -speed_exponent);
-  const Scalar r = std::ldexp(contact_distance, -length_exponent);
+  // times_power_of_two is std::ldexp to the bit: one multiplication where the power is a normal number,
+  // a call into libm only beyond.
+  const Scalar r = detail::times_power_of_two(contact_distance, -length_exponent);
   const Scalar scaled_time = kernels::time_of_impact(detail::dot(q, q), detail::dot(q, u), detail::dot(u, u),
                                                      detail::cross_squared(q, u), r);
-  return std::ldexp(scaled_time, length_exponent - speed_exponent);
+  return detail::times_power_of_two(scaled_time, length_exponent - speed_exponent);
 }
 
 /// \brief A ball bouncing off an immovable cushion: the reflection \f$v - 2 (v\cdot n)\,n = -n v n\f$.
