@@ -427,20 +427,40 @@ class Gas {
     std::uint32_t first[around];
     int cells = 0;
     {
-      std::size_t cell[around];
-      Cell offset = Cell::Constant(-1);
-      for (int n = 0; n < around; ++n) {
-        if (axis == all_axes || offset[axis] == step) {
-          Cell c;
-          for (int k = 0; k < D; ++k)
-            c[k] = (own_[i].coordinates[k] + offset[k] + cells_per_side_) % cells_per_side_;
-          cell[cells] = cell_index(c);
-          prefetch(&head_[cell[cells]]);
-          ++cells;
+      // Along each axis the cell coordinates to search, wrapped around the box, times the axis's
+      // stride in cell_index: three (one step either side and the ball's own), or the one beyond.
+      std::size_t part[D][3];
+      int count[D];
+      std::size_t stride = 1;
+      for (int k = 0; k < D; ++k) {
+        const int c = own_[i].coordinates[k];
+        const auto wrapped = [this](int x) {
+          return static_cast<std::size_t>(x < 0 ? x + cells_per_side_ : x >= cells_per_side_ ? x - cells_per_side_ : x);
+        };
+        if (k == axis) {
+          part[k][0] = wrapped(c + step) * stride;
+          count[k] = 1;
+        } else {
+          part[k][0] = wrapped(c - 1) * stride;
+          part[k][1] = static_cast<std::size_t>(c) * stride;
+          part[k][2] = wrapped(c + 1) * stride;
+          count[k] = 3;
         }
-        int k = 0;
-        while (k < D && offset[k] == 1) offset[k++] = -1;
-        if (k < D) ++offset[k];
+        stride *= static_cast<std::size_t>(cells_per_side_);
+      }
+      std::size_t cell[around];
+      const auto add = [&](std::size_t index) {
+        prefetch(&head_[index]);
+        cell[cells++] = index;
+      };
+      // In cell_index's order: the first axis fastest.
+      if constexpr (D == 2) {
+        for (int b = 0; b < count[1]; ++b)
+          for (int a = 0; a < count[0]; ++a) add(part[1][b] + part[0][a]);
+      } else {
+        for (int c = 0; c < count[2]; ++c)
+          for (int b = 0; b < count[1]; ++b)
+            for (int a = 0; a < count[0]; ++a) add(part[2][c] + part[1][b] + part[0][a]);
       }
       for (int n = 0; n < cells; ++n) {
         first[n] = head_[cell[n]];
