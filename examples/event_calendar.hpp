@@ -46,8 +46,8 @@ class EventCalendar {
     // The width: the mean spacing of the nearer half of the pending times (the median distance from
     // now over half the count). A median, not the nearest few, which may sit within rounding of now
     // (a lattice's balls on the cells' faces) and would make the year far too short.
-    std::vector<double> ahead;
-    ahead.reserve(times.size());
+    std::vector<double>& ahead = ahead_;  // kept from one reset to the next: no fresh memory to fault in
+    ahead.clear();
     for (double t : times) {
       if (std::isnan(t) || t < now) throw std::invalid_argument("EventCalendar: a time is NaN or before now");
       if (std::isfinite(t) && t > now) ahead.push_back(t - now);  // times at now say nothing of a spacing
@@ -208,6 +208,7 @@ class EventCalendar {
     return true;
   }
 
+  std::vector<double> ahead_;
   std::vector<std::uint32_t> head_;
   std::vector<Item> item_;
   std::vector<Entry> front_;

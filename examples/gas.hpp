@@ -504,31 +504,51 @@ class Gas {
 
   // Files every ball's next event in the calendar anew, its bucket width chosen from the times now.
   void refile() {
-    std::vector<double> times(own_.size());
-    for (std::size_t i = 0; i < times.size(); ++i) times[i] = own_[i].event_time();
-    calendar_.reset(times, now_);
+    event_times_.resize(own_.size());
+    for (std::size_t i = 0; i < event_times_.size(); ++i) event_times_[i] = own_[i].event_time();
+    calendar_.reset(event_times_, now_);
   }
 
   // Renumbers the balls in the order of their cells, so that balls near in space are near in memory
   // (a gas mixes them, and beyond the caches every prediction would otherwise miss them). Nothing
   // physical changes: every ball is brought to now on its own line, and the events keep their times,
   // with partners renumbered, filed anew in the calendar.
+  //
+  // The records move in place, one cycle of the renumbering at a time, and the pass's index arrays are
+  // kept from one pass to the next: no fresh memory, whose first touch costs a page fault a page (at
+  // 10^6 disks a pass that copied the records into new arrays took about 0.6 s, most of it faults;
+  // in place, about 0.1 s).
   void reorder() {
     const std::size_t n = ball_.size();
     for (std::size_t i = 0; i < n; ++i) bring_to_now(i);
-    std::vector<std::uint32_t> order;
-    order.reserve(n);
+    std::vector<std::uint32_t>& order = order_;  // order[k]: the ball that becomes ball k
+    order.clear();
     for (std::size_t c = 0; c < head_.size(); ++c) {
       for (std::uint32_t i = head_[c]; i != none; i = ball_[i].next) order.push_back(i);
     }
-    std::vector<std::uint32_t> renumbered(n);
+    std::vector<std::uint32_t>& renumbered = renumbered_;  // the inverse: ball i becomes renumbered[i]
+    renumbered.resize(n);
     for (std::size_t k = 0; k < n; ++k) renumbered[order[k]] = static_cast<std::uint32_t>(k);
-    const auto permute = [&](auto& values) {
-      auto copy = values;
-      for (std::size_t k = 0; k < n; ++k) values[k] = copy[order[k]];
-    };
-    permute(ball_);
-    permute(own_);
+    // Each cycle k → order[k] → order[order[k]] … : place k takes the records of place order[k], which
+    // the cycle has not yet overwritten, and the cycle's last place the first place's, kept aside.
+    placed_.assign(n, false);
+    for (std::size_t start = 0; start < n; ++start) {
+      if (placed_[start]) continue;
+      const Ball first_ball = ball_[start];
+      const Own first_own = own_[start];
+      for (std::size_t k = start;;) {
+        placed_[k] = true;
+        const std::size_t from = order[k];
+        if (from == start) {
+          ball_[k] = first_ball;
+          own_[k] = first_own;
+          break;
+        }
+        ball_[k] = ball_[from];
+        own_[k] = own_[from];
+        k = from;
+      }
+    }
     for (Own& o : own_) {
       if (o.partner != none) o.partner = renumbered[o.partner];
     }
@@ -632,6 +652,10 @@ class Gas {
     bool crossing_first() const { return !(collision_time < crossing_time); }
   };
   std::vector<Own> own_;
+  // Kept between passes of reorder() and refile(), so that they touch no fresh memory.
+  std::vector<std::uint32_t> order_, renumbered_;
+  std::vector<bool> placed_;
+  std::vector<double> event_times_;
   EventCalendar calendar_;
   std::uint64_t crossings_ = 0, since_refile_ = 0;
   std::uint64_t collision_number_ = 0;  ///< collisions resolved so far, every event's included
