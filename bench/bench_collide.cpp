@@ -1,9 +1,9 @@
 // Figures, not pass/fail: one collision per call for the generated code beside hand-written
 // formulas (the paper's, an engine's with stored inverse masses) and a plain Eigen expression, over the
 // same 4096 random cases; the restitution, direction, friction and time-of-impact calls beside their
-// plain forms; and the batch path against a bandwidth ceiling with its own access pattern and against its division
-// limit. Every benchmark is timed in real (wall-clock) time. Report ratios from one run (the machines
-// are shared).
+// plain forms; and the batch path against a bandwidth ceiling with its own access pattern and against its
+// division limit. Every benchmark is timed in real (wall-clock) time. Report ratios from one run (the
+// machines are shared).
 //
 // BILLIARDS_BENCH_MAX_PAIRS (environment) caps the batch sizes: 10^7 by default, small for CI's
 // smoke run.

@@ -83,7 +83,8 @@ class EventCalendar {
     if (current_ == looked_ahead_from_) return;
     looked_ahead_from_ = current_;
     for (int ahead = 1; ahead <= buckets; ++ahead) {
-      for (std::uint32_t i = head_[bucket_index(current_ + ahead)]; i != none; i = item_[i].next) soon(i, ahead);
+      for (std::uint32_t i = head_[bucket_index(current_ + ahead)]; i != none; i = item_[i].next)
+        soon(i, ahead);
     }
     const std::uint32_t beyond = head_[bucket_index(current_ + buckets + 1)];
     if (beyond != none) prefetch(&item_[beyond]);

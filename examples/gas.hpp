@@ -9,9 +9,10 @@
 // periodic image), so a prediction costs the same whatever N. After a cell crossing only the cells that
 // have just come around the ball are searched, the earliest collision found before kept beside them
 // (3^(D−1) cells, not 3^D). The balls' next events sit in an event
-// calendar (event_calendar.hpp: a calendar queue, O(1) a step on average). Collisions are numbered; a collision event records
-// the number of the last collision before its prediction: when the partner has collided since, the
-// event is stale and the ball is predicted again. Collisions are resolved by billiards::collide_if_approaching on the nearest images.
+// calendar (event_calendar.hpp: a calendar queue, O(1) a step on average). Collisions are numbered; a
+// collision event records the number of the last collision before its prediction: when the partner has
+// collided since, the event is stale and the ball is predicted again. Collisions are resolved by
+// billiards::collide_if_approaching on the nearest images.
 //
 // Measured over the span after the equilibration: the collision virial Σ r_ij·Δp_i (r_ij = r_i − r_j at
 // contact, Δp_i ball i's change of momentum), which gives Z = PV/(N kT) = 1 + Σ r_ij·Δp_i/(d N kT t),
@@ -71,7 +72,7 @@ struct Result {
   /// In diameters, over every collision: how far apart beyond touching the centres were (a collision
   /// taken when it is not due, from a stale prediction, shows here).
   double largest_gap = 0;
-  double events_per_second = 0;           ///< collisions per second of wall time over the measured span
+  double events_per_second = 0;  ///< collisions per second of wall time over the measured span
 };
 
 /// The packing fraction of close packing: π/(2√3) for disks, π/(3√2) for spheres.
@@ -435,7 +436,9 @@ class Gas {
       for (int k = 0; k < D; ++k) {
         const int c = own_[i].coordinates[k];
         const auto wrapped = [this](int x) {
-          return static_cast<std::size_t>(x < 0 ? x + cells_per_side_ : x >= cells_per_side_ ? x - cells_per_side_ : x);
+          return static_cast<std::size_t>(x < 0                  ? x + cells_per_side_
+                                          : x >= cells_per_side_ ? x - cells_per_side_
+                                                                 : x);
         };
         if (k == axis) {
           part[k][0] = wrapped(c + step) * stride;
@@ -658,12 +661,13 @@ class Gas {
   std::vector<double> event_times_;
   EventCalendar calendar_;
   std::uint64_t crossings_ = 0, since_refile_ = 0;
-  std::uint64_t collision_number_ = 0;  ///< collisions resolved so far, every event's included
+  std::uint64_t collision_number_ = 0;               ///< collisions resolved so far, every event's included
   static constexpr std::size_t reorder_from = 4096;  ///< fewer balls stay in the caches anyway
   /// From here the balls lie beyond the caches and the look ahead pays (10^4 disks: 2 % slower with it,
   /// 10^5: 12–16 % faster; at 1024 it costs 10 %).
   static constexpr std::size_t look_ahead_from = std::size_t{1} << 15;
-  double virial_ = 0, largest_overlap_ = 0, largest_gap_ = 0, initial_temperature_ = 1, largest_temperature_change_ = 0;
+  double virial_ = 0, largest_overlap_ = 0, largest_gap_ = 0, initial_temperature_ = 1,
+         largest_temperature_change_ = 0;
 };
 
 /// Validates `options`, runs the gas of its dimension and returns what it measured.
