@@ -265,7 +265,9 @@ TEMPLATE_TEST_CASE("times_power_of_two is ldexp to the bit, for every exponent o
   const int range = limits::max_exponent - limits::min_exponent + limits::digits;
   const auto check = [&](Scalar x) {
     for (const Scalar signed_x : {x, -x}) {
-      int differs_at = 0;  // the first exponent where the bits differ (0 is always checked first)
+      // Exponents 0, 1, −1, 2, −2, … : the first where the bits differ, 0 where none does (a difference
+      // at the exponent 0 itself reads as 4·range, outside the range tried).
+      int differs_at = 0;
       for (int e = 0; e <= 2 * range && differs_at == 0; e = e > 0 ? -e : 1 - e) {
         if (std::bit_cast<Bits>(billiards::detail::times_power_of_two(signed_x, e)) !=
             std::bit_cast<Bits>(std::ldexp(signed_x, e)))
