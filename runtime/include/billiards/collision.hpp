@@ -234,15 +234,16 @@ typename Vector::Scalar cross_squared(const Vector& p, const Vector& w) noexcept
     sum += c02 * c02;
     sum += c12 * c12;
     return sum;
-  }
-  Scalar sum = 0;
-  for (Eigen::Index i = 0; i < p.size(); ++i) {
-    for (Eigen::Index j = i + 1; j < p.size(); ++j) {
-      const Scalar component = p[i] * w[j] - p[j] * w[i];
-      sum += component * component;
+  } else {
+    Scalar sum = 0;
+    for (Eigen::Index i = 0; i < p.size(); ++i) {
+      for (Eigen::Index j = i + 1; j < p.size(); ++j) {
+        const Scalar component = p[i] * w[j] - p[j] * w[i];
+        sum += component * component;
+      }
     }
+    return sum;
   }
-  return sum;
 }
 
 // The preconditions, one predicate each: the unchecked calls assert them in debug builds (compiled out
