@@ -3,7 +3,8 @@
 // velocities (total momentum zero, kT = 1), run collision by collision with no time step.
 //
 // Each ball keeps its position at its own last update (positions are brought forward only when a
-// ball takes part in an event). The box is divided into a grid of cells at least one diameter wide;
+// ball takes part in an event). The box is divided into a grid of cells at least one diameter wide,
+// numbered tile by tile (tiles of 4^D cells, so that neighbouring cells lie near one another in memory);
 // each ball's next event is the earlier of its next cell crossing and its earliest predicted
 // collision with a ball in its own or a neighbouring cell (billiards::time_of_impact on the nearest
 // periodic image), so a prediction costs the same whatever N. After a cell crossing only the cells that
@@ -168,10 +169,7 @@ class Gas {
     side_ = box_side(D, n, options.packing_fraction);
     cells_per_side_ = static_cast<int>(std::floor(side_));  // cells at least one diameter wide
     cell_width_ = side_ / cells_per_side_;
-    std::size_t cell_count = 1;
-    for (int k = 0; k < D; ++k) cell_count *= static_cast<std::size_t>(cells_per_side_);
-    if (cell_count >= none) throw std::invalid_argument("Gas<D>: more cells than 32-bit numbers");
-    head_.assign(cell_count, none);
+    lay_out_cells();
     ball_.resize(n);
     own_.resize(n);
     place_on_lattice();
@@ -346,10 +344,32 @@ class Gas {
     for (Ball& b : ball_) b.velocity *= scale;
   }
 
+  // The cells' numbering, in tiles of tile^D cells: tile after tile, the first axis fastest, and
+  // within a tile the first axis fastest too. A ball's neighbourhood then spans few tiles, whose list
+  // heads share cache lines and whose balls (renumbered by cell) lie near one another in memory.
+  // The number is a sum of one term an axis, axis_offset_[k][c_k], so the cells around a ball come
+  // from three terms an axis. Tiles at the far edges may be partial: their missing cells keep numbers
+  // that no ball ever takes.
+  void lay_out_cells() {
+    const std::size_t per_side = static_cast<std::size_t>(cells_per_side_);
+    const std::size_t tiles = (per_side + tile - 1) / tile;
+    std::size_t tile_cells = 1, count = 1;
+    for (int k = 0; k < D; ++k) tile_cells *= tile, count *= tiles * tile;
+    if (count >= none) throw std::invalid_argument("Gas<D>: more cells than 32-bit numbers");
+    std::size_t tile_stride = tile_cells, inner_stride = 1;
+    for (int k = 0; k < D; ++k) {
+      axis_offset_[k].resize(per_side);
+      for (std::size_t c = 0; c < per_side; ++c)
+        axis_offset_[k][c] = static_cast<std::uint32_t>(c / tile * tile_stride + c % tile * inner_stride);
+      tile_stride *= tiles;
+      inner_stride *= tile;
+    }
+    head_.assign(count, none);
+  }
+
   std::size_t cell_index(const Cell& c) const {
     std::size_t index = 0;
-    for (int k = D - 1; k >= 0; --k)
-      index = index * static_cast<std::size_t>(cells_per_side_) + static_cast<std::size_t>(c[k]);
+    for (int k = 0; k < D; ++k) index += axis_offset_[k][static_cast<std::size_t>(c[k])];
     return index;
   }
   void insert(std::size_t i) {
@@ -428,35 +448,35 @@ class Gas {
     std::uint32_t first[around];
     int cells = 0;
     {
-      // Along each axis the cell coordinates to search, wrapped around the box, times the axis's
-      // stride in cell_index: three (one step either side and the ball's own), or the one beyond.
+      // Along each axis the cell coordinates to search, wrapped around the box, as the axis's terms
+      // of cell_index: three (one step either side and the ball's own), or the one beyond.
       std::size_t part[D][3];
       int count[D];
-      std::size_t stride = 1;
       for (int k = 0; k < D; ++k) {
         const int c = own_[i].coordinates[k];
+        const std::uint32_t* offset = axis_offset_[k].data();
         const auto wrapped = [this](int x) {
           return static_cast<std::size_t>(x < 0                  ? x + cells_per_side_
                                           : x >= cells_per_side_ ? x - cells_per_side_
                                                                  : x);
         };
         if (k == axis) {
-          part[k][0] = wrapped(c + step) * stride;
+          part[k][0] = offset[wrapped(c + step)];
           count[k] = 1;
         } else {
-          part[k][0] = wrapped(c - 1) * stride;
-          part[k][1] = static_cast<std::size_t>(c) * stride;
-          part[k][2] = wrapped(c + 1) * stride;
+          part[k][0] = offset[wrapped(c - 1)];
+          part[k][1] = offset[c];
+          part[k][2] = offset[wrapped(c + 1)];
           count[k] = 3;
         }
-        stride *= static_cast<std::size_t>(cells_per_side_);
       }
       std::size_t cell[around];
       const auto add = [&](std::size_t index) {
         prefetch(&head_[index]);
         cell[cells++] = index;
       };
-      // In cell_index's order: the first axis fastest.
+      // The first axis fastest (cell_index's order within a tile; where ties between equal times are
+      // broken, always the same way).
       if constexpr (D == 2) {
         for (int b = 0; b < count[1]; ++b)
           for (int a = 0; a < count[0]; ++a) add(part[1][b] + part[0][a]);
@@ -638,7 +658,23 @@ class Gas {
     std::uint32_t next = none, previous = none;
   };
   std::vector<Ball> ball_;
-  std::vector<std::uint32_t> head_;
+  // Allocates on cache-line boundaries (a large std::vector's data sit 16 bytes past one), so that a
+  // tile's list heads share as few lines as they can.
+  template <typename T>
+  struct LineAligned {
+    using value_type = T;
+    LineAligned() = default;
+    template <typename U>
+    LineAligned(const LineAligned<U>&) {}
+    T* allocate(std::size_t n) {
+      return static_cast<T*>(::operator new (n * sizeof(T), std::align_val_t{64}));
+    }
+    void deallocate(T* p, std::size_t) { ::operator delete (p, std::align_val_t{64}); }
+    bool operator==(const LineAligned&) const = default;
+  };
+  std::vector<std::uint32_t, LineAligned<std::uint32_t>> head_;
+  static constexpr std::size_t tile = 4;       ///< cells a tile has along each axis
+  std::vector<std::uint32_t> axis_offset_[D];  ///< cell_index's term for each axis and coordinate
   // What an event reads of its own ball, in one place (one cache line): its next crossing, its earliest
   // predicted collision (the partner, and the number of the last collision before it was predicted),
   // its cell, the number of its own last collision. Its next event is the earlier of the two (the
