@@ -90,6 +90,33 @@ class EventCalendar {
     if (beyond != none) prefetch(&item_[beyond]);
   }
 
+  /// Asks memory for item i's record (a hint, as are the two below: nothing changes).
+  void prefetch_record(std::uint32_t i) const { prefetch(&item_[i]); }
+
+  /// Asks memory for what taking item i out of its list writes: the neighbour before it or the list's
+  /// head, and the neighbour after it. Reads item i's record, which should be in the caches already
+  /// (prefetch_record).
+  void prefetch_removal(std::uint32_t i) const {
+    const Item& item = item_[i];
+    if (item.bucket == front) return;  // no list: its entry in the front heap goes stale
+    if (item.previous != none)
+      prefetch(&item_[item.previous]);
+    else if (item.bucket != overflow_list)
+      prefetch(&head_[item.bucket]);
+    if (item.next != none) prefetch(&item_[item.next]);
+  }
+
+  /// Asks memory for what update(i, time) reads first: item i's record and, where `time` falls in a
+  /// later bucket of this year, that bucket's head. Reads nothing of item i.
+  void prefetch_update(std::uint32_t i, double time) const {
+    prefetch(&item_[i]);
+    const double q = time / width_;
+    if (q < static_cast<double>(year_ + static_cast<std::int64_t>(mask_ + 1))) {  // +∞ and NaN are not
+      const std::int64_t b = static_cast<std::int64_t>(std::floor(q));
+      if (b > current_) prefetch(&head_[bucket_index(b)]);
+    }
+  }
+
   /// The item with the earliest time (any one of equal times); none when every time is +∞.
   std::uint32_t earliest() {
     for (;;) {

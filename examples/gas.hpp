@@ -398,6 +398,13 @@ class Gas {
     calendar_.update(static_cast<std::uint32_t>(i), own_[i].event_time());
   }
 
+  // Beyond the caches: asks memory for what filing ball i at its event time will read, so that the
+  // calendar's miss overlaps the work before the filing instead of following it.
+  void prefetch_filing(std::size_t i) {
+    if (ball_.size() >= look_ahead_from)
+      calendar_.prefetch_update(static_cast<std::uint32_t>(i), own_[i].event_time());
+  }
+
   // Ball i's next crossing and its earliest collision with a ball of the 3^D cells around it, any
   // candidate it had forgotten.
   void predict_in_full(std::size_t i) {
@@ -414,6 +421,7 @@ class Gas {
   // predicted ball i on its own paths since keeps that event itself.)
   void predict_after_crossing(std::size_t i, int axis, int step) {
     predict_crossing(i);
+    prefetch_filing(i);  // its time, unless the new cells hold an earlier collision
     predict_collisions(i, axis, step);
     calendar_.update(static_cast<std::uint32_t>(i), own_[i].event_time());
   }
@@ -521,6 +529,7 @@ class Gas {
       } else if (const Own& own = own_[k]; !own.crossing_first()) {
         prefetch(&own_[own.partner]);
         prefetch(&ball_[own.partner]);
+        calendar_.prefetch_record(own.partner);
       }
     });
   }
@@ -609,6 +618,8 @@ class Gas {
         predict(i);  // stale: the partner has collided since
       } else {
         const std::size_t j = own.partner;
+        // The partner leaves its place in the calendar's lists: asked of memory now, written below.
+        if (ball_.size() >= look_ahead_from) calendar_.prefetch_removal(static_cast<std::uint32_t>(j));
         bring_to_now(i);
         bring_to_now(j);
         const Vector image = ball_[i].position + nearest_image(ball_[i].position, ball_[j].position);
@@ -622,8 +633,15 @@ class Gas {
         ball_[i].velocity = vi;
         ball_[j].velocity = vj;
         own_[i].last_collision = own_[j].last_collision = ++collision_number_;
-        predict(i);
-        predict(j);
+        // Both predicted before either is filed, each filing asked of memory ahead of it: the
+        // calendar's misses overlap the other ball's prediction (10^6 balls: 6–9 % more collisions a
+        // second with the prefetches above and in the look ahead).
+        predict_in_full(i);
+        prefetch_filing(i);
+        predict_in_full(j);
+        prefetch_filing(j);
+        calendar_.update(static_cast<std::uint32_t>(i), own_[i].event_time());
+        calendar_.update(static_cast<std::uint32_t>(j), own_[j].event_time());
         if (changed) {
           if (measure) virial_ += (ball_[i].position - image).dot(impulse);
           ++done;

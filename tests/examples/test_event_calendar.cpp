@@ -43,7 +43,8 @@ void check_look_ahead(EventCalendar& calendar, const std::set<std::pair<double, 
   }
   REQUIRE(latest_first <= earliest_second);
   for (auto it = reference.lower_bound({lo, 0}); it != reference.end() && it->first <= hi; ++it) {
-    INFO("item " << it->second << " at " << it->first << " lies in the span reported, [" << lo << ", " << hi << "]");
+    INFO("item " << it->second << " at " << it->first << " lies in the span reported, [" << lo << ", " << hi
+                 << "]");
     REQUIRE(seen.count(it->second) == 1);
   }
 }
@@ -65,6 +66,9 @@ void run_against_reference(std::size_t items, int steps, int others, Draw draw) 
     reference.erase({times[i], i});
     times[i] = t;
     reference.insert({t, i});
+    calendar.prefetch_record(i);  // hints: they change nothing, and take no address out of range
+    calendar.prefetch_removal(i);
+    calendar.prefetch_update(i, t);
     calendar.update(i, t);
   };
   for (int step = 0; step < steps; ++step) {
