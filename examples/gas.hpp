@@ -520,7 +520,8 @@ class Gas {
 
   // Asks memory for what the next events will read, so that their misses overlap this event's work
   // instead of following it (the calendar's look ahead): the records of the balls two buckets ahead,
-  // and for those one bucket ahead, whose records were asked for before, their partners' records.
+  // and for those one bucket ahead, whose records were asked for before, their partners' records and
+  // (2-D) the list heads of the cells their predictions will search.
   void prefetch_next_events() {
     calendar_.look_ahead(2, [this](std::uint32_t k, int ahead) {
       if (ahead > 1) {
@@ -530,8 +531,37 @@ class Gas {
         prefetch(&own_[own.partner]);
         prefetch(&ball_[own.partner]);
         calendar_.prefetch_record(own.partner);
+        if constexpr (D == 2) {  // the 5 × 5 cells around ball k hold both balls' neighbourhoods
+          const int low[D] = {own.coordinates[0] - 2, own.coordinates[1] - 2};
+          const int high[D] = {own.coordinates[0] + 2, own.coordinates[1] + 2};
+          prefetch_heads(low, high);
+        }
+      } else if constexpr (D == 2) {  // the cells that come around ball k when it crosses
+        int low[D] = {own.coordinates[0] - 1, own.coordinates[1] - 1};
+        int high[D] = {own.coordinates[0] + 1, own.coordinates[1] + 1};
+        low[own.axis] = high[own.axis] = own.coordinates[own.axis] + 2 * own.step;
+        prefetch_heads(low, high);
       }
     });
+  }
+
+  // Asks memory for the list heads of a block of cells, low[a] to high[a] along each axis (at most five
+  // cells, wrapped around the box): those of its 2^D corners, which lie in every tile the block meets
+  // (a tile is four cells wide). In 2-D a tile's heads fill one cache line, so these are all the
+  // block's lines. (In 3-D a tile's take four, and asking for the heads of the cells around the next
+  // events measured no faster: 10^6 spheres 1–3 % slower; in 2-D, 10^6 disks 12 % faster.)
+  void prefetch_heads(const int (&low)[D], const int (&high)[D]) {
+    for (int corner = 0; corner < (1 << D); ++corner) {
+      std::size_t index = 0;
+      for (int a = 0; a < D; ++a) {
+        int x = (corner >> a & 1) != 0 ? high[a] : low[a];
+        if (x < 0) x += cells_per_side_;
+        if (x >= cells_per_side_) x -= cells_per_side_;
+        if (x < 0 || x >= cells_per_side_) x = 0;  // a box of fewer than five cells a side
+        index += axis_offset_[a][static_cast<std::size_t>(x)];
+      }
+      prefetch(&head_[index]);
+    }
   }
 
   // Files every ball's next event in the calendar anew, its bucket width chosen from the times now.
