@@ -521,7 +521,8 @@ class Gas {
   // Asks memory for what the next events will read, so that their misses overlap this event's work
   // instead of following it (the calendar's look ahead): the records of the balls two buckets ahead,
   // and for those one bucket ahead, whose records were asked for before, their partners' records and
-  // (2-D) the list heads of the cells their predictions will search.
+  // (2-D) the list heads of the cells their predictions will search and, for a crossing, the records
+  // its removal from its cell's list writes.
   void prefetch_next_events() {
     calendar_.look_ahead(2, [this](std::uint32_t k, int ahead) {
       if (ahead > 1) {
@@ -536,8 +537,11 @@ class Gas {
           const int high[D] = {own.coordinates[0] + 2, own.coordinates[1] + 2};
           prefetch_heads(low, high);
         }
-      } else if constexpr (D == 2) {  // the cells that come around ball k when it crosses
-        int low[D] = {own.coordinates[0] - 1, own.coordinates[1] - 1};
+      } else if constexpr (D == 2) {  // a crossing (in 3-D neither prefetch below measured faster)
+        const Ball& ball = ball_[k];  // its neighbours in its cell's list, which its removal writes
+        if (ball.previous != none) prefetch(&ball_[ball.previous]);
+        if (ball.next != none) prefetch(&ball_[ball.next]);
+        int low[D] = {own.coordinates[0] - 1, own.coordinates[1] - 1};  // the cells that come around it
         int high[D] = {own.coordinates[0] + 1, own.coordinates[1] + 1};
         low[own.axis] = high[own.axis] = own.coordinates[own.axis] + 2 * own.step;
         prefetch_heads(low, high);
