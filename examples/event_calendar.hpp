@@ -15,6 +15,7 @@
 // the year. Any width gives the right order; the width decides only the speed.
 #pragma once
 
+#include "large_array.hpp"
 #include "prefetch.hpp"
 
 #include <algorithm>
@@ -253,8 +254,8 @@ class EventCalendar {
   }
 
   std::vector<double> ahead_;
-  std::vector<std::uint32_t> head_;
-  std::vector<Item> item_;
+  Array<std::uint32_t> head_;
+  Array<Item> item_;
   std::vector<Entry> front_;
   std::uint32_t overflow_ = none;
   std::size_t mask_ = 0, in_ring_ = 0;

@@ -22,6 +22,7 @@
 #pragma once
 
 #include "event_calendar.hpp"
+#include "large_array.hpp"
 #include "prefetch.hpp"
 
 #include <billiards/collision.hpp>
@@ -709,22 +710,8 @@ class Gas {
     Vector velocity = Vector::Zero();
     std::uint32_t next = none, previous = none;
   };
-  std::vector<Ball> ball_;
-  // Allocates on cache-line boundaries (a large std::vector's data sit 16 bytes past one), so that a
-  // tile's list heads share as few lines as they can.
-  template <typename T>
-  struct LineAligned {
-    using value_type = T;
-    LineAligned() = default;
-    template <typename U>
-    LineAligned(const LineAligned<U>&) {}
-    T* allocate(std::size_t n) {
-      return static_cast<T*>(::operator new (n * sizeof(T), std::align_val_t{64}));
-    }
-    void deallocate(T* p, std::size_t) { ::operator delete (p, std::align_val_t{64}); }
-    bool operator==(const LineAligned&) const = default;
-  };
-  std::vector<std::uint32_t, LineAligned<std::uint32_t>> head_;
+  Array<Ball> ball_;
+  Array<std::uint32_t> head_;                  ///< each cell's first ball (a tile's heads share cache lines)
   static constexpr std::size_t tile = 4;       ///< cells a tile has along each axis
   std::vector<std::uint32_t> axis_offset_[D];  ///< cell_index's term for each axis and coordinate
   // What an event reads of its own ball, in one place (one cache line): its next crossing, its earliest
@@ -742,7 +729,7 @@ class Gas {
     double event_time() const { return std::min(crossing_time, collision_time); }
     bool crossing_first() const { return !(collision_time < crossing_time); }
   };
-  std::vector<Own> own_;
+  Array<Own> own_;
   // Kept between passes of reorder() and refile(), so that they touch no fresh memory.
   std::vector<std::uint32_t> order_, renumbered_;
   std::vector<bool> placed_;
