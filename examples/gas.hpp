@@ -368,6 +368,14 @@ class Gas {
     head_.assign(count, none);
   }
 
+  // A cell coordinate at most two cells beyond the box, wrapped into it (validate() makes every box at
+  // least three cells wide, so one turn is enough).
+  std::size_t wrapped(int x) const {
+    return static_cast<std::size_t>(x < 0                  ? x + cells_per_side_
+                                    : x >= cells_per_side_ ? x - cells_per_side_
+                                                           : x);
+  }
+
   std::size_t cell_index(const Cell& c) const {
     std::size_t index = 0;
     for (int k = 0; k < D; ++k) index += axis_offset_[k][static_cast<std::size_t>(c[k])];
@@ -464,11 +472,6 @@ class Gas {
       for (int k = 0; k < D; ++k) {
         const int c = own_[i].coordinates[k];
         const std::uint32_t* offset = axis_offset_[k].data();
-        const auto wrapped = [this](int x) {
-          return static_cast<std::size_t>(x < 0                  ? x + cells_per_side_
-                                          : x >= cells_per_side_ ? x - cells_per_side_
-                                                                 : x);
-        };
         if (k == axis) {
           part[k][0] = offset[wrapped(c + step)];
           count[k] = 1;
@@ -558,13 +561,8 @@ class Gas {
   void prefetch_heads(const int (&low)[D], const int (&high)[D]) {
     for (int corner = 0; corner < (1 << D); ++corner) {
       std::size_t index = 0;
-      for (int a = 0; a < D; ++a) {
-        int x = (corner >> a & 1) != 0 ? high[a] : low[a];
-        if (x < 0) x += cells_per_side_;
-        if (x >= cells_per_side_) x -= cells_per_side_;
-        if (x < 0 || x >= cells_per_side_) x = 0;  // a box of fewer than five cells a side
-        index += axis_offset_[a][static_cast<std::size_t>(x)];
-      }
+      for (int a = 0; a < D; ++a)
+        index += axis_offset_[a][wrapped((corner >> a & 1) != 0 ? high[a] : low[a])];
       prefetch(&head_[index]);
     }
   }
