@@ -23,6 +23,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <limits>
+#include <optional>
 #include <stdexcept>
 #include <vector>
 
@@ -121,11 +122,8 @@ class EventCalendar {
   /// later bucket of this year, that bucket's head. Reads nothing of item i.
   void prefetch_update(std::uint32_t i, double time) const {
     prefetch(&item_[i]);
-    const double q = time / width_;
-    if (q < static_cast<double>(year_ + static_cast<std::int64_t>(mask_ + 1))) {  // +∞ and NaN are not
-      const std::int64_t b = static_cast<std::int64_t>(std::floor(q));
-      if (b > current_) prefetch(&head_[bucket_index(b)]);
-    }
+    if (const std::optional<std::int64_t> b = bucket_this_year(time); b && *b > current_)
+      prefetch(&head_[bucket_index(*b)]);
   }
 
   /// The item with the earliest time (any one of equal times); none when every time is +∞.
@@ -193,17 +191,22 @@ class EventCalendar {
     std::push_heap(front_.begin(), front_.end(), later);
   }
 
+  // The number of the bucket `time` goes to in this year, the current one for a time before it; none
+  // for a time beyond the year (+∞ and NaN included), which waits in the overflow list.
+  std::optional<std::int64_t> bucket_this_year(double time) const {
+    const double q = time / width_;
+    if (!(q < static_cast<double>(year_ + static_cast<std::int64_t>(mask_ + 1)))) return std::nullopt;
+    return std::max(current_, static_cast<std::int64_t>(std::floor(q)));
+  }
+
   void file(std::uint32_t i, double time) {
     Item& item = item_[i];
     item.time = time;
     ++item.version;
-    const double q = time / width_;
-    const std::int64_t end = year_ + static_cast<std::int64_t>(mask_ + 1);
-    if (q < static_cast<double>(end)) {  // in this year (+∞ and NaN are not)
+    if (const std::optional<std::int64_t> b = bucket_this_year(time)) {
       ++in_ring_;
-      const std::int64_t b = std::max(current_, static_cast<std::int64_t>(std::floor(q)));
-      if (b == current_) return to_front(i);
-      item.bucket = static_cast<std::uint32_t>(static_cast<std::uint64_t>(b) & mask_);
+      if (*b == current_) return to_front(i);
+      item.bucket = static_cast<std::uint32_t>(bucket_index(*b));
     } else {
       item.bucket = overflow_list;
     }
