@@ -409,13 +409,6 @@ class Gas {
     int cells = 0;
   };
 
-  // Asks memory for ball j's record: both of its cache lines where it straddles two (a disk's record is
-  // 48 bytes, so every other one does, and its velocity and links then lie in the second line).
-  void prefetch_ball(std::uint32_t j) const {
-    prefetch(&ball_[j]);
-    if constexpr (64 % sizeof(Ball) != 0) prefetch(reinterpret_cast<const char*>(&ball_[j] + 1) - 1);
-  }
-
   // Ball i's next event, predicted in full, and its place in the calendar.
   void predict(std::size_t i) {
     predict_in_full(i);
@@ -518,7 +511,7 @@ class Gas {
     }
     for (int n = 0; n < cells; ++n) {
       around.first[n] = head_[cell[n]];
-      if (around.first[n] != none) prefetch_ball(around.first[n]);
+      if (around.first[n] != none) prefetch(&ball_[around.first[n]]);
     }
     around.cells = cells;
   }
@@ -555,10 +548,10 @@ class Gas {
     calendar_.look_ahead(2, [this](std::uint32_t k, int ahead) {
       if (ahead > 1) {
         prefetch(&own_[k]);
-        prefetch_ball(k);
+        prefetch(&ball_[k]);
       } else if (const Own& own = own_[k]; !own.crossing_first()) {
         prefetch(&own_[own.partner]);
-        prefetch_ball(own.partner);
+        prefetch(&ball_[own.partner]);
         calendar_.prefetch_record(own.partner);
         if constexpr (D == 2) {  // the 5 × 5 cells around ball k hold both balls' neighbourhoods
           const int low[D] = {own.coordinates[0] - 2, own.coordinates[1] - 2};
@@ -567,8 +560,8 @@ class Gas {
         }
       } else if constexpr (D == 2) {  // a crossing (in 3-D neither prefetch below measured faster)
         const Ball& ball = ball_[k];  // its neighbours in its cell's list, which its removal writes
-        if (ball.previous != none) prefetch_ball(ball.previous);
-        if (ball.next != none) prefetch_ball(ball.next);
+        if (ball.previous != none) prefetch(&ball_[ball.previous]);
+        if (ball.next != none) prefetch(&ball_[ball.next]);
         int low[D] = {own.coordinates[0] - 1, own.coordinates[1] - 1};  // the cells that come around it
         int high[D] = {own.coordinates[0] + 1, own.coordinates[1] + 1};
         low[own.axis] = high[own.axis] = own.coordinates[own.axis] + 2 * own.step;
