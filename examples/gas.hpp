@@ -401,14 +401,6 @@ class Gas {
     ball_[i].updated = now_;
   }
 
-  // The balls a prediction reads: the first ball of each cell it searches (the rest follow in each cell's
-  // list).
-  struct Neighbourhood {
-    static constexpr int most = D == 2 ? 9 : 27;
-    std::uint32_t first[most];
-    int cells = 0;
-  };
-
   // Ball i's next event, predicted in full, and its place in the calendar.
   void predict(std::size_t i) {
     predict_in_full(i);
@@ -425,29 +417,21 @@ class Gas {
   // Ball i's next crossing and its earliest collision with a ball of the 3^D cells around it, any
   // candidate it had forgotten.
   void predict_in_full(std::size_t i) {
-    Neighbourhood around;
-    start_full_prediction(i, around);
-    scan(i, around);
-  }
-
-  // predict_in_full up to its search: the crossing, the candidate forgotten, the neighbourhood gathered.
-  void start_full_prediction(std::size_t i, Neighbourhood& around) {
     predict_crossing(i);
     own_[i].collision_time = infinity;
     own_[i].partner = none;
-    gather(i, all_axes, 0, around);
+    predict_collisions(i, all_axes, 0);
   }
 
-  // After ball i crossed into a new cell: its next crossing, and collisions with the balls of the cells
-  // that have just come around it, `around` (3^(D−1), not 3^D: the rest were around it before;
-  // gathered before the ball moved, two steps on from its old cell along the crossing's axis, whose
-  // lists its move does not change). The earliest collision found before stays a candidate: its pair
-  // was predicted on the same paths, and a pair first around it now lies in the new cells. (A ball of
-  // the new cells that predicted ball i on its own paths since keeps that event itself.)
-  void predict_after_crossing(std::size_t i, const Neighbourhood& around) {
+  // After ball i crossed into a new cell along `axis` by `step`: its next crossing, and collisions with
+  // the balls of the cells that have just come around it (3^(D−1), not 3^D: the rest were around it
+  // before). The earliest collision found before stays a candidate: its pair was predicted on the
+  // same paths, and a pair first around it now lies in the new cells. (A ball of the new cells that
+  // predicted ball i on its own paths since keeps that event itself.)
+  void predict_after_crossing(std::size_t i, int axis, int step) {
     predict_crossing(i);
     prefetch_filing(i);  // its time, unless the new cells hold an earlier collision
-    scan(i, around);
+    predict_collisions(i, axis, step);
     calendar_.update(static_cast<std::uint32_t>(i), own_[i].event_time());
   }
 
@@ -471,58 +455,57 @@ class Gas {
 
   static constexpr int all_axes = -1;
 
-  // The cells whose balls a prediction of ball i searches: every one of the 3^D around its own when
-  // `axis` is all_axes, else those `beyond` cells away along `axis` (−2 to 2) and next to it along the
-  // other axes; their heads and their first balls asked of memory all at once before any is read:
-  // beyond the caches the misses then overlap instead of following one another.
-  void gather(std::size_t i, int axis, int beyond, Neighbourhood& around) const {
-    // Along each axis the cell coordinates to search, wrapped around the box, as the axis's terms of
-    // cell_index: three (one step either side and the ball's own), or the one beyond.
-    std::size_t part[D][3];
-    int count[D];
-    for (int k = 0; k < D; ++k) {
-      const int c = own_[i].coordinates[k];
-      const std::uint32_t* offset = axis_offset_[k].data();
-      if (k == axis) {
-        part[k][0] = offset[wrapped(c + beyond)];
-        count[k] = 1;
+  // Ball i's earliest collision with a ball of the cells around its own (every one of the 3^D when
+  // `axis` is all_axes, else those one step beyond it along `axis`), kept where earlier than the
+  // candidate it has. Ball i is at now.
+  void predict_collisions(std::size_t i, int axis, int step) {
+    // The cells, their heads and their first balls asked of memory all at once before any is read:
+    // beyond the caches the misses then overlap instead of following one another.
+    constexpr int around = D == 2 ? 9 : 27;
+    std::uint32_t first[around];
+    int cells = 0;
+    {
+      // Along each axis the cell coordinates to search, wrapped around the box, as the axis's terms
+      // of cell_index: three (one step either side and the ball's own), or the one beyond.
+      std::size_t part[D][3];
+      int count[D];
+      for (int k = 0; k < D; ++k) {
+        const int c = own_[i].coordinates[k];
+        const std::uint32_t* offset = axis_offset_[k].data();
+        if (k == axis) {
+          part[k][0] = offset[wrapped(c + step)];
+          count[k] = 1;
+        } else {
+          part[k][0] = offset[wrapped(c - 1)];
+          part[k][1] = offset[c];
+          part[k][2] = offset[wrapped(c + 1)];
+          count[k] = 3;
+        }
+      }
+      std::size_t cell[around];
+      const auto add = [&](std::size_t index) {
+        prefetch(&head_[index]);
+        cell[cells++] = index;
+      };
+      // The first axis fastest (cell_index's order within a tile; where ties between equal times are
+      // broken, always the same way).
+      if constexpr (D == 2) {
+        for (int b = 0; b < count[1]; ++b)
+          for (int a = 0; a < count[0]; ++a) add(part[1][b] + part[0][a]);
       } else {
-        part[k][0] = offset[wrapped(c - 1)];
-        part[k][1] = offset[c];
-        part[k][2] = offset[wrapped(c + 1)];
-        count[k] = 3;
+        for (int c = 0; c < count[2]; ++c)
+          for (int b = 0; b < count[1]; ++b)
+            for (int a = 0; a < count[0]; ++a) add(part[2][c] + part[1][b] + part[0][a]);
+      }
+      for (int n = 0; n < cells; ++n) {
+        first[n] = head_[cell[n]];
+        if (first[n] != none) prefetch(&ball_[first[n]]);
       }
     }
-    std::size_t cell[Neighbourhood::most];
-    int cells = 0;
-    const auto add = [&](std::size_t index) {
-      prefetch(&head_[index]);
-      cell[cells++] = index;
-    };
-    // The first axis fastest (cell_index's order within a tile; where ties between equal times are
-    // broken, always the same way).
-    if constexpr (D == 2) {
-      for (int b = 0; b < count[1]; ++b)
-        for (int a = 0; a < count[0]; ++a) add(part[1][b] + part[0][a]);
-    } else {
-      for (int c = 0; c < count[2]; ++c)
-        for (int b = 0; b < count[1]; ++b)
-          for (int a = 0; a < count[0]; ++a) add(part[2][c] + part[1][b] + part[0][a]);
-    }
-    for (int n = 0; n < cells; ++n) {
-      around.first[n] = head_[cell[n]];
-      if (around.first[n] != none) prefetch(&ball_[around.first[n]]);
-    }
-    around.cells = cells;
-  }
-
-  // Ball i's earliest collision with the balls `around` it (gather), kept where earlier than the
-  // candidate it has. Ball i is at now; the cells' lists must not have changed since the gather.
-  void scan(std::size_t i, const Neighbourhood& around) {
     Own& own = own_[i];
     const double before = own.collision_time;
-    for (int n = 0; n < around.cells; ++n) {
-      for (std::uint32_t j = around.first[n]; j != none; j = ball_[j].next) {
+    for (int n = 0; n < cells; ++n) {
+      for (std::uint32_t j = first[n]; j != none; j = ball_[j].next) {
         if (j == i) continue;
         const Vector other = ball_[j].position + ball_[j].velocity * (now_ - ball_[j].updated);
         const Vector p = nearest_image(ball_[i].position, other);
@@ -654,12 +637,8 @@ class Gas {
       now_ = own.event_time();
       if (own.crossing_first()) {  // a cell crossing
         bring_to_now(i);
-        const int axis = own.axis, step = own.step;
-        // The cells that come around the ball in its new cell (two steps on from its old one), asked of
-        // memory before it moves: their misses overlap the move.
-        Neighbourhood around;
-        gather(i, axis, 2 * step, around);
         remove(i);
+        const int axis = own.axis, step = own.step;
         int& c = own.coordinates[axis];
         c += step;
         if (c == cells_per_side_) c = 0, ball_[i].position[axis] -= side_;
@@ -667,7 +646,7 @@ class Gas {
         own.cell = static_cast<std::uint32_t>(cell_index(own.coordinates));
         insert(i);
         ++crossings_;
-        predict_after_crossing(i, around);
+        predict_after_crossing(i, axis, step);
       } else if (own_[own.partner].last_collision > own.predicted_after) {
         predict(i);  // stale: the partner has collided since
       } else {
@@ -689,14 +668,10 @@ class Gas {
         own_[i].last_collision = own_[j].last_collision = ++collision_number_;
         // Both predicted before either is filed, each filing asked of memory ahead of it: the
         // calendar's misses overlap the other ball's prediction (10^6 balls: 6–9 % more collisions a
-        // second with the prefetches above and in the look ahead). Both neighbourhoods are gathered
-        // before either is searched, so that ball j's misses overlap the search around ball i.
-        Neighbourhood around_i, around_j;
-        start_full_prediction(i, around_i);
-        start_full_prediction(j, around_j);
-        scan(i, around_i);
+        // second with the prefetches above and in the look ahead).
+        predict_in_full(i);
         prefetch_filing(i);
-        scan(j, around_j);
+        predict_in_full(j);
         prefetch_filing(j);
         calendar_.update(static_cast<std::uint32_t>(i), own_[i].event_time());
         calendar_.update(static_cast<std::uint32_t>(j), own_[j].event_time());
