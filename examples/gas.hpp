@@ -700,11 +700,10 @@ class Gas {
   Options options_;
   double side_ = 0, cell_width_ = 0, now_ = 0;
   int cells_per_side_ = 0;
-  // What a prediction reads of each neighbour, in one place (one cache line, 64 bytes, in 3-D and in
-  // 2-D alike: Eigen aligns a 2-vector to 16 bytes, so a disk's velocity starts at byte 32 and the record
-  // rounds up to 64): its position at its last update, that time, its velocity, and its links in its
-  // cell's list.
-  struct alignas(D == 3 ? 64 : 16) Ball {
+  // What a prediction reads of each neighbour, in one place, one cache line (a disk's record is 64 bytes
+  // without the alignment too: Eigen aligns a 2-vector to 16 bytes, so its velocity starts at byte 32):
+  // its position at its last update, that time, its velocity, and its links in its cell's list.
+  struct alignas(64) Ball {
     Vector position = Vector::Zero();
     double updated = 0;
     Vector velocity = Vector::Zero();
