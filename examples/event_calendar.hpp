@@ -10,6 +10,9 @@
 // earliest time. Moving an item touches two short lists: no sift through log N levels of one big
 // heap, most of them beyond the caches.
 //
+// Beyond the caches a filing into a later bucket may wait a few updates, its bucket's head asked of
+// memory meanwhile (defer_filings).
+//
 // The width is chosen from the pending times themselves (reset): twice their mean spacing over the
 // nearer half, so that a bucket holds a few items when the front reaches it and few times fall beyond
 // the year. Any width gives the right order; the width decides only the speed.
@@ -65,7 +68,18 @@ class EventCalendar {
     if (!(width_ > 0) || !std::isfinite(width_)) width_ = 1;
     year_ = current_ = bucket_number(now);
     looked_ahead_from_ = std::numeric_limits<std::int64_t>::min();
+    waiting_count_ = 0;
     for (std::size_t i = 0; i < times.size(); ++i) file(static_cast<std::uint32_t>(i), times[i]);
+  }
+
+  /// Whether update() defers a filing into a later bucket (off at first): the item then waits in a short
+  /// queue, its bucket's list head asked of memory, and is filed a few updates later, or before the
+  /// front moves on (a later bucket's time cannot be the earliest while the front holds any). The head's
+  /// miss then overlaps the work in between instead of stalling the update: for items beyond the
+  /// caches. Nothing observable changes: the earliest item, time() and the look ahead are the same.
+  void defer_filings(bool on) {
+    while (waiting_count_ > 0) file_waiting();
+    defer_ = on;
   }
 
   double time(std::uint32_t i) const { return item_[i].time; }
@@ -73,6 +87,18 @@ class EventCalendar {
   /// Moves item i to `time` (≥ the last earliest time returned, or +∞).
   void update(std::uint32_t i, double time) {
     unfile(i);
+    if (defer_) {
+      if (const std::optional<std::int64_t> b = bucket_this_year(time); b && *b > current_) {
+        Item& item = item_[i];
+        item.time = time;
+        ++item.version;
+        item.bucket = waiting;
+        prefetch(&head_[bucket_index(*b)]);
+        if (waiting_count_ == waiting_size) file_waiting();
+        waiting_[(waiting_first_ + waiting_count_++) % waiting_size] = i;
+        return;
+      }
+    }
     file(i, time);
   }
 
@@ -86,6 +112,7 @@ class EventCalendar {
   void look_ahead(int buckets, Soon&& soon) {
     if (current_ == looked_ahead_from_) return;
     looked_ahead_from_ = current_;
+    while (waiting_count_ > 0) file_waiting();  // so that the buckets' lists are complete
     for (int ahead = 1; ahead <= buckets; ++ahead) {
       for (std::uint32_t i = head_[bucket_index(current_ + ahead)]; i != none; i = item_[i].next)
         soon(i, ahead);
@@ -110,7 +137,7 @@ class EventCalendar {
   /// (prefetch_record).
   void prefetch_removal(std::uint32_t i) const {
     const Item& item = item_[i];
-    if (item.bucket == front) return;  // no list: its entry in the front heap goes stale
+    if (item.bucket == front || item.bucket == waiting) return;  // in no list
     if (item.previous != none)
       prefetch(&item_[item.previous]);
     else if (item.bucket != overflow_list)
@@ -134,6 +161,10 @@ class EventCalendar {
         front_.pop_back();
       }
       if (!front_.empty()) return front_.front().item;
+      if (waiting_count_ > 0) {  // a later bucket's, filed before the front moves on
+        file_waiting();
+        continue;
+      }
       if (in_ring_ == 0) {
         if (!next_year()) return none;
         continue;
@@ -153,7 +184,7 @@ class EventCalendar {
   }
 
  private:
-  static constexpr std::uint32_t overflow_list = none, front = none - 1;
+  static constexpr std::uint32_t overflow_list = none, front = none - 1, waiting = none - 2;
   // A bucket's width in mean spacings of the times. Two, with as many buckets as items (the same year
   // as one spacing and twice the buckets): half the ring's heads to miss in memory, and more of the
   // re-filed times land in the front bucket, whose heap costs no miss. Measured against one (the median
@@ -219,6 +250,7 @@ class EventCalendar {
 
   void unfile(std::uint32_t i) {
     Item& item = item_[i];
+    if (item.bucket == waiting) return;  // in no list and not counted: update() files it or queues it again
     if (item.bucket != overflow_list) --in_ring_;
     if (item.bucket == front) {  // its entry goes stale
       item.bucket = overflow_list;
@@ -230,6 +262,15 @@ class EventCalendar {
     else
       list_of(item) = item.next;
     if (item.next != none) item_[item.next].previous = item.previous;
+  }
+
+  // Files the item that has waited longest, unless it has been filed since (an item updated while it
+  // waits may sit in the queue twice: the later entry finds it filed).
+  void file_waiting() {
+    const std::uint32_t i = waiting_[waiting_first_];
+    waiting_first_ = (waiting_first_ + 1) % waiting_size;
+    --waiting_count_;
+    if (item_[i].bucket == waiting) file(i, item_[i].time);
   }
 
   // The next year: from the end of this one, or, with the ring empty, from the earliest waiting time
@@ -255,6 +296,14 @@ class EventCalendar {
     }
     return true;
   }
+
+  // The deferred filings (defer_filings): four, oldest first (eight measured the same, two no better).
+  // 10^6 disks about 3 % more collisions a second than without (four sets of alternating separate
+  // processes on one core: −1 to +6 %).
+  static constexpr std::size_t waiting_size = 4;
+  bool defer_ = false;
+  std::uint32_t waiting_[waiting_size] = {};
+  std::size_t waiting_first_ = 0, waiting_count_ = 0;
 
   std::vector<double> ahead_;
   Array<std::uint32_t> head_;

@@ -184,6 +184,7 @@ class Gas {
       insert(i);
     }
     for (std::size_t i = 0; i < n; ++i) predict_in_full(i);
+    calendar_.defer_filings(n >= look_ahead_from);
     refile();
     initial_temperature_ = temperature();
   }

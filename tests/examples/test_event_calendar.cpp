@@ -50,14 +50,17 @@ void check_look_ahead(EventCalendar& calendar, const std::set<std::pair<double, 
 }
 
 // Runs `steps` events: each takes the earliest item, moves now to its time and files it (and
-// `others` random items) at a later time drawn by `draw`.
+// `others` random items) at a later time drawn by `draw`. With `defer`, filings into later buckets
+// wait in the calendar's queue (defer_filings), which is switched off and on again now and then.
 template <class Draw>
-void run_against_reference(std::size_t items, int steps, int others, Draw draw) {
+void run_with(bool defer, std::size_t items, int steps, int others, Draw draw) {
+  INFO("filings deferred: " << defer);
   std::mt19937_64 random(items * 7919 + static_cast<std::size_t>(steps));
   std::vector<double> times(items);
   double now = 0;
   for (double& t : times) t = draw(random, now);
   EventCalendar calendar;
+  calendar.defer_filings(defer);
   calendar.reset(times, now);
   std::set<std::pair<double, std::uint32_t>> reference;
   for (std::uint32_t i = 0; i < items; ++i) reference.insert({times[i], i});
@@ -80,12 +83,27 @@ void run_against_reference(std::size_t items, int steps, int others, Draw draw) 
     REQUIRE(earliest != EventCalendar::none);
     REQUIRE(times[earliest] == reference.begin()->first);
     REQUIRE(calendar.time(earliest) == times[earliest]);
-    check_look_ahead(calendar, reference, times, earliest);
+    // The look ahead before the moves, or on every third step after them, when filings may wait.
+    if (step % 3 != 1) check_look_ahead(calendar, reference, times, earliest);
     now = times[earliest];
     move(earliest, draw(random, now));
     for (int k = 0; k < others; ++k) move(pick(random), draw(random, now));
+    if (step % 3 == 1) {
+      const std::uint32_t next = calendar.earliest();
+      if (next != EventCalendar::none) check_look_ahead(calendar, reference, times, next);
+    }
     if (step % 5000 == 4999) calendar.reset(times, now);  // refiled mid-run, as the gas does
+    if (defer && step % 3001 == 3000) {                   // the waiting filings filed at once
+      calendar.defer_filings(false);
+      calendar.defer_filings(true);
+    }
   }
+}
+
+template <class Draw>
+void run_against_reference(std::size_t items, int steps, int others, Draw draw) {
+  run_with(false, items, steps, others, draw);
+  run_with(true, items, steps, others, draw);
 }
 
 }  // namespace
