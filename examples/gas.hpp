@@ -293,6 +293,12 @@ class Gas {
  private:
   static constexpr std::uint32_t none = std::numeric_limits<std::uint32_t>::max();
   using Cell = Eigen::Matrix<int, D, 1>;
+  // The cells a prediction searches and their lists' first balls, asked of memory by gather() for the
+  // search() that follows.
+  struct Gathered {
+    std::uint32_t first[D == 2 ? 9 : 27];
+    int cells = 0;
+  };
 
   static constexpr double infinity = std::numeric_limits<double>::infinity();
 
@@ -416,12 +422,15 @@ class Gas {
   }
 
   // Ball i's next crossing and its earliest collision with a ball of the 3^D cells around it, any
-  // candidate it had forgotten.
-  void predict_in_full(std::size_t i) {
+  // candidate it had forgotten; `gathered`, where given, holds the 3^D cells around it, gathered earlier.
+  void predict_in_full(std::size_t i, const Gathered* gathered = nullptr) {
     predict_crossing(i);
     own_[i].collision_time = infinity;
     own_[i].partner = none;
-    predict_collisions(i, all_axes, 0);
+    if (gathered != nullptr)
+      search(i, *gathered);
+    else
+      predict_collisions(i, all_axes, 0);
   }
 
   // After ball i crossed into a new cell along `axis` by `step`: its next crossing, and collisions with
@@ -429,10 +438,14 @@ class Gas {
   // before). The earliest collision found before stays a candidate: its pair was predicted on the
   // same paths, and a pair first around it now lies in the new cells. (A ball of the new cells that
   // predicted ball i on its own paths since keeps that event itself.)
-  void predict_after_crossing(std::size_t i, int axis, int step) {
+  // `gathered`, where given, holds those cells, gathered earlier.
+  void predict_after_crossing(std::size_t i, int axis, int step, const Gathered* gathered = nullptr) {
     predict_crossing(i);
     prefetch_filing(i);  // its time, unless the new cells hold an earlier collision
-    predict_collisions(i, axis, step);
+    if (gathered != nullptr)
+      search(i, *gathered);
+    else
+      predict_collisions(i, axis, step);
     calendar_.update(static_cast<std::uint32_t>(i), own_[i].event_time());
   }
 
@@ -460,10 +473,18 @@ class Gas {
   // `axis` is all_axes, else those one step beyond it along `axis`), kept where earlier than the
   // candidate it has. Ball i is at now.
   void predict_collisions(std::size_t i, int axis, int step) {
-    // The cells, their heads and their first balls asked of memory all at once before any is read:
-    // beyond the caches the misses then overlap instead of following one another.
+    Gathered gathered;
+    gather(own_[i].coordinates, axis, step, gathered);
+    search(i, gathered);
+  }
+
+  // The cells around `centre` (every one of the 3^D when `axis` is all_axes, else those one step beyond
+  // it along `axis`) and their lists' first balls. The cells, their heads and their first balls are
+  // asked of memory all at once before any is read: beyond the caches the misses then overlap instead
+  // of following one another.
+  void gather(const Cell& centre, int axis, int step, Gathered& gathered) {
     constexpr int around = D == 2 ? 9 : 27;
-    std::uint32_t first[around];
+    std::uint32_t* first = gathered.first;
     int cells = 0;
     {
       // Along each axis the cell coordinates to search, wrapped around the box, as the axis's terms
@@ -471,7 +492,7 @@ class Gas {
       std::size_t part[D][3];
       int count[D];
       for (int k = 0; k < D; ++k) {
-        const int c = own_[i].coordinates[k];
+        const int c = centre[k];
         const std::uint32_t* offset = axis_offset_[k].data();
         if (k == axis) {
           part[k][0] = offset[wrapped(c + step)];
@@ -503,6 +524,14 @@ class Gas {
         if (first[n] != none) prefetch(&ball_[first[n]]);
       }
     }
+    gathered.cells = cells;
+  }
+
+  // Ball i's earliest collision with a ball of the gathered cells, kept where earlier than the candidate
+  // it has. Ball i is at now; the cells' lists are as they were gathered.
+  void search(std::size_t i, const Gathered& gathered) {
+    const std::uint32_t* first = gathered.first;
+    const int cells = gathered.cells;
     Own& own = own_[i];
     const double before = own.collision_time;
     for (int n = 0; n < cells; ++n) {
@@ -625,6 +654,26 @@ class Gas {
 
   // Runs events until `collisions` more collisions; accumulates the virial where `measure`.
   void advance(std::uint64_t collisions, bool measure) {
+    if (ball_.size() >= look_ahead_from)
+      advance_beyond_caches(collisions, measure);
+    else
+      run_events<false>(collisions, measure);
+  }
+
+  // Beyond the caches, each event gathers the cells its predictions will search at its start, before
+  // the work that needs none of them (a crossing's move between lists, a collision's resolution and the
+  // first ball's search), so that their misses overlap that work; a crossing's new cells do not include
+  // the two whose lists its move changes (the box is at least three cells wide), and a collision changes
+  // no list. The same events bit for bit. And the loop is compiled as one function with everything it
+  // calls inlined (flatten), kept out of the loop of smaller gases, whose code stays as it was. 10^6
+  // disks 17 % more collisions a second (9 % of it the flattening), 10^6 spheres 10 %, 10^5 disks 13 %,
+  // 1024 balls even (alternating separate processes on one core).
+  [[gnu::noinline, gnu::flatten]] void advance_beyond_caches(std::uint64_t collisions, bool measure) {
+    run_events<true>(collisions, measure);
+  }
+
+  template <bool beyond_caches>
+  void run_events(std::uint64_t collisions, bool measure) {
     const std::uint64_t quiet_limit = options_.max_events_without_collision != 0
                                           ? options_.max_events_without_collision
                                           : 1000000 + 100 * static_cast<std::uint64_t>(options_.balls);
@@ -637,6 +686,12 @@ class Gas {
       Own& own = own_[i];
       now_ = own.event_time();
       if (own.crossing_first()) {  // a cell crossing
+        Gathered gathered;
+        if constexpr (beyond_caches) {
+          Cell next = own.coordinates;
+          next[own.axis] = static_cast<int>(wrapped(next[own.axis] + own.step));
+          gather(next, own.axis, own.step, gathered);
+        }
         bring_to_now(i);
         remove(i);
         const int axis = own.axis, step = own.step;
@@ -647,11 +702,16 @@ class Gas {
         own.cell = static_cast<std::uint32_t>(cell_index(own.coordinates));
         insert(i);
         ++crossings_;
-        predict_after_crossing(i, axis, step);
+        predict_after_crossing(i, axis, step, beyond_caches ? &gathered : nullptr);
       } else if (own_[own.partner].last_collision > own.predicted_after) {
         predict(i);  // stale: the partner has collided since
       } else {
         const std::size_t j = own.partner;
+        Gathered around_i, around_j;
+        if constexpr (beyond_caches) {
+          gather(own_[i].coordinates, all_axes, 0, around_i);
+          gather(own_[j].coordinates, all_axes, 0, around_j);
+        }
         // The partner leaves its place in the calendar's lists: asked of memory now, written below.
         if (ball_.size() >= look_ahead_from) calendar_.prefetch_removal(static_cast<std::uint32_t>(j));
         bring_to_now(i);
@@ -670,9 +730,9 @@ class Gas {
         // Both predicted before either is filed, each filing asked of memory ahead of it: the
         // calendar's misses overlap the other ball's prediction (10^6 balls: 6–9 % more collisions a
         // second with the prefetches above and in the look ahead).
-        predict_in_full(i);
+        predict_in_full(i, beyond_caches ? &around_i : nullptr);
         prefetch_filing(i);
-        predict_in_full(j);
+        predict_in_full(j, beyond_caches ? &around_j : nullptr);
         prefetch_filing(j);
         calendar_.update(static_cast<std::uint32_t>(i), own_[i].event_time());
         calendar_.update(static_cast<std::uint32_t>(j), own_[j].event_time());
