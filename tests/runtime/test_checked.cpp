@@ -139,9 +139,22 @@ TEST_CASE("checked::time_of_impact", "[runtime][checked][time_of_impact]") {
     // Just above it: a head-on hit, at (10 − r)/3.
     CHECK(billiards::checked::time_of_impact(origin, origin, p2, approaching, 1e-152) == Approx(10.0 / 3));
     // The cases: a crawl at 1e-161 over a gap, overlapping specks of radius 2e-170.
-    CHECK(billiards::checked::time_of_impact(origin, origin, Vector(1.4, 0, 0), Vector(-1e-161, 0, 0), 0.057) ==
-          Approx((1.4 - 0.057) / 1e-161));
-    CHECK(billiards::checked::time_of_impact(origin, Vector(1, 0, 0), Vector(2e-170, 0, 0), origin, 4e-170) == 0);
+    CHECK(billiards::checked::time_of_impact(origin, origin, Vector(1.4, 0, 0), Vector(-1e-161, 0, 0),
+                                             0.057) == Approx((1.4 - 0.057) / 1e-161));
+    CHECK(billiards::checked::time_of_impact(origin, Vector(1, 0, 0), Vector(2e-170, 0, 0), origin, 4e-170) ==
+          0);
+  }
+  SECTION("the limit holds where |p2 − p1|² underflows (float: the fuzz harness's case)") {
+    // |p2 − p1| = 2.6e-23: its square underflows in float, and a plain norm read it as 0.
+    using Vector2f = Eigen::Vector2f;
+    const Vector2f a(0.0f, 2.6469779601696886e-23f), b(-0.0f, -0.0f);
+    const Vector2f va(-0.0f, -1.5839090484674637e-30f), vb(0.0f, 3.7252902984619141e-09f);
+    rejects([&] { (void)billiards::checked::time_of_impact(a, va, b, vb, 1.4012984643248171e-45f); },
+            "contact_distance", "1.4");
+    // Above the limit (4.3e-19 · 2.6e-23 = 1.1e-41) the head-on hit is found, at (|p| − r)/|w|.
+    const float r = 1e-40f;
+    CHECK(billiards::checked::time_of_impact(a, va, b, vb, r) ==
+          Approx((2.6469779601696886e-23 - 1e-40) / (3.7252902984619141e-09 + 1.5839090484674637e-30)));
   }
   SECTION("positions and velocities: finite and within the component limit") {
     rejects(
