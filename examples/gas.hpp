@@ -682,7 +682,7 @@ class Gas {
       const std::uint32_t earliest = calendar_.earliest();
       if (earliest == EventCalendar::none) throw NoCollisions("no ball has a next event");
       const std::size_t i = earliest;
-      if (ball_.size() >= look_ahead_from) prefetch_next_events();
+      if constexpr (beyond_caches) prefetch_next_events();
       Own& own = own_[i];
       now_ = own.event_time();
       if (own.crossing_first()) {  // a cell crossing
@@ -713,7 +713,7 @@ class Gas {
           gather(own_[j].coordinates, all_axes, 0, around_j);
         }
         // The partner leaves its place in the calendar's lists: asked of memory now, written below.
-        if (ball_.size() >= look_ahead_from) calendar_.prefetch_removal(static_cast<std::uint32_t>(j));
+        if constexpr (beyond_caches) calendar_.prefetch_removal(static_cast<std::uint32_t>(j));
         bring_to_now(i);
         bring_to_now(j);
         const Vector image = ball_[i].position + nearest_image(ball_[i].position, ball_[j].position);

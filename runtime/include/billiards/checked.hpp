@@ -278,16 +278,16 @@ template <typename DP1, typename D1, typename DP2, typename D2>
                                detail::to_text(component_limit<Scalar>()) +
                                (subnormals_flushed<Scalar>() ? " and" + detail::flushed_note<Scalar>() : ""));
   }
-  // stableNorm: a plain norm's squares underflow for tiny distances (|p2 − p1| = 2.6e-23 in float gave
+  // scaled_norm: a plain norm's squares underflow for tiny distances (|p2 − p1| = 2.6e-23 in float gave
   // 0, and a contact distance far below the limit passed the test; found by the fuzz harness).
-  const Scalar distance = (p2 - p1).stableNorm();
+  const Scalar distance = detail::scaled_norm(p2 - p1);
   if (!(contact_distance >= relative_contact_distance_limit<Scalar>() * distance)) {
     throw invalid_argument(function, "contact_distance", detail::to_text(contact_distance),
                            "a contact distance of at least relative_contact_distance_limit() · |p2 − p1| = " +
                                detail::to_text(relative_contact_distance_limit<Scalar>() * distance) +
                                " (below it whether the spheres hit is decided by less than rounding)");
   }
-  const Scalar reach = std::max(distance, contact_distance), speed = (v2 - v1).stableNorm();
+  const Scalar reach = std::max(distance, contact_distance), speed = detail::scaled_norm(v2 - v1);
   const Scalar largest_product = std::sqrt(std::numeric_limits<Scalar>::max()) / Scalar(8);
   if (!(reach * speed <= largest_product)) {
     const detail::PlainVector<D1> relative = v2 - v1;
