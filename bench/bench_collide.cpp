@@ -470,20 +470,16 @@ void bandwidth_ceiling(benchmark::State& state) {
   const Scalar* __restrict b = m2.data();
   const Scalar* const masses[2] = {a, b};
   const std::size_t block = prefetched ? billiards::detail::batch_block : count;
-  const std::size_t chunk_size = prefetched ? billiards::detail::batch_prefetch_chunk : count;
   for (auto _ : state) {
     // Each array read once and v1, v2 written once, as collide_batch makes.
     for (std::size_t begin = 0; begin < count; begin += block) {
       const std::size_t end = std::min(count, begin + block);
-      for (std::size_t chunk = begin; chunk < end; chunk += chunk_size) {
-        const std::size_t chunk_end = std::min(end, chunk + chunk_size);
-        if (prefetched) billiards::detail::prefetch_next_block(chunk, chunk_end, count, masses, d, x, y);
-        BILLIARDS_BENCH_ARRAYS_DO_NOT_OVERLAP
-        for (std::size_t i = chunk; i < chunk_end; ++i) {
-          for (int k = 0; k < 3; ++k) {
-            x[k][i] += a[i] * d[k][i];
-            y[k][i] -= b[i] * d[k][i];
-          }
+      if (prefetched) billiards::detail::prefetch_next_block(end, count, masses, d, x, y);
+      BILLIARDS_BENCH_ARRAYS_DO_NOT_OVERLAP
+      for (std::size_t i = begin; i < end; ++i) {
+        for (int k = 0; k < 3; ++k) {
+          x[k][i] += a[i] * d[k][i];
+          y[k][i] -= b[i] * d[k][i];
         }
       }
     }

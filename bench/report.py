@@ -274,6 +274,9 @@ so the times and the per-second counters share one basis.
 
 ## One collision per call (3-D, 4096 random cases)
 
+One call per iteration, cycling through the cases; the loop's index wraps by a comparison, so nothing
+but the call lies on its dependency chain.
+
 {single_call_table(runs)}
 
 - What the overflow safety costs, generated against the paper's plain formula:

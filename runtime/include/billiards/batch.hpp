@@ -21,7 +21,7 @@ using Components = std::array<std::span<Scalar>, Dimension>;
 namespace detail {
 
 /// collide_batch's block: 1024 pairs, whose masses are tested together and whose arrays stay in the
-/// caches (the first level's masses, the second level's rest) between the test and the pass.
+/// caches between the test and the pass (the masses in the first level).
 inline constexpr std::size_t batch_block = 1024;
 
 /// From this many pairs (about 9 MB of data in 3-D float, twice that in double) collide_batch
@@ -49,29 +49,20 @@ template <bool for_writing, typename Pointer, std::size_t count>
 #endif
 }
 
-/// collide_batch's prefetch beyond the caches comes in chunks of this many pairs, half a block: each
-/// chunk is resolved after the requests for the same chunk of the next block.
-inline constexpr std::size_t batch_prefetch_chunk = batch_block / 2;
-
-/// collide_batch's prefetch for pairs [begin, end) of a block, where the data lie beyond the caches
-/// (count ≥ batch_prefetch_from): the same pairs of the next block (batch_block further on, cut at
-/// `count`), their masses and normals for reading and their velocities for writing. collide_batch calls
-/// it before each chunk of batch_prefetch_chunk pairs, so the requests are spread over the pass: sent
-/// all at once for a whole block (1024 pairs, 11 arrays: 700 cache lines in float, 1400 in double)
-/// they overflowed the processor's queue of outstanding misses, and float reached 0.7 of the bandwidth
-/// at 10^7 pairs. The bandwidth ceiling of the benchmark calls it too, so that it keeps the batch's
-/// access pattern exactly.
+/// collide_batch's prefetch, for the block after the one ending at item `end` of `count`: where the
+/// data lie beyond the caches (count ≥ batch_prefetch_from), that block's masses and normals for
+/// reading and its velocities for writing. The bandwidth ceiling of the benchmark calls it too, so that
+/// it keeps the batch's access pattern exactly.
 template <typename Masses, typename Normals, typename Velocities>
-[[gnu::always_inline]] inline void prefetch_next_block(std::size_t begin, std::size_t end, std::size_t count,
+[[gnu::always_inline]] inline void prefetch_next_block(std::size_t end, std::size_t count,
                                                        const Masses& masses, const Normals& normal,
                                                        const Velocities& v1, const Velocities& v2) noexcept {
-  if (count < batch_prefetch_from || count - begin <= batch_block) return;
-  const std::size_t ahead_begin = begin + batch_block;
-  const std::size_t ahead_end = count - end < batch_block ? count : end + batch_block;
-  prefetch_items<false>(masses, ahead_begin, ahead_end);
-  prefetch_items<false>(normal, ahead_begin, ahead_end);
-  prefetch_items<true>(v1, ahead_begin, ahead_end);
-  prefetch_items<true>(v2, ahead_begin, ahead_end);
+  if (count < batch_prefetch_from) return;
+  const std::size_t next_end = count - end < batch_block ? count : end + batch_block;
+  prefetch_items<false>(masses, end, next_end);
+  prefetch_items<false>(normal, end, next_end);
+  prefetch_items<true>(v1, end, next_end);
+  prefetch_items<true>(v2, end, next_end);
 }
 
 }  // namespace detail
@@ -123,9 +114,9 @@ void collide_batch(std::span<const Scalar> m1, const Components<Scalar, Dimensio
   }
   const Scalar* __restrict mass1 = m1.data();
   const Scalar* __restrict mass2 = m2.data();
-  const Scalar* const masses[2] = {mass1, mass2};
-  // Pairs [begin, end) through `kernel` (a generated kernel of the masses and the normal velocities).
-  const auto resolve = [&](std::size_t begin, std::size_t end, auto kernel) {
+  // One pass over pairs [begin, end) through `kernel` (a generated kernel of the masses and the normal
+  // velocities).
+  const auto pass = [&](std::size_t begin, std::size_t end, auto kernel) {
   // The arrays do not overlap (a documented precondition). The compilers must be told: otherwise they
   // would need a run-time overlap test for every pair of the 3D + 2 arrays, more than they are willing
   // to emit (GCC stops at 10), and leave the loop scalar.
@@ -147,28 +138,21 @@ void collide_batch(std::span<const Scalar> m1, const Components<Scalar, Dimensio
       }
     }
   };
-  // One block's pass, chunk by chunk, each chunk after the requests for the same chunk of the next
-  // block (beyond the caches only; detail::prefetch_next_block).
-  const auto pass = [&](std::size_t begin, std::size_t end, auto kernel) {
-    for (std::size_t chunk = begin; chunk < end; chunk += detail::batch_prefetch_chunk) {
-      const std::size_t chunk_end =
-          end - chunk < detail::batch_prefetch_chunk ? end : chunk + detail::batch_prefetch_chunk;
-      detail::prefetch_next_block(chunk, chunk_end, count, masses, normal, x1, x2);
-      resolve(chunk, chunk_end, kernel);
-    }
-  };
-  // In blocks small enough to stay in the caches: where every pair's masses lie in the plain
+  // In blocks small enough to stay in the first-level cache: where every pair's masses lie in the plain
   // form's range, the plain kernel that elastic_normal_velocity_change itself takes there (two divisions
   // by one sum); otherwise elastic_normal_velocity_change (its ratio form for the pairs outside). The
   // range test (kernels::within_plain_mass_range on the masses' bits, detail::within_plain_mass_range_bits:
   // a few integer operations a pair) reads two of the 6D + 2 arrays, which the pass then finds in that
   // cache.
   constexpr std::size_t block = detail::batch_block;
+  const Scalar* const masses[2] = {mass1, mass2};
   for (std::size_t begin = 0; begin < count; begin += block) {
     const std::size_t end = count - begin < block ? count : begin + block;
-    // Beyond the caches the pass asks memory for the next block's arrays, chunk by chunk, so they
-    // arrive while this block is resolved (the hardware prefetcher alone restarts each of the 6D + 2
-    // streams after the test). Below, where the data sit in the caches, the requests would only cost.
+    // Beyond the caches: the next block's arrays asked of memory before this block is tested and
+    // resolved, so they arrive while it is (the hardware prefetcher alone restarts each of the 6D + 2
+    // streams after the test, and fell to 0.7 of the bandwidth in float at 10^7 pairs). Below, where
+    // the data sit in the caches, the requests would only cost.
+    detail::prefetch_next_block(end, count, masses, normal, x1, x2);
     unsigned outside = 0;
     for (std::size_t i = begin; i < end; ++i) {
       outside |= detail::within_plain_mass_range_bits(mass1[i], mass2[i]) ? 0u : 1u;
