@@ -9,6 +9,7 @@
 #include <Eigen/Core>
 
 #include <algorithm>
+#include <array>
 #include <bit>
 #include <cassert>
 #include <cmath>
@@ -180,29 +181,79 @@ template <typename Derived>
   return scaled;
 }
 
-/// `d` scaled by the power of two that puts its largest component in [0.5, 1). The scaling is exact
-/// (short of components 2^p times smaller than the largest, which change by less than rounding) and a
-/// collision along d does not depend on |d| (audit claim `beyond.any_normal.scale_invariant`); it keeps
-/// the multiple of d that a kernel returns from underflowing or overflowing because |d| is extreme.
+/// `d` scaled in place by the power of two that puts its largest component in [0.5, 1). The scaling is
+/// exact (short of components 2^p times smaller than the largest, which change by less than rounding)
+/// and a collision along d does not depend on |d| (audit claim `beyond.any_normal.scale_invariant`);
+/// it keeps the multiple of d that a kernel returns from underflowing or overflowing because |d| is
+/// extreme.
 ///
 /// For IEEE float and double whose largest component is normal and below the top two binades (every d
-/// but the subnormal, the huge and the non-finite) the factor 2^−e is built straight from that
-/// component's exponent field, f: e = f − bias + 1, so 2^−e has the field 2·bias − 1 − f — one
-/// integer subtraction, no branch on the exponent's range. The rest take times_power_of_two's general
-/// path; both give the same factor wherever both apply.
-template <typename Derived>
-[[nodiscard]] PlainVector<Derived> power_of_two_scaled(const Eigen::MatrixBase<Derived>& d) noexcept {
-  using Scalar = typename Derived::Scalar;
+/// but the subnormal, the huge and the non-finite) the factor 2^−e is built straight from the largest
+/// exponent field, f: e = f − bias + 1, so 2^−e has the field 2·bias − 1 − f — one integer
+/// subtraction. The largest field is the integer maximum of the components' masked fields, not the
+/// field of the largest |component|: the same number, without a floating-point maximum on the way
+/// (the factor comes first in every product the call forms, so each cycle to it is a cycle of the
+/// call). The rest take times_power_of_two's general path; both give the same factor wherever both
+/// apply. Always inlined, on an array of scalars: GCC kept the call out of line, and a returned
+/// Eigen vector went through memory.
+template <typename Scalar, std::size_t N>
+[[gnu::always_inline]] inline void scale_to_unit_binade(std::array<Scalar, N>& d) noexcept {
   if constexpr (has_exponent_field<Scalar>) {
     using Bits = FloatBits<Scalar>;
     constexpr int fraction_bits = std::numeric_limits<Scalar>::digits - 1;
     constexpr Bits bias = std::numeric_limits<Scalar>::max_exponent - 1;
-    const Bits field = std::bit_cast<Bits>(largest_magnitude(d)) >> fraction_bits;  // |·|: no sign bit
-    if (field - 1 < 2 * bias - 2) {  // 1 ≤ f ≤ 2 bias − 2 (unsigned): 2^−e is then a normal number
-      return d * std::bit_cast<Scalar>(static_cast<Bits>((2 * bias - 1 - field) << fraction_bits));
+    constexpr Bits field_mask = (2 * bias + 1) << fraction_bits;  // the exponent field in place
+    Bits field = std::bit_cast<Bits>(d[0]) & field_mask;
+    for (std::size_t k = 1; k < N; ++k) field = std::max(field, std::bit_cast<Bits>(d[k]) & field_mask);
+    // 1 ≤ f ≤ 2 bias − 2 (unsigned, in place): 2^−e is then a normal number
+    if (field - (Bits(1) << fraction_bits) < (2 * bias - 2) << fraction_bits) {
+      const Scalar factor =
+          std::bit_cast<Scalar>(static_cast<Bits>(((2 * bias - 1) << fraction_bits) - field));
+      for (std::size_t k = 0; k < N; ++k) d[k] *= factor;
+      return;
     }
   }
-  return times_power_of_two(d, -largest_component_exponent(d));
+  Scalar largest = std::fabs(d[0]);
+  for (std::size_t k = 1; k < N; ++k) largest = std::max(largest, std::fabs(d[k]));
+  const int exponent = -binary_exponent(largest);
+  for (std::size_t k = 0; k < N; ++k) d[k] = times_power_of_two(d[k], exponent);
+}
+
+/// An Eigen vector as an array of its scalars, which the compilers keep in registers.
+template <typename Derived>
+[[gnu::always_inline]] inline auto scalars_of(const Eigen::MatrixBase<Derived>& v) noexcept {
+  std::array<typename Derived::Scalar, static_cast<std::size_t>(Derived::RowsAtCompileTime)> scalars;
+  for (std::size_t k = 0; k < scalars.size(); ++k) scalars[k] = v[Eigen::Index(k)];
+  return scalars;
+}
+
+/// scale_to_unit_binade for an Eigen vector, returned as a plain vector.
+template <typename Derived>
+[[nodiscard]] PlainVector<Derived> power_of_two_scaled(const Eigen::MatrixBase<Derived>& d) noexcept {
+  auto scalars = scalars_of(d);
+  scale_to_unit_binade(scalars);
+  PlainVector<Derived> scaled;
+  for (std::size_t k = 0; k < scalars.size(); ++k) scaled[Eigen::Index(k)] = scalars[k];
+  return scaled;
+}
+
+/// The collision along `direction` (already scaled to its unit binade) by `kernel`, one of the
+/// direction kernels: v1·d, v2·d and d·d in, v1 + c1 d and v2 + c2 d out, on scalars throughout.
+template <typename D1, typename D2, typename Scalar, std::size_t N, typename Kernel>
+[[gnu::always_inline]] inline Collision<PlainVector<D1>> collide_along_scaled(const Eigen::MatrixBase<D1>& v1,
+                                                                              const Eigen::MatrixBase<D2>& v2,
+                                                                              const std::array<Scalar, N>& d,
+                                                                              Kernel kernel) noexcept {
+  const auto along = [&d](std::size_t k) { return d[k]; };
+  const auto first = [&v1](std::size_t k) { return v1[Eigen::Index(k)]; };
+  const auto second = [&v2](std::size_t k) { return v2[Eigen::Index(k)]; };
+  const auto change = kernel(dot<N>(first, along), dot<N>(second, along), dot<N>(along, along));
+  Collision<PlainVector<D1>> after;
+  for (std::size_t k = 0; k < N; ++k) {
+    after.first[Eigen::Index(k)] = plus_multiple(first(k), change.first, d[k]);
+    after.second[Eigen::Index(k)] = plus_multiple(second(k), change.second, d[k]);
+  }
+  return after;
 }
 
 /// |v| from v scaled by the power of two of its largest component (exact) and scaled back: the squares
@@ -361,19 +412,18 @@ template <typename D1, typename D2, typename DN>
 /// Preconditions (not checked): \f$d \ne 0\f$ and finite (a zero direction gives NaN), masses as
 /// for collide().
 template <typename D1, typename D2, typename DD>
-[[nodiscard]] Collision<detail::PlainVector<D1>> collide_along_direction(
+[[nodiscard, gnu::always_inline]] inline Collision<detail::PlainVector<D1>> collide_along_direction(
     typename D1::Scalar m1, const Eigen::MatrixBase<D1>& v1, typename D1::Scalar m2,
     const Eigen::MatrixBase<D2>& v2, const Eigen::MatrixBase<DD>& d,
     typename D1::Scalar restitution = 1) noexcept {
   detail::require_vectors<D1, D2, DD>();
   detail::assert_masses(m1, m2);
   detail::assert_restitution(restitution);
-  const detail::PlainVector<D1> direction = detail::power_of_two_scaled(d);
-  const auto change =
-      kernels::direction_velocity_change(m1, m2, detail::dot(v1, direction), detail::dot(v2, direction),
-                                         detail::dot(direction, direction), restitution);
-  return {detail::plus_multiple(v1, change.first, direction),
-          detail::plus_multiple(v2, change.second, direction)};
+  auto direction = detail::scalars_of(d);
+  detail::scale_to_unit_binade(direction);
+  return detail::collide_along_scaled(v1, v2, direction, [&](auto v1d, auto v2d, auto dd) {
+    return kernels::direction_velocity_change(m1, m2, v1d, v2d, dd, restitution);
+  });
 }
 
 /// \brief Resolves the contact of two balls centred at \f$p_1, p_2\f$ only if they approach (beyond
@@ -386,17 +436,18 @@ template <typename D1, typename D2, typename DD>
 /// `beyond.approaching.kernel_form`; kernel kernels::approaching_direction_velocity_change.
 /// Preconditions (not checked): \f$p_1 \ne p_2\f$, masses as for collide(), \f$0 \le e \le 1\f$.
 template <typename DP1, typename D1, typename DP2, typename D2>
-[[nodiscard]] Collision<detail::PlainVector<D1>> collide_if_approaching(
+[[nodiscard, gnu::always_inline]] inline Collision<detail::PlainVector<D1>> collide_if_approaching(
     typename D1::Scalar m1, const Eigen::MatrixBase<DP1>& p1, const Eigen::MatrixBase<D1>& v1,
     typename D1::Scalar m2, const Eigen::MatrixBase<DP2>& p2, const Eigen::MatrixBase<D2>& v2,
     typename D1::Scalar restitution = 1) noexcept {
   detail::require_vectors<D1, D2, DP1, DP2>();
   detail::assert_masses(m1, m2);
   detail::assert_restitution(restitution);
-  const detail::PlainVector<D1> d = detail::power_of_two_scaled(p2 - p1);
-  const auto change = kernels::approaching_direction_velocity_change(
-      m1, m2, detail::dot(v1, d), detail::dot(v2, d), detail::dot(d, d), restitution);
-  return {detail::plus_multiple(v1, change.first, d), detail::plus_multiple(v2, change.second, d)};
+  auto d = detail::scalars_of(p2 - p1);
+  detail::scale_to_unit_binade(d);
+  return detail::collide_along_scaled(v1, v2, d, [&](auto v1d, auto v2d, auto dd) {
+    return kernels::approaching_direction_velocity_change(m1, m2, v1d, v2d, dd, restitution);
+  });
 }
 
 /// \brief When two spheres moving in straight lines first touch (beyond the paper).
