@@ -230,3 +230,42 @@ TEMPLATE_TEST_CASE("time_of_impact: centres closer than rounding of the contact 
         std::numeric_limits<Scalar>::infinity());  // separating
   CHECK(billiards::checked::time_of_impact(origin, v1, p2, v2, r) == 0);
 }
+
+TEMPLATE_TEST_CASE("time_of_impact's fast path has the general path's bits at every scale",
+                   "[runtime][time_of_impact]", (Config<float, 2>), (Config<double, 2>), (Config<float, 3>),
+                   (Config<double, 3>)) {
+  // detail::time_of_impact_scaled builds the scale factors from the exponent fields where every power
+  // of two is a normal number and the centres are not negligible, and calls the general path
+  // (binary_exponent and times_power_of_two) otherwise; wherever it takes the fast path the bits must
+  // be the general path's. Lengths, speeds and the contact distance at independent exponents over the
+  // whole range, subnormals and the top binades included (the fast path's edges), and zero vectors.
+  using Scalar = typename TestType::Scalar;
+  constexpr auto N = static_cast<std::size_t>(TestType::dimension);
+  using limits = std::numeric_limits<Scalar>;
+  using Bits = billiards::detail::FloatBits<Scalar>;
+  std::mt19937_64 random(20261203);
+  std::uniform_real_distribution<double> coordinate(-1, 1);
+  std::uniform_int_distribution<int> exponent(limits::min_exponent - limits::digits, limits::max_exponent),
+      nearby(-80, 80), kind(0, 9);
+  const auto scaled_vector = [&](int e) {
+    std::array<Scalar, N> v{};
+    if (kind(random) == 0) return v;  // a zero vector now and then
+    for (Scalar& component : v) component = std::ldexp(static_cast<Scalar>(coordinate(random)), e);
+    return v;
+  };
+  int compared = 0;
+  for (int sample = 0; sample < 200000; ++sample) {
+    const int length = exponent(random);
+    const std::array<Scalar, N> p = scaled_vector(length), w = scaled_vector(exponent(random));
+    // The contact distance near the lengths (where contacts happen) or anywhere.
+    Scalar r = std::ldexp(Scalar(0.75), kind(random) < 7 ? length + nearby(random) : exponent(random));
+    if (!(r > 0) || !std::isfinite(r)) r = limits::min();
+    const Scalar fast = billiards::detail::time_of_impact_scaled(p, w, r);
+    const Scalar general = billiards::detail::time_of_impact_by_exponents(p, w, r);
+    INFO("sample " << sample << ": p[0] = " << p[0] << ", w[0] = " << w[0] << ", r = " << r << ": " << fast
+                   << " against " << general);
+    REQUIRE(std::bit_cast<Bits>(fast) == std::bit_cast<Bits>(general));
+    ++compared;
+  }
+  CHECK(compared == 200000);
+}
