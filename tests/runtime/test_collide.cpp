@@ -337,3 +337,30 @@ TEMPLATE_TEST_CASE("scaled_norm is the norm without overflow or underflow of the
   }
   CHECK(billiards::detail::scaled_norm(V::Zero().eval()) == 0);
 }
+
+TEMPLATE_TEST_CASE("scaled_norm's fast path has the general path's bits at every exponent",
+                   "[runtime][detail]", (billiards_test::Config<float, 2>),
+                   (billiards_test::Config<double, 2>), (billiards_test::Config<float, 3>),
+                   (billiards_test::Config<double, 3>)) {
+  // For float and double scaled_norm builds both powers of two from the largest exponent field (where
+  // they are normal numbers); elsewhere, and here as the reference, it scales by binary_exponent and
+  // times_power_of_two. The same factors, so the same bits: every exponent, subnormals and the top
+  // binades included, the largest component in each place.
+  using Scalar = typename TestType::Scalar;
+  using V = typename TestType::Vector;
+  using Bits = billiards::detail::FloatBits<Scalar>;
+  std::mt19937_64 random(24);
+  std::uniform_real_distribution<double> fraction(-1, 1);
+  at_every_exponent<Scalar>(random, [&](Scalar x) {
+    for (int place = 0; place < V::SizeAtCompileTime; ++place) {
+      V v;
+      for (int k = 0; k < v.size(); ++k) v[k] = static_cast<Scalar>(fraction(random)) * x;
+      v[place] = x;
+      const int e = billiards::detail::largest_component_exponent(v);
+      const Scalar general =
+          billiards::detail::times_power_of_two(billiards::detail::times_power_of_two(v, -e).norm(), e);
+      INFO("v = " << v.transpose());
+      CHECK(std::bit_cast<Bits>(billiards::detail::scaled_norm(v)) == std::bit_cast<Bits>(general));
+    }
+  });
+}

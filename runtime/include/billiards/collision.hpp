@@ -283,9 +283,20 @@ template <typename D1, typename D2, typename Scalar, std::size_t N, typename Ker
 
 /// |v| from v scaled by the power of two of its largest component (exact) and scaled back: the squares
 /// neither overflow nor underflow, as with Eigen's stableNorm(), at the cost of norm() and no libm call
-/// where the exponent is in the normal range.
+/// where the exponent is in the normal range. For IEEE float and double whose largest component is
+/// normal and below the top two binades, both powers of two straight from its exponent field
+/// (ExponentField): the same factors, the same bits, without binary_exponent's branches.
 template <typename Derived>
 [[nodiscard]] typename Derived::Scalar scaled_norm(const Eigen::MatrixBase<Derived>& v) noexcept {
+  using Scalar = typename Derived::Scalar;
+  if constexpr (has_exponent_field<Scalar>) {
+    using Field = ExponentField<Scalar>;
+    if (const auto field = Field::largest(scalars_of(v)); Field::has_normal_inverse(field)) {
+      // 2^e has the field f + 1, a normal number wherever 2^−e is one
+      return (v * Field::inverse(field)).norm() *
+             std::bit_cast<Scalar>(static_cast<typename Field::Bits>(field + Field::one));
+    }
+  }
   const int exponent = largest_component_exponent(v);
   return times_power_of_two(times_power_of_two(v, -exponent).norm(), exponent);
 }
