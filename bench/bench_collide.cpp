@@ -13,6 +13,8 @@
 #include <billiards/reference_kernels.hpp>
 #include <billiards/spin.hpp>
 
+#include "prefetch.hpp"
+
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
@@ -479,11 +481,23 @@ void division_limit(benchmark::State& state) {
 }
 
 // The bandwidth ceiling: the batch's own access pattern — read m1, m2 and the three components of v1,
-// v2 and n, write v1 and v2 in place — with trivial arithmetic (a multiply-add per component), in two
-// forms whose faster is the ceiling: one pass left to the hardware prefetcher, and the batch's blocks
-// of 1024 pairs with its software prefetch of the next block beyond the caches (which beats the
-// hardware prefetcher alone: that one is then no ceiling). memcpy is no ceiling either: below glibc's
-// non-temporal threshold it uses cached stores, and the batch showed twice its bandwidth at 10^6 pairs.
+// v2 and n, each component once a pair, write v1 and v2 in place — with trivial arithmetic (a
+// multiply-add per component), in two forms: one pass left to the hardware prefetcher, and blocks of
+// 1024 pairs, each asking memory for the next block's arrays first (a software prefetch, which can beat
+// the hardware prefetcher alone). bench/report.py takes the fastest of them and the plain formula's
+// loop as the ceiling. memcpy is no ceiling: below glibc's non-temporal threshold it uses cached
+// stores, and the batch once showed twice its bandwidth at 10^6 pairs.
+constexpr std::size_t prefetch_block = 1024;
+
+// Asks memory for the cache lines of pairs [begin, end) of each of `arrays`.
+template <typename Pointer, std::size_t count>
+void prefetch_pairs(const Pointer (&arrays)[count], std::size_t begin, std::size_t end) {
+  constexpr std::size_t per_line = 64 / sizeof(*arrays[0]);
+  for (std::size_t i = begin; i < end; i += per_line) {
+    for (const Pointer array : arrays) billiards_example::prefetch(array + i);
+  }
+}
+
 template <typename Scalar, bool prefetched>
 void bandwidth_ceiling(benchmark::State& state) {
   const auto count = static_cast<std::size_t>(state.range(0));
@@ -495,12 +509,18 @@ void bandwidth_ceiling(benchmark::State& state) {
   const Scalar* __restrict a = m1.data();
   const Scalar* __restrict b = m2.data();
   const Scalar* const masses[2] = {a, b};
-  const std::size_t block = prefetched ? billiards::detail::batch_block : count;
+  const std::size_t block = prefetched ? prefetch_block : count;
   for (auto _ : state) {
     // Each array read once and v1, v2 written once, as collide_batch makes.
     for (std::size_t begin = 0; begin < count; begin += block) {
       const std::size_t end = std::min(count, begin + block);
-      if (prefetched) billiards::detail::prefetch_next_block(end, count, masses, d, x, y);
+      if (prefetched) {
+        const std::size_t next_end = std::min(count, end + block);
+        prefetch_pairs(masses, end, next_end);
+        prefetch_pairs(d, end, next_end);
+        prefetch_pairs(x, end, next_end);
+        prefetch_pairs(y, end, next_end);
+      }
       BILLIARDS_BENCH_ARRAYS_DO_NOT_OVERLAP
       for (std::size_t i = begin; i < end; ++i) {
         const PairLoad<Scalar> pair(x, y, d, i);

@@ -34,8 +34,9 @@ TEMPLATE_TEST_CASE("collide_batch gives collide's results bit for bit", "[runtim
   using Scalar = typename TestType::Scalar;
   using Vector = typename TestType::Vector;
   constexpr std::size_t dimension = TestType::dimension;
-  // 4000 pairs, and past 2^17, where the batch also prefetches each block (a last block part full).
-  const std::size_t count = GENERATE(std::size_t{4000}, (std::size_t{1} << 17) + 1000);
+  // 10,000 pairs (in blocks of 4096: one in the plain range, one mixed, a last one part full) and past
+  // 2^17, beyond the second-level cache.
+  const std::size_t count = GENERATE(std::size_t{10000}, (std::size_t{1} << 17) + 1000);
   std::mt19937_64 random(7);
   std::uniform_real_distribution<double> component(-10, 10), decade(-3, 3);
   std::vector<Scalar> m1(count), m2(count);
