@@ -252,16 +252,6 @@ template <typename Derived>
   return scalars;
 }
 
-/// scale_to_unit_binade for an Eigen vector, returned as a plain vector.
-template <typename Derived>
-[[nodiscard]] PlainVector<Derived> power_of_two_scaled(const Eigen::MatrixBase<Derived>& d) noexcept {
-  auto scalars = scalars_of(d);
-  scale_to_unit_binade(scalars);
-  PlainVector<Derived> scaled;
-  for (std::size_t k = 0; k < scalars.size(); ++k) scaled[Eigen::Index(k)] = scalars[k];
-  return scaled;
-}
-
 /// The collision along `direction` (already scaled to its unit binade) by `kernel`, one of the
 /// direction kernels: v1·d, v2·d and d·d in, v1 + c1 d and v2 + c2 d out, on scalars throughout.
 template <typename D1, typename D2, typename Scalar, std::size_t N, typename Kernel>
