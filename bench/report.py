@@ -302,8 +302,8 @@ Bytes per pair: 17 scalars (11 read, 6 written). The plain formula's loop (`plai
 formula over the same arrays, the loop a user would write instead. The bandwidth ceiling
 is the fastest loop with the batch's own access pattern — each reads the same arrays, every component
 once a pair, and writes v1 and v2 in place: a multiply-add per component in one pass left to the
-hardware prefetcher (`bandwidth/*`) or in the batch's blocks of 1024 pairs with its software prefetch
-of the next block from 2^17 pairs up (`bandwidth_prefetched/*`), or the plain formula's loop itself,
+hardware prefetcher (`bandwidth/*`) or in blocks of 1024 pairs, each asking memory for the next
+block's arrays first (`bandwidth_prefetched/*`), or the plain formula's loop itself,
 which out of cache has measured faster than both in some runs; memcpy is no ceiling (below glibc's
 non-temporal threshold it uses cached stores). The division limit is the ratio form's five divisions per pair alone
 (the batch takes that form only for blocks with a mass outside the plain range), vectorised over arrays
