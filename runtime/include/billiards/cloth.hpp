@@ -109,21 +109,37 @@ template <typename Scalar>
 
 namespace detail {
 
-/// How long the phase `phase` of `ball`, whose slip is `slip`, lasts (see transition_time).
+/// How long the phase `phase` of `ball`, whose slip is `slip`, lasts (see transition_time); times
+/// `scale` (a power of two, applied exactly to the speed each duration is proportional to), for
+/// phase_ends_within.
 template <typename Scalar>
 [[nodiscard]] Scalar phase_duration(const BallOnCloth<Scalar>& ball, const Cloth<Scalar>& cloth, Motion phase,
-                                    const Slip<Scalar>& slip) noexcept {
+                                    const Slip<Scalar>& slip, Scalar scale = 1) noexcept {
   switch (phase) {
-    case Motion::sliding: return kernels::spin::slide_time(slip.speed, cloth.sliding_friction, cloth.gravity);
+    case Motion::sliding:
+      return kernels::spin::slide_time(slip.speed * scale, cloth.sliding_friction, cloth.gravity);
     case Motion::rolling:
-      return kernels::spin::roll_time(detail::horizontal_length(ball.velocity.x(), ball.velocity.y()),
+      return kernels::spin::roll_time(detail::horizontal_length(ball.velocity.x(), ball.velocity.y()) * scale,
                                       cloth.rolling_friction, cloth.gravity);
     case Motion::spinning:
-      return kernels::spin::spin_time(std::fabs(ball.angular_velocity.z()), ball.radius,
+      return kernels::spin::spin_time(std::fabs(ball.angular_velocity.z()) * scale, ball.radius,
                                       cloth.spinning_friction, cloth.gravity);
     case Motion::stationary: break;
   }
   return std::numeric_limits<Scalar>::infinity();
+}
+
+/// Whether a duration that rounded to exactly `remaining` ends within it. Where the duration is below
+/// the smallest normal number it has lost digits (a slide of 1.4 × the smallest subnormal rounds to
+/// 1 ×), so the tie is decided again with the duration computed 2^digits times larger — its speed
+/// scaled exactly, the duration then a normal number — against remaining · 2^digits (exact). Found by
+/// the fuzzer: a slide taken to its end, and on to rolling, at a time before the end.
+template <typename Scalar, typename Duration>
+[[nodiscard]] bool ends_within(Scalar duration, Scalar remaining, Duration scaled_duration) noexcept {
+  if (duration != remaining) return duration < remaining;
+  if (!(duration < std::numeric_limits<Scalar>::min())) return true;
+  const Scalar scale = std::ldexp(Scalar(1), std::numeric_limits<Scalar>::digits);
+  return scaled_duration(scale) <= remaining * scale;
 }
 
 }  // namespace detail
@@ -235,7 +251,14 @@ template <typename Scalar>
         spin > 0 ? kernels::spin::spin_time(spin, current.radius, cloth.spinning_friction, cloth.gravity)
                  : std::numeric_limits<Scalar>::infinity();
     const Scalar step = std::min({remaining, phase_end, spin_end});
-    current = detail::advance(current, cloth, phase, slip, step, step == phase_end, step == spin_end);
+    const bool phase_ends = step == phase_end && detail::ends_within(phase_end, remaining, [&](Scalar scale) {
+                              return detail::phase_duration(current, cloth, phase, slip, scale);
+                            });
+    const bool spin_ends = step == spin_end && detail::ends_within(spin_end, remaining, [&](Scalar scale) {
+                             return kernels::spin::spin_time(spin * scale, current.radius,
+                                                             cloth.spinning_friction, cloth.gravity);
+                           });
+    current = detail::advance(current, cloth, phase, slip, step, phase_ends, spin_ends);
     if (step == remaining) break;
     remaining -= step;
   }
