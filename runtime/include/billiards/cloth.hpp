@@ -245,19 +245,19 @@ template <typename Scalar>
     const detail::Slip<Scalar> slip = detail::slip_of(current);
     const Motion phase = detail::motion_with(current, slip);
     if (phase == Motion::stationary) break;
-    const Scalar phase_end = detail::phase_duration(current, cloth, phase, slip);
+    // Each duration times `scale` (1, or 2^digits for a tie below the smallest normal: ends_within).
+    const auto phase_duration = [&](Scalar scale) {
+      return detail::phase_duration(current, cloth, phase, slip, scale);
+    };
     const Scalar spin = std::fabs(current.angular_velocity.z());
-    const Scalar spin_end =
-        spin > 0 ? kernels::spin::spin_time(spin, current.radius, cloth.spinning_friction, cloth.gravity)
-                 : std::numeric_limits<Scalar>::infinity();
+    const auto spin_duration = [&](Scalar scale) {
+      return kernels::spin::spin_time(spin * scale, current.radius, cloth.spinning_friction, cloth.gravity);
+    };
+    const Scalar phase_end = phase_duration(1);
+    const Scalar spin_end = spin > 0 ? spin_duration(1) : std::numeric_limits<Scalar>::infinity();
     const Scalar step = std::min({remaining, phase_end, spin_end});
-    const bool phase_ends = step == phase_end && detail::ends_within(phase_end, remaining, [&](Scalar scale) {
-                              return detail::phase_duration(current, cloth, phase, slip, scale);
-                            });
-    const bool spin_ends = step == spin_end && detail::ends_within(spin_end, remaining, [&](Scalar scale) {
-                             return kernels::spin::spin_time(spin * scale, current.radius,
-                                                             cloth.spinning_friction, cloth.gravity);
-                           });
+    const bool phase_ends = step == phase_end && detail::ends_within(phase_end, remaining, phase_duration);
+    const bool spin_ends = step == spin_end && detail::ends_within(spin_end, remaining, spin_duration);
     current = detail::advance(current, cloth, phase, slip, step, phase_ends, spin_ends);
     if (step == remaining) break;
     remaining -= step;
