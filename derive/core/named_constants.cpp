@@ -27,4 +27,11 @@ bool is_named_constant(const GiNaC::ex& e) {
          e.is_equal(plain_mass_high());
 }
 
+int positive_finite_rank(const GiNaC::ex& e) {
+  if (e.is_equal(smallest_normal())) return 0;
+  if (e.is_equal(plain_mass_low())) return 1;
+  if (e.is_equal(plain_mass_high())) return 2;
+  return -1;
+}
+
 }  // namespace billiards::derive

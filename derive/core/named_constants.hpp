@@ -21,4 +21,9 @@ const GiNaC::symbol& plain_mass_high();
 /// True for a symbol that is one of the named constants above.
 bool is_named_constant(const GiNaC::ex& e);
 
+/// For the named constants that are positive and finite in float and double, their place in
+/// increasing order: smallest_normal 0 (2^−126, 2^−1022), plain_mass_low 1 (2^−61, 2^−509),
+/// plain_mass_high 2 (2^61, 2^509); −1 for anything else (+∞ included).
+int positive_finite_rank(const GiNaC::ex& e);
+
 }  // namespace billiards::derive

@@ -1,11 +1,13 @@
 #include "emit/emitter.hpp"
 
+#include "core/named_constants.hpp"
 #include "print/printer.hpp"
 
 #include <algorithm>
 #include <cstdint>
 #include <cstdio>
 #include <map>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -187,17 +189,73 @@ std::string wrapped_terms(std::size_t column, const std::string& head, const std
   return out;
 }
 
-// A fast path's predicate as a documented constexpr function: true where every condition holds.
+// The interval [low, high] when `conditions` say exactly that each parameter of `kernel` they read lies
+// in it — `low <= p` and `p <= high` for each, nothing else — with low and high named constants,
+// positive and finite in float and double, low the smaller: then the predicate may compare bits.
+std::optional<std::pair<ex, ex>> common_interval(const Kernel& kernel, const std::vector<ex>& conditions) {
+  const std::vector<std::string> read = parameters_read(kernel, conditions);
+  if (read.empty() || conditions.size() != 2 * read.size()) return std::nullopt;
+  std::map<std::string, ex> lower, upper;
+  for (const ex& condition : conditions) {
+    if (!GiNaC::is_a<GiNaC::relational>(condition) ||
+        !GiNaC::ex_to<GiNaC::relational>(condition).info(GiNaC::info_flags::relation_less_or_equal)) {
+      return std::nullopt;
+    }
+    const ex left = condition.lhs(), right = condition.rhs();
+    if (GiNaC::is_a<GiNaC::symbol>(right) && positive_finite_rank(left) >= 0 && !is_named_constant(right)) {
+      lower.emplace(GiNaC::ex_to<GiNaC::symbol>(right).get_name(), left);
+    } else if (GiNaC::is_a<GiNaC::symbol>(left) && positive_finite_rank(right) >= 0 &&
+               !is_named_constant(left)) {
+      upper.emplace(GiNaC::ex_to<GiNaC::symbol>(left).get_name(), right);
+    } else {
+      return std::nullopt;
+    }
+  }
+  // Two conditions a parameter: a bound given twice leaves another missing.
+  if (lower.empty() || upper.empty()) return std::nullopt;
+  const ex low = lower.begin()->second, high = upper.begin()->second;
+  for (const std::string& name : read) {
+    if (!lower.count(name) || !upper.count(name) || !lower.at(name).is_equal(low) ||
+        !upper.at(name).is_equal(high)) {
+      return std::nullopt;
+    }
+  }
+  if (positive_finite_rank(low) >= positive_finite_rank(high)) return std::nullopt;
+  return std::pair<ex, ex>{low, high};
+}
+
+// A fast path's predicate as a documented constexpr function: true where every condition holds. Where
+// the conditions put every parameter they read in one interval of positive finite constants, the host
+// code for IEEE float and double compares bits instead (bits_above: integer operations where the
+// comparisons would be floating-point ones, each a branch), the device code the numbers.
 std::string predicate_function(const Kernel& kernel) {
   const FastPath& path = *kernel.fast_path;
   std::vector<std::string> parameters, conditions;
-  for (const std::string& name : parameters_read(kernel, path.conditions))
-    parameters.push_back("Scalar " + name);
+  const std::vector<std::string> read = parameters_read(kernel, path.conditions);
+  for (const std::string& name : read) parameters.push_back("Scalar " + name);
   for (const ex& condition : path.conditions) conditions.push_back(print_condition(condition));
-  return "\n" + doc_comment(path.brief) + "template <typename Scalar>\n" +
+  const std::optional<std::pair<ex, ex>> interval = common_interval(kernel, path.conditions);
+  std::string brief = path.brief, bits;
+  if (interval) {
+    brief +=
+        " On the host, for IEEE float and double (orders_as_bits), it compares bits: the largest "
+        "bits_above of the low end at most the high end's.";
+    const std::string low = print(interval->first, Notation::cpp);
+    std::string largest = "bits_above(" + read[0] + ", low)";
+    for (std::size_t i = 1; i < read.size(); ++i)
+      largest = "larger(" + largest + ", bits_above(" + read[i] + ", low))";
+    const std::string head = "    return " + largest + " <=",
+                      tail = "bits_above(" + print(interval->second, Notation::cpp) + ", low);";
+    bits =
+        "#if !defined(__CUDA_ARCH__)\n  if constexpr (orders_as_bits<Scalar>()) {\n    const Scalar low = " +
+        low + ";\n" + head +
+        (head.size() + 1 + tail.size() <= column_limit ? " " : "\n" + std::string(11, ' ')) + tail +
+        "\n  }\n#endif\n";
+  }
+  return "\n" + doc_comment(brief) + "template <typename Scalar>\n" +
          signature("BILLIARDS_HOST_DEVICE constexpr bool " + path.predicate + "(", parameters,
                    ") noexcept {") +
-         "\n" + wrapped_terms(0, "  return ", conditions, " &&", "         ", ";") + "\n}\n";
+         "\n" + bits + wrapped_terms(0, "  return ", conditions, " &&", "         ", ";") + "\n}\n";
 }
 
 // Every kernel as a documented `template <typename Scalar>` function: its brief, the audit claims it
@@ -399,6 +457,11 @@ std::string kernels_header(const Derivation& derivation, const std::string& audi
   // The pair struct only where a kernel returns two values.
   const bool has_pair = std::any_of(derivation.kernels.begin(), derivation.kernels.end(),
                                     [](const Kernel& kernel) { return kernel.outputs.size() == 2; });
+  // The bit-comparison helpers only where a fast path's predicate compares bits.
+  const bool compares_bits =
+      std::any_of(derivation.kernels.begin(), derivation.kernels.end(), [](const Kernel& kernel) {
+        return kernel.fast_path && common_interval(kernel, kernel.fast_path->conditions);
+      });
   std::ostringstream out;
   out << preamble("// The scalar kernels of " + derivation.model.citation +
                   ", printed from the\n"
@@ -408,7 +471,9 @@ std::string kernels_header(const Derivation& derivation, const std::string& audi
                   "masses\n"
                   "// and dot products, so they serve vectors of any dimension and need no Eigen.\n")
       << "#pragma once\n\n"
-      << (runtime_math ? "#include <cmath>\n" : "") << "#include <limits>\n\n"
+      << (compares_bits ? "#include <bit>\n" : "") << (runtime_math ? "#include <cmath>\n" : "")
+      << (compares_bits ? "#include <cstdint>\n" : "") << "#include <limits>\n"
+      << (compares_bits ? "#include <type_traits>\n" : "") << "\n"
       << "#if defined(__FINITE_MATH_ONLY__) && __FINITE_MATH_ONLY__\n"
       << "// -ffast-math assumes no infinities, but an infinite mass is how an immovable body is modelled.\n"
       << "#error \"billiards: -ffast-math breaks infinite masses (immovable bodies); add "
@@ -472,6 +537,31 @@ std::string kernels_header(const Derivation& derivation, const std::string& audi
         << "template <typename Scalar>\n"
         << "BILLIARDS_HOST_DEVICE constexpr Scalar plain_mass_high() noexcept {\n"
         << "  return Scalar(1) / plain_mass_low<Scalar>();\n"
+        << "}\n";
+  }
+  if (compares_bits) {
+    out << "\n/// Whether Scalar is IEEE float or double, whose positive numbers order as their bits.\n"
+        << "template <typename Scalar>\n"
+        << "constexpr bool orders_as_bits() noexcept {\n"
+        << "  return std::numeric_limits<Scalar>::is_iec559 && (sizeof(Scalar) == 4 || sizeof(Scalar) == "
+           "8);\n"
+        << "}\n"
+        << "/// The bits of x minus those of low, as an unsigned integer of Scalar's width, for IEEE float "
+           "and\n"
+        << "/// double (orders_as_bits). For finite 0 < low ≤ high, low ≤ x ≤ high exactly when\n"
+        << "/// bits_above(x, low) ≤ bits_above(high, low): positive numbers order as their bits, and an x "
+           "below\n"
+        << "/// low (+0 included) wraps around, and a negative x (−0 included), +∞ and a NaN lie above it.\n"
+        << "/// Host code; on the device the predicates compare the numbers.\n"
+        << "template <typename Scalar>\n"
+        << "constexpr auto bits_above(Scalar x, Scalar low) noexcept {\n"
+        << "  using Bits = std::conditional_t<sizeof(Scalar) == 4, std::uint32_t, std::uint64_t>;\n"
+        << "  return static_cast<Bits>(std::bit_cast<Bits>(x) - std::bit_cast<Bits>(low));\n"
+        << "}\n"
+        << "/// The larger of two unsigned integers.\n"
+        << "template <typename Bits>\n"
+        << "constexpr Bits larger(Bits a, Bits b) noexcept {\n"
+        << "  return a > b ? a : b;\n"
         << "}\n";
   }
   out << functions(derivation.kernels, derivation.model.pair_result.name) << "\n}  // namespace "

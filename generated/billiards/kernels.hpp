@@ -5,11 +5,14 @@
 // derivation audit before it was printed, and names the claims it implements. They take masses
 // and dot products, so they serve vectors of any dimension and need no Eigen.
 //
-// Fingerprint: fnv1a64:eb7cb6df2ba5f2d4 (of this header and the audit)
+// Fingerprint: fnv1a64:72b64b323329925c (of this header and the audit)
 #pragma once
 
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <limits>
+#include <type_traits>
 
 #if defined(__FINITE_MATH_ONLY__) && __FINITE_MATH_ONLY__
 // -ffast-math assumes no infinities, but an infinite mass is how an immovable body is modelled.
@@ -99,6 +102,27 @@ BILLIARDS_HOST_DEVICE constexpr Scalar plain_mass_high() noexcept {
   return Scalar(1) / plain_mass_low<Scalar>();
 }
 
+/// Whether Scalar is IEEE float or double, whose positive numbers order as their bits.
+template <typename Scalar>
+constexpr bool orders_as_bits() noexcept {
+  return std::numeric_limits<Scalar>::is_iec559 && (sizeof(Scalar) == 4 || sizeof(Scalar) == 8);
+}
+/// The bits of x minus those of low, as an unsigned integer of Scalar's width, for IEEE float and
+/// double (orders_as_bits). For finite 0 < low ≤ high, low ≤ x ≤ high exactly when
+/// bits_above(x, low) ≤ bits_above(high, low): positive numbers order as their bits, and an x below
+/// low (+0 included) wraps around, and a negative x (−0 included), +∞ and a NaN lie above it.
+/// Host code; on the device the predicates compare the numbers.
+template <typename Scalar>
+constexpr auto bits_above(Scalar x, Scalar low) noexcept {
+  using Bits = std::conditional_t<sizeof(Scalar) == 4, std::uint32_t, std::uint64_t>;
+  return static_cast<Bits>(std::bit_cast<Bits>(x) - std::bit_cast<Bits>(low));
+}
+/// The larger of two unsigned integers.
+template <typename Bits>
+constexpr Bits larger(Bits a, Bits b) noexcept {
+  return a > b ? a : b;
+}
+
 /// The same as elastic_normal_velocity_change for masses in [plain_mass_low, plain_mass_high]
 /// (within_plain_mass_range), where it is as accurate: (1 + e) m2/(m1 + m2) and (1 + e) m1/(m1 + m2) by
 /// one sum, the paper's plain form. elastic_normal_velocity_change takes it there itself; call it
@@ -122,9 +146,17 @@ BILLIARDS_HOST_DEVICE constexpr NormalVelocityChange<Scalar> plain_elastic_norma
 }
 
 /// True when both masses lie in [plain_mass_low<Scalar>(), plain_mass_high<Scalar>()], where the
-/// collision kernels take their plain one-division form (false for +∞ and NaN).
+/// collision kernels take their plain one-division form (false for +∞ and NaN). On the host, for IEEE
+/// float and double (orders_as_bits), it compares bits: the largest bits_above of the low end at most
+/// the high end's.
 template <typename Scalar>
 BILLIARDS_HOST_DEVICE constexpr bool within_plain_mass_range(Scalar m1, Scalar m2) noexcept {
+#if !defined(__CUDA_ARCH__)
+  if constexpr (orders_as_bits<Scalar>()) {
+    const Scalar low = plain_mass_low<Scalar>();
+    return larger(bits_above(m1, low), bits_above(m2, low)) <= bits_above(plain_mass_high<Scalar>(), low);
+  }
+#endif
   return plain_mass_low<Scalar>() <= m1 && m1 <= plain_mass_high<Scalar>() &&
          plain_mass_low<Scalar>() <= m2 && m2 <= plain_mass_high<Scalar>();
 }

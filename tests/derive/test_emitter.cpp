@@ -1,4 +1,5 @@
 // The emitter: C++ without pow or floating literals, common subexpressions hoisted, honest op counts.
+#include "core/named_constants.hpp"
 #include "emit/emitter.hpp"
 #include "models/parkin2023/paper.hpp"
 #include "print/printer.hpp"
@@ -121,6 +122,72 @@ TEST_CASE("Kernels", "[derive][emitter]") {
     // Only the standard library: no Eigen, nothing of ours.
     CHECK(contains(header, "#include <limits>\n"));
     CHECK(header.find("#include") == header.rfind("#include"));
+  }
+}
+
+TEST_CASE("A fast path's predicate compares bits where its conditions are one interval",
+          "[derive][emitter]") {
+  const GiNaC::symbol m1("m1"), m2("m2"), v1n("v1n"), v2n("v2n"), s("relative_normal_speed");
+  const Kernel plain{.name = "plain_kernel",
+                     .brief = "The plain form.",
+                     .parameters = {m1, m2, v1n, v2n},
+                     .steps = {{s, v2n - v1n}},
+                     .outputs = {s, -s}};
+  Kernel full = plain;
+  full.name = "full_kernel";
+  full.brief = "The full form.";
+  full.fast_path = FastPath{.predicate = "in_range",
+                            .brief = "True in the range.",
+                            .conditions = {plain_mass_low() <= m1, m1 <= plain_mass_high(),
+                                           plain_mass_low() <= m2, m2 <= plain_mass_high()},
+                            .kernel = "plain_kernel"};
+  const auto header = [&] {
+    Derivation derivation;
+    derivation.kernels = {plain, full};
+    return kernels_header(derivation, "{}");
+  };
+  SECTION("both masses in [low, high]: bits on the host, the comparisons on the device") {
+    const std::string text = header();
+    CHECK(contains(text, "#include <bit>\n"));
+    CHECK(contains(text, "constexpr auto bits_above(Scalar x, Scalar low) noexcept {"));
+    CHECK(contains(text,
+                   "BILLIARDS_HOST_DEVICE constexpr bool in_range(Scalar m1, Scalar m2) noexcept {\n"
+                   "#if !defined(__CUDA_ARCH__)\n"
+                   "  if constexpr (orders_as_bits<Scalar>()) {\n"
+                   "    const Scalar low = plain_mass_low<Scalar>();\n"
+                   "    return larger(bits_above(m1, low), bits_above(m2, low)) <= "
+                   "bits_above(plain_mass_high<Scalar>(), low);\n"
+                   "  }\n"
+                   "#endif\n"
+                   "  return plain_mass_low<Scalar>() <= m1 && m1 <= plain_mass_high<Scalar>() &&\n"));
+  }
+  SECTION("anything else: the comparisons alone, and no bit helpers") {
+    using Conditions = std::vector<ex>;
+    const std::vector<std::pair<std::string, Conditions>> others = {
+        {"an unbounded end (+∞ is no finite bound)",
+         {plain_mass_low() <= m1, m1 <= infinity(), plain_mass_low() <= m2, m2 <= infinity()}},
+        {"two intervals",
+         {plain_mass_low() <= m1, m1 <= plain_mass_high(), smallest_normal() <= m2, m2 <= plain_mass_high()}},
+        {"two upper ends",
+         {smallest_normal() <= m1, m1 <= plain_mass_low(), smallest_normal() <= m2, m2 <= plain_mass_high()}},
+        {"the ends the wrong way round",
+         {plain_mass_high() <= m1, m1 <= plain_mass_low(), plain_mass_high() <= m2, m2 <= plain_mass_low()}},
+        {"a strict comparison",
+         {plain_mass_low() < m1, m1 <= plain_mass_high(), plain_mass_low() <= m2, m2 <= plain_mass_high()}},
+        {"no lower end",
+         {m1 <= plain_mass_high(), m1 <= plain_mass_high(), m2 <= plain_mass_high(),
+          m2 <= plain_mass_high()}},
+        {"a bound missing", {plain_mass_low() <= m1, m1 <= plain_mass_high(), plain_mass_low() <= m2}},
+        {"a bound twice",
+         {plain_mass_low() <= m1, plain_mass_low() <= m1, plain_mass_low() <= m2, m2 <= plain_mass_high()}}};
+    for (const auto& [what, conditions] : others) {
+      INFO(what);
+      full.fast_path->conditions = conditions;
+      const std::string text = header();
+      CHECK(contains(text, "BILLIARDS_HOST_DEVICE constexpr bool in_range("));
+      CHECK_FALSE(contains(text, "bits_above"));
+      CHECK_FALSE(contains(text, "#include <bit>"));
+    }
   }
 }
 

@@ -102,7 +102,7 @@ TEMPLATE_TEST_CASE("collide_batch gives collide's results bit for bit", "[runtim
   }
 }
 
-TEMPLATE_TEST_CASE("the batch's bit test of the mass range is kernels::within_plain_mass_range",
+TEMPLATE_TEST_CASE("kernels::within_plain_mass_range, on the bits, is the range the comparisons state",
                    "[runtime][batch]", float, double) {
   using Scalar = TestType;
   using limits = std::numeric_limits<Scalar>;
@@ -134,16 +134,20 @@ TEMPLATE_TEST_CASE("the batch's bit test of the mass range is kernels::within_pl
     std::memcpy(&x, &bits, sizeof x);
     values.push_back(x);
   }
+  // The range as written, by floating-point comparisons (what the predicate computes on the device).
+  const auto in_range = [&](Scalar a, Scalar b) { return low <= a && a <= high && low <= b && b <= high; };
   for (const Scalar a : values) {
     for (const Scalar b :
          {Scalar(1), low, high, std::nextafter(high, limits::infinity()), limits::quiet_NaN()}) {
       INFO("m1 = " << a << ", m2 = " << b);
-      CHECK(billiards::detail::within_plain_mass_range_bits(a, b) ==
-            billiards::kernels::within_plain_mass_range(a, b));
-      CHECK(billiards::detail::within_plain_mass_range_bits(b, a) ==
-            billiards::kernels::within_plain_mass_range(b, a));
+      CHECK(billiards::kernels::within_plain_mass_range(a, b) == in_range(a, b));
+      CHECK(billiards::kernels::within_plain_mass_range(b, a) == in_range(b, a));
     }
   }
+  // On the host the bits are compared (also in constant evaluation).
+  STATIC_REQUIRE(billiards::kernels::orders_as_bits<Scalar>());
+  STATIC_REQUIRE(billiards::kernels::within_plain_mass_range(Scalar(1), Scalar(2)));
+  STATIC_REQUIRE_FALSE(billiards::kernels::within_plain_mass_range(Scalar(1), limits::infinity()));
   // The range's ends as the documentation states them.
   CHECK(low == std::ldexp(Scalar(1), sizeof(Scalar) == 8 ? -509 : -61));
   CHECK(high == std::ldexp(Scalar(1), sizeof(Scalar) == 8 ? 509 : 61));

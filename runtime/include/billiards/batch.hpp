@@ -114,15 +114,14 @@ void collide_batch(std::span<const Scalar> m1, const Components<Scalar, Dimensio
   // In blocks small enough to stay in the caches: where every pair's masses lie in the plain
   // form's range, the plain kernel that elastic_normal_velocity_change itself takes there (two divisions
   // by one sum); otherwise elastic_normal_velocity_change (its ratio form for the pairs outside). The
-  // range test (kernels::within_plain_mass_range on the masses' bits, detail::within_plain_mass_range_bits:
-  // a few integer operations a pair) reads two of the 6D + 2 arrays, which the pass then finds in that
-  // cache.
+  // range test (kernels::within_plain_mass_range, on the masses' bits: a few integer operations a pair)
+  // reads two of the 6D + 2 arrays, which the pass then finds in that cache.
   constexpr std::size_t block = detail::batch_block;
   for (std::size_t begin = 0; begin < count; begin += block) {
     const std::size_t end = count - begin < block ? count : begin + block;
     unsigned outside = 0;
     for (std::size_t i = begin; i < end; ++i) {
-      outside |= detail::within_plain_mass_range_bits(mass1[i], mass2[i]) ? 0u : 1u;
+      outside |= kernels::within_plain_mass_range(mass1[i], mass2[i]) ? 0u : 1u;
     }
     if (outside == 0) {
       pass(begin, end, [](Scalar a, Scalar b, Scalar u, Scalar w) {

@@ -7,10 +7,8 @@
 
 #include <billiards/kernels.hpp>
 
-#include <bit>
 #include <cmath>
 #include <cstddef>
-#include <cstdint>
 #include <type_traits>
 
 namespace billiards::detail {
@@ -47,23 +45,6 @@ template <std::size_t Dimension, typename A, typename B>
 template <typename Scalar>
 [[nodiscard]] constexpr Scalar plus_multiple(Scalar v, Scalar c, Scalar d) noexcept {
   return v - (Scalar(0) - c * d);
-}
-
-/// kernels::within_plain_mass_range(m1, m2) — both masses in [plain_mass_low, plain_mass_high] — on the
-/// bits of float or double: m lies in [low, high] exactly when bits(m) − bits(low), as an unsigned
-/// integer, is at most bits(high) − bits(low) (positive floating-point numbers order as their bits;
-/// a negative number, −0 or a NaN wraps around or lies above). Integer operations, which GCC
-/// if-converts in a loop where it would branch on floating-point comparisons.
-template <typename Scalar>
-[[nodiscard]] constexpr bool within_plain_mass_range_bits(Scalar m1, Scalar m2) noexcept {
-  static_assert(std::is_same_v<Scalar, float> || std::is_same_v<Scalar, double>,
-                "billiards: the bit test is for float and double");
-  using Bits = std::conditional_t<std::is_same_v<Scalar, double>, std::uint64_t, std::uint32_t>;
-  constexpr Bits low = std::bit_cast<Bits>(kernels::plain_mass_low<Scalar>());
-  constexpr Bits span = std::bit_cast<Bits>(kernels::plain_mass_high<Scalar>()) - low;
-  const Bits a = static_cast<Bits>(std::bit_cast<Bits>(m1) - low),
-             b = static_cast<Bits>(std::bit_cast<Bits>(m2) - low);
-  return (a <= span) & (b <= span);
 }
 
 }  // namespace billiards::detail
