@@ -9,7 +9,6 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
-#include <array>
 #include <bit>
 #include <cmath>
 #include <limits>
@@ -290,7 +289,7 @@ TEMPLATE_TEST_CASE("scale_to_unit_binade is frexp's and ldexp's scaling, at ever
   using V = Eigen::Matrix<Scalar, 3, 1>;
   std::mt19937_64 random(23);
   const auto unit_binade = [](const V& d) {
-    std::array<Scalar, 3> scalars{d[0], d[1], d[2]};
+    auto scalars = billiards::detail::scalars_of(d);
     billiards::detail::scale_to_unit_binade(scalars);
     return V(scalars[0], scalars[1], scalars[2]);
   };
