@@ -1,6 +1,7 @@
 #include "emit/emitter.hpp"
 
 #include "core/named_constants.hpp"
+#include "core/powers_of_two.hpp"
 #include "print/printer.hpp"
 
 #include <algorithm>
@@ -28,8 +29,8 @@ void collect_sums(const ex& e, std::vector<ex>& sums) {
   }
 }
 
-// + − × ÷, square roots and negations in a line of emitted C++: binary operators stand between spaces, a
-// unary minus is followed directly by its operand.
+// + − × ÷, square roots, scalings and negations in a line of emitted C++: binary operators stand between
+// spaces, a unary minus is followed directly by its operand.
 int count_operations(const std::string& code) {
   int count = 0;
   for (std::size_t i = 0; i < code.size(); ++i) {
@@ -38,9 +39,9 @@ int count_operations(const std::string& code) {
     if ((c == '+' || c == '*' || c == '/' || c == '-') && spaced) ++count;
     if (c == '-' && i + 1 < code.size() && code[i + 1] != ' ') ++count;
   }
-  for (std::size_t at = code.find("std::sqrt("); at != std::string::npos;
-       at = code.find("std::sqrt(", at + 1)) {
-    ++count;  // a square root counts as one operation
+  // A square root, a binary exponent and a scaling by a power of two count as one operation each.
+  for (const std::string call : {"std::sqrt(", "binary_exponent(", "times_power_of_two("}) {
+    for (std::size_t at = code.find(call); at != std::string::npos; at = code.find(call, at + 1)) ++count;
   }
   return count;
 }
@@ -92,11 +93,41 @@ std::string short_if(const std::string& head, const std::string& statement) {
   return head + "\n    " + statement;
 }
 
+// `code` (a statement's expression and its ";"), starting at `column`, broken where it passes the column
+// limit as clang-format does: after a binary operator or a comma, each continuation line indented to
+// `indent`.
+std::string wrapped_code(std::size_t column, const std::string& code, const std::string& indent) {
+  std::vector<std::string> pieces(1);
+  for (std::size_t i = 0; i < code.size(); ++i) {
+    const bool after_operator = code[i] == ' ' && i >= 2 && code[i - 2] == ' ' &&
+                                std::string("+-*/").find(code[i - 1]) != std::string::npos;
+    const bool after_comma = code[i] == ' ' && i >= 1 && code[i - 1] == ',';
+    if (after_operator || after_comma) {
+      pieces.emplace_back();
+    } else {
+      pieces.back() += code[i];
+    }
+  }
+  std::string out = pieces.front();
+  std::size_t width = column + out.size();
+  for (std::size_t i = 1; i < pieces.size(); ++i) {
+    if (width + 1 + pieces[i].size() > column_limit) {
+      out += "\n" + indent + pieces[i];
+      width = indent.size() + pieces[i].size();
+    } else {
+      out += " " + pieces[i];
+      width += 1 + pieces[i].size();
+    }
+  }
+  return out;
+}
+
 // `head code;` in a function body (indented by 2), or, when that passes the column limit, broken after
-// the "=" with the expression on the next line indented by 4 more, as clang-format does.
+// the "=" with the expression on the next line indented by 4 more, and that broken again where it is
+// still too long, as clang-format does.
 std::string assignment(const std::string& head, const std::string& code) {
   if (2 + head.size() + 1 + code.size() + 1 <= column_limit) return head + " " + code + ";";
-  return head + "\n      " + code + ";";
+  return head + "\n      " + wrapped_code(6, code + ";", "      ");
 }
 
 // A relational as a C++ condition: `lhs op rhs`.
@@ -108,63 +139,31 @@ std::string print_condition(const ex& condition) {
   return print(condition, Notation::cpp);
 }
 
-// True when the kernel calls a function that is not constexpr (std::sqrt).
+// Whether any of the kernel's expressions (steps, guards' alternatives, outputs) has `property`.
+template <typename Property>
+bool any_expression(const Kernel& kernel, Property property) {
+  for (const KernelStep& step : kernel.steps) {
+    if (property(step.expression)) return true;
+    for (const Guard& guard : step.guards) {
+      if (property(guard.alternative)) return true;
+    }
+  }
+  return std::any_of(kernel.outputs.begin(), kernel.outputs.end(), property);
+}
+
+// True when the kernel scales by powers of two: binary_exponent and times_power_of_two.
+bool scales(const Kernel& kernel) { return any_expression(kernel, uses_power_of_two_scaling); }
+
+// True when the kernel calls a function that is not constexpr: std::sqrt, or the scaling helpers
+// (std::ilogb and std::ldexp outside their bit paths).
 bool needs_runtime_math(const Kernel& kernel) {
-  const auto has_root = [](const ex& e) {
+  if (scales(kernel)) return true;
+  return any_expression(kernel, [](const ex& e) {
     for (GiNaC::const_preorder_iterator it = e.preorder_begin(); it != e.preorder_end(); ++it) {
       if (GiNaC::is_a<GiNaC::power>(*it) && it->op(1) == GiNaC::numeric(1, 2)) return true;
     }
     return false;
-  };
-  for (const KernelStep& step : kernel.steps) {
-    if (has_root(step.expression)) return true;
-    for (const Guard& guard : step.guards) {
-      if (has_root(guard.alternative)) return true;
-    }
-  }
-  for (const ex& output : kernel.outputs) {
-    if (has_root(output)) return true;
-  }
-  return false;
-}
-
-// A function signature as clang-format lays it out in the project's style: on one line when it fits,
-// else on two or three lines aligned under the "(", else broken after the "(" with the parameters on a line
-// of their own, indented by 4.
-std::string signature(const std::string& head, const std::vector<std::string>& parameters,
-                      const std::string& tail) {
-  std::string list;
-  for (const std::string& parameter : parameters) list += (list.empty() ? "" : ", ") + parameter;
-  if (head.size() + list.size() + tail.size() <= column_limit) return head + list + tail;
-  // Aligned under the "(" when that takes two or three lines, as clang-format prefers it then.
-  const std::string aligned = wrapped_list(head, parameters, tail);
-  const std::size_t line_break = aligned.find('\n');
-  std::size_t lines = 0, longest = 0;
-  for (std::size_t start = 0; start <= aligned.size(); ++lines) {
-    const std::size_t end = std::min(aligned.find('\n', start), aligned.size());
-    longest = std::max(longest, end - start);
-    start = end + 1;
-  }
-  if (line_break != std::string::npos && lines <= 3 && longest <= column_limit) return aligned;
-  if (4 + list.size() + tail.size() <= column_limit) return head + "\n    " + list + tail;
-  return aligned;
-}
-
-// The parameters of `kernel` that `conditions` read, in signature order.
-std::vector<std::string> parameters_read(const Kernel& kernel, const std::vector<ex>& conditions) {
-  std::vector<std::string> names;
-  for (const ex& parameter : kernel.parameters) {
-    const bool read = std::any_of(conditions.begin(), conditions.end(),
-                                  [&](const ex& condition) { return condition.has(parameter); });
-    if (read) names.push_back(GiNaC::ex_to<GiNaC::symbol>(parameter).get_name());
-  }
-  return names;
-}
-
-std::string joined(const std::vector<std::string>& items, const std::string& separator) {
-  std::string out;
-  for (const std::string& item : items) out += (out.empty() ? "" : separator) + item;
-  return out;
+  });
 }
 
 // `head` then `items` joined by `separator` (which ends a line where one breaks), wrapped before the
@@ -186,6 +185,46 @@ std::string wrapped_terms(std::size_t column, const std::string& head, const std
     out += piece;
     width += piece.size();
   }
+  return out;
+}
+
+// A function signature as clang-format lays it out in the project's style: on one line when it fits,
+// else on two or three lines aligned under the "(", else broken after the "(" with the parameters on a line
+// of their own, indented by 4, or on as many such lines as they fill.
+std::string signature(const std::string& head, const std::vector<std::string>& parameters,
+                      const std::string& tail) {
+  std::string list;
+  for (const std::string& parameter : parameters) list += (list.empty() ? "" : ", ") + parameter;
+  if (head.size() + list.size() + tail.size() <= column_limit) return head + list + tail;
+  // Aligned under the "(" when that takes two or three lines, as clang-format prefers it then.
+  const std::string aligned = wrapped_list(head, parameters, tail);
+  const std::size_t line_break = aligned.find('\n');
+  std::size_t lines = 0, longest = 0;
+  for (std::size_t start = 0; start <= aligned.size(); ++lines) {
+    const std::size_t end = std::min(aligned.find('\n', start), aligned.size());
+    longest = std::max(longest, end - start);
+    start = end + 1;
+  }
+  if (line_break != std::string::npos && lines <= 3 && longest <= column_limit) return aligned;
+  if (4 + list.size() + tail.size() <= column_limit) return head + "\n    " + list + tail;
+  // Else broken after the "(", the parameters filling lines of their own, indented by 4.
+  return head + "\n    " + wrapped_terms(4, "", parameters, ",", "    ", tail);
+}
+
+// The parameters of `kernel` that `conditions` read, in signature order.
+std::vector<std::string> parameters_read(const Kernel& kernel, const std::vector<ex>& conditions) {
+  std::vector<std::string> names;
+  for (const ex& parameter : kernel.parameters) {
+    const bool read = std::any_of(conditions.begin(), conditions.end(),
+                                  [&](const ex& condition) { return condition.has(parameter); });
+    if (read) names.push_back(GiNaC::ex_to<GiNaC::symbol>(parameter).get_name());
+  }
+  return names;
+}
+
+std::string joined(const std::vector<std::string>& items, const std::string& separator) {
+  std::string out;
+  for (const std::string& item : items) out += (out.empty() ? "" : separator) + item;
   return out;
 }
 
@@ -389,7 +428,7 @@ EmittedKernel emit_kernel(const Kernel& kernel) {
       results.push_back(code);
     }
     if (results.size() == 1) {
-      emitted.body.push_back("return " + results.front() + ";");
+      emitted.body.push_back("return " + wrapped_code(9, results.front() + ";", "      "));
     } else {
       emitted.body.push_back(wrapped_list("  return {", results, "};").substr(2));
     }
@@ -423,11 +462,27 @@ std::string with_fingerprint(const std::string& text, const std::string& audit_t
   return out;
 }
 
+// `text` as "// " comment lines, each filled up to the column limit (as clang-format reflows them).
+std::string line_comment(const std::string& text) {
+  std::istringstream words(text);
+  std::string word, line, out;
+  while (words >> word) {
+    if (!line.empty() && 3 + line.size() + 1 + word.size() > column_limit) {
+      out += "// " + line + "\n";
+      line.clear();
+    }
+    line += (line.empty() ? "" : " ") + word;
+  }
+  if (!line.empty()) out += "// " + line + "\n";
+  return out;
+}
+
+// The header's opening comment: generated, do not edit, `description` (one paragraph), the fingerprint.
 std::string preamble(const std::string& description) {
   return "// Generated by derive/ (billiards-derive): do not edit. Regenerate with ./tools/derive "
          "generated.\n"
          "//\n" +
-         description +
+         line_comment(description) +
          "//\n"
          "// Fingerprint: " +
          fingerprint_marker + " (of this header and the audit)\n";
@@ -435,6 +490,59 @@ std::string preamble(const std::string& description) {
 
 // The explicit float and double specialisations of a constant function template `name<Scalar>()`,
 // each with its comment and its literal (device code has no std::numeric_limits).
+// The scaling helpers a kernel with binary_exponent or times_power_of_two calls (after orders_as_bits
+// and BitsOf).
+std::string scaling_helpers() {
+  return "\n/// The exponent k of x = f · 2^k, 1 ≤ |f| < 2: ⌊log2 |x|⌋ for a finite nonzero x, subnormals "
+         "included,\n"
+         "/// as a Scalar (an integer, exact); 0 for ±0, ±∞ and NaN, which times_power_of_two(x, −k) then "
+         "leaves\n"
+         "/// as they are. On the host, for IEEE float and double (orders_as_bits), it reads the exponent "
+         "field\n"
+         "/// of a normal x; elsewhere, and for a subnormal x, std::ilogb.\n"
+         "template <typename Scalar>\n"
+         "BILLIARDS_HOST_DEVICE Scalar binary_exponent(Scalar x) noexcept {\n"
+         "#if !defined(__CUDA_ARCH__)\n"
+         "  if constexpr (orders_as_bits<Scalar>()) {\n"
+         "    using Bits = BitsOf<Scalar>;\n"
+         "    constexpr int stored = std::numeric_limits<Scalar>::digits - 1;\n"
+         "    constexpr int bias = std::numeric_limits<Scalar>::max_exponent - 1;\n"
+         "    constexpr Bits all_ones = static_cast<Bits>(2 * bias + 1);\n"
+         "    const Bits field = static_cast<Bits>((std::bit_cast<Bits>(x) >> stored) & all_ones);\n"
+         "    if (field != 0 && field != all_ones) return Scalar(static_cast<int>(field) - bias);\n"
+         "  }\n"
+         "#endif\n"
+         "  if (x == Scalar(0) || !(absolute_value(x) < infinity<Scalar>())) return Scalar(0);\n"
+         "  return Scalar(std::ilogb(x));\n"
+         "}\n"
+         "\n"
+         "/// x · 2^k for an integer k (a Scalar, as binary_exponent gives it), correctly rounded: exact "
+         "unless\n"
+         "/// the result is subnormal, ±∞ beyond the largest finite number. k is first clamped to [−4096, "
+         "4096]\n"
+         "/// (a NaN to −4096), beyond which every finite x · 2^k is ±0 or ±∞ anyway. On the host, for "
+         "IEEE float\n"
+         "/// and double, one multiplication by 2^k built from its bits where 2^k is a normal number; "
+         "elsewhere\n"
+         "/// std::ldexp.\n"
+         "template <typename Scalar>\n"
+         "BILLIARDS_HOST_DEVICE Scalar times_power_of_two(Scalar x, Scalar k) noexcept {\n"
+         "  const int exponent = !(k >= Scalar(-4096)) ? -4096 : k > Scalar(4096) ? 4096 : "
+         "static_cast<int>(k);\n"
+         "#if !defined(__CUDA_ARCH__)\n"
+         "  if constexpr (orders_as_bits<Scalar>()) {\n"
+         "    using Bits = BitsOf<Scalar>;\n"
+         "    constexpr int stored = std::numeric_limits<Scalar>::digits - 1;\n"
+         "    constexpr int bias = std::numeric_limits<Scalar>::max_exponent - 1;\n"
+         "    if (exponent >= 1 - bias && exponent <= bias)\n"
+         "      return x * std::bit_cast<Scalar>(static_cast<Bits>(static_cast<Bits>(exponent + bias) << "
+         "stored));\n"
+         "  }\n"
+         "#endif\n"
+         "  return std::ldexp(x, exponent);\n"
+         "}\n";
+}
+
 std::string float_and_double(const std::string& name, const std::string& float_brief,
                              const std::string& float_value, const std::string& double_brief,
                              const std::string& double_value) {
@@ -462,18 +570,19 @@ std::string kernels_header(const Derivation& derivation, const std::string& audi
       std::any_of(derivation.kernels.begin(), derivation.kernels.end(), [](const Kernel& kernel) {
         return kernel.fast_path && common_interval(kernel, kernel.fast_path->conditions);
       });
+  // The scaling helpers only where a kernel scales by powers of two; they read bits too.
+  const bool scaling = std::any_of(derivation.kernels.begin(), derivation.kernels.end(), scales);
+  const bool reads_bits = compares_bits || scaling;
   std::ostringstream out;
-  out << preamble("// The scalar kernels of " + derivation.model.citation +
-                  ", printed from the\n"
-                  "// expressions the derivation selected. Each function was proven equal to a verified "
-                  "claim of the\n"
-                  "// derivation audit before it was printed, and names the claims it implements. They take "
-                  "masses\n"
-                  "// and dot products, so they serve vectors of any dimension and need no Eigen.\n")
+  out << preamble("The scalar kernels of " + derivation.model.citation +
+                  ", printed from the expressions the derivation selected. Each function was proven equal to "
+                  "a verified claim of the derivation audit before it was printed, and names the claims it "
+                  "implements. They take masses and dot products, so they serve vectors of any dimension and "
+                  "need no Eigen.")
       << "#pragma once\n\n"
-      << (compares_bits ? "#include <bit>\n" : "") << (runtime_math ? "#include <cmath>\n" : "")
-      << (compares_bits ? "#include <cstdint>\n" : "") << "#include <limits>\n"
-      << (compares_bits ? "#include <type_traits>\n" : "") << "\n"
+      << (reads_bits ? "#include <bit>\n" : "") << (runtime_math ? "#include <cmath>\n" : "")
+      << (reads_bits ? "#include <cstdint>\n" : "") << "#include <limits>\n"
+      << (reads_bits ? "#include <type_traits>\n" : "") << "\n"
       << "#if defined(__FINITE_MATH_ONLY__) && __FINITE_MATH_ONLY__\n"
       << "// -ffast-math assumes no infinities, but an infinite mass is how an immovable body is modelled.\n"
       << "#error \"billiards: -ffast-math breaks infinite masses (immovable bodies); add "
@@ -539,14 +648,19 @@ std::string kernels_header(const Derivation& derivation, const std::string& audi
         << "  return Scalar(1) / plain_mass_low<Scalar>();\n"
         << "}\n";
   }
-  if (compares_bits) {
+  if (reads_bits) {
     out << "\n/// Whether Scalar is IEEE float or double, whose positive numbers order as their bits.\n"
         << "template <typename Scalar>\n"
         << "constexpr bool orders_as_bits() noexcept {\n"
         << "  return std::numeric_limits<Scalar>::is_iec559 && (sizeof(Scalar) == 4 || sizeof(Scalar) == "
            "8);\n"
         << "}\n"
-        << "/// The bits of x minus those of low, as an unsigned integer of Scalar's width, for IEEE float "
+        << "/// The unsigned integer type of Scalar's width, for IEEE float and double.\n"
+        << "template <typename Scalar>\n"
+        << "using BitsOf = std::conditional_t<sizeof(Scalar) == 4, std::uint32_t, std::uint64_t>;\n";
+  }
+  if (compares_bits) {
+    out << "/// The bits of x minus those of low, as an unsigned integer of Scalar's width, for IEEE float "
            "and\n"
         << "/// double (orders_as_bits). For finite 0 < low ≤ high, low ≤ x ≤ high exactly when\n"
         << "/// bits_above(x, low) ≤ bits_above(high, low): positive numbers order as their bits, and an x "
@@ -555,7 +669,7 @@ std::string kernels_header(const Derivation& derivation, const std::string& audi
         << "/// Host code; on the device the predicates compare the numbers.\n"
         << "template <typename Scalar>\n"
         << "constexpr auto bits_above(Scalar x, Scalar low) noexcept {\n"
-        << "  using Bits = std::conditional_t<sizeof(Scalar) == 4, std::uint32_t, std::uint64_t>;\n"
+        << "  using Bits = BitsOf<Scalar>;\n"
         << "  return static_cast<Bits>(std::bit_cast<Bits>(x) - std::bit_cast<Bits>(low));\n"
         << "}\n"
         << "/// The larger of two unsigned integers.\n"
@@ -564,6 +678,7 @@ std::string kernels_header(const Derivation& derivation, const std::string& audi
         << "  return a > b ? a : b;\n"
         << "}\n";
   }
+  if (scaling) out << scaling_helpers();
   out << functions(derivation.kernels, derivation.model.pair_result.name) << "\n}  // namespace "
       << derivation.model.kernels_namespace << "\n";
   return with_fingerprint(out.str(), audit_text);
@@ -572,12 +687,12 @@ std::string kernels_header(const Derivation& derivation, const std::string& audi
 std::string reference_kernels_header(const Derivation& derivation, const std::string& audit_text) {
   std::ostringstream out;
   out << preamble(
-             "// Reference kernels for the benchmark only, not part of the runtime and not installed: the\n"
-             "// derivation of " +
+             "Reference kernels for the benchmark only, not part of the runtime and not installed: the "
+             "derivation of " +
              derivation.model.citation +
-             " before simplification,\n"
-             "// printed from the same derived expressions as " +
-             derivation.model.kernels_path + " and proven the same way.\n")
+             " before simplification, printed from the same derived "
+             "expressions as " +
+             derivation.model.kernels_path + " and proven the same way.")
       << "#pragma once\n\n"
       << "#include <" << derivation.model.kernels_path << ">\n\n"
       << "#include <cmath>\n\n"
@@ -621,11 +736,9 @@ std::string kernel_list_header(const Derivation& derivation, const std::string& 
   for (const Kernel& kernel : derivation.kernels)
     largest_arity = std::max(largest_arity, kernel.parameters.size());
   std::ostringstream out;
-  out << preamble(
-             "// For tests only, not installed: every kernel of " + model.citation +
-             ",\n"
-             "// listed by the derivation, so that tests call, measure and compile each one without a list\n"
-             "// kept by hand.\n")
+  out << preamble("For tests only, not installed: every kernel of " + model.citation +
+                  ", listed by the derivation, so that tests call, measure and compile each one without a "
+                  "list kept by hand.")
       << "#pragma once\n\n"
       << "#include <" << model.kernels_path << ">\n";
   if (!model.reference_path.empty()) out << "#include <" << model.reference_path << ">\n";

@@ -1,6 +1,9 @@
 #include "emit/kernel.hpp"
 
+#include "core/powers_of_two.hpp"
+
 #include <algorithm>
+#include <stdexcept>
 
 namespace billiards::derive {
 
@@ -16,6 +19,49 @@ std::vector<std::string> cited_claims(const Kernel& kernel) {
   }
   if (kernel.fast_path) cite(kernel.fast_path->claim);
   return ids;
+}
+
+using GiNaC::ex;
+using GiNaC::numeric;
+
+ScaledMonomial scaled_monomial(const std::string& name, const ex& monomial,
+                               const std::vector<ex>& parameters) {
+  ScaledMonomial out;
+  GiNaC::exmap to_significands;
+  ex exponent = 0;
+  for (const ex& parameter : parameters) {
+    if (!monomial.has(parameter)) continue;
+    // The degree a of x in c Π x_i^(a_i): the monomial at 2x over the monomial at x is 2^a.
+    const ex ratio = GiNaC::normal(monomial.subs(parameter == 2 * parameter) / monomial);
+    const std::string base = GiNaC::ex_to<GiNaC::symbol>(parameter).get_name();
+    const auto not_a_monomial = [&] {
+      return std::invalid_argument("scaled_monomial " + name +
+                                   ": the form is not a monomial of integer degree in " + base);
+    };
+    if (!GiNaC::is_a<numeric>(ratio) || !GiNaC::ex_to<numeric>(ratio).is_rational() ||
+        !GiNaC::ex_to<numeric>(ratio).is_positive())
+      throw not_a_monomial();
+    // 2^a for an integer a: as many halvings of 2^|a| as bring it to 1.
+    const numeric ratio_value = GiNaC::ex_to<numeric>(ratio);
+    numeric power = ratio_value >= 1 ? ratio_value : numeric(1) / ratio_value;
+    int degree = 0;
+    while (power.is_integer() && power > 1 && (power / 2).is_integer()) {
+      power /= 2;
+      ++degree;
+    }
+    if (power != 1) throw not_a_monomial();
+    if (ratio_value < 1) degree = -degree;
+    const GiNaC::symbol exponent_step(base + "_exponent"), significand_step("scaled_" + base);
+    out.steps.push_back({exponent_step, binary_exponent(parameter)});
+    out.steps.push_back({significand_step, times_power_of_two(parameter, -exponent_step)});
+    to_significands[parameter] = significand_step;
+    exponent += degree * exponent_step;
+  }
+  const GiNaC::symbol significand("scaled_" + name), exponent_sum(name + "_exponent");
+  out.steps.push_back({significand, monomial.subs(to_significands)});
+  out.steps.push_back({exponent_sum, exponent});
+  out.value = times_power_of_two(significand, exponent_sum);
+  return out;
 }
 
 }  // namespace billiards::derive

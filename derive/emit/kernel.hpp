@@ -78,6 +78,20 @@ struct Kernel {
   std::vector<GiNaC::ex> domain = {};
 };
 
+/// A monomial c Π x_i^(a_i) (c a number or an expression in other symbols, each a_i an integer)
+/// computed on significands: for each x_i of `parameters` it reads, the steps `<x_i>_exponent` =
+/// binary_exponent(x_i) and `scaled_<x_i>` = x_i · 2^−exponent, in [1, 2); then `scaled_<name>`, the
+/// monomial of those, and `<name>_exponent` = Σ a_i exponent_i. `value` is scaled_<name> ·
+/// 2^<name>_exponent: nothing overflows or underflows before this last scaling, which rounds once
+/// (core/powers_of_two.hpp).
+struct ScaledMonomial {
+  std::vector<KernelStep> steps;
+  GiNaC::ex value;
+};
+/// Throws std::invalid_argument when `monomial` is not a monomial in `parameters` of integer degrees.
+ScaledMonomial scaled_monomial(const std::string& name, const GiNaC::ex& monomial,
+                               const std::vector<GiNaC::ex>& parameters);
+
 /// Every claim a kernel cites, in order and without repeats: `equals`, `claims`, the guards' claims, the
 /// fast path's claim.
 std::vector<std::string> cited_claims(const Kernel& kernel);

@@ -2,6 +2,7 @@
 
 #include "core/algebra.hpp"
 #include "core/named_constants.hpp"
+#include "core/powers_of_two.hpp"
 #include "print/printer.hpp"
 
 #include <algorithm>
@@ -147,10 +148,11 @@ class Validation {
   }
 
   // ---- comparison -------------------------------------------------------------------------------
-  // An expression made comparable: in the claims' terms, square roots of perfect squares taken, |…|
-  // resolved by the branch's facts and every remaining |…| oriented alike.
+  // An expression made comparable: in the claims' terms, every scaling by 2^k resolved for any k,
+  // square roots of perfect squares taken, |…| resolved by the branch's facts and every remaining |…|
+  // oriented alike.
   ex comparable(const ex& e, const std::vector<ex>& facts) const {
-    ex out = take_square_roots(e.subs(kernel_.in_claim_terms));
+    ex out = take_square_roots(resolve_powers_of_two(e.subs(kernel_.in_claim_terms)));
     for (const ex& fact : facts) {
       const ex in_terms = fact.subs(kernel_.in_claim_terms);
       if (!GiNaC::is_a<GiNaC::relational>(in_terms)) continue;

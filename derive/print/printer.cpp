@@ -1,6 +1,7 @@
 #include "print/printer.hpp"
 
 #include "core/named_constants.hpp"
+#include "core/powers_of_two.hpp"
 
 #include <algorithm>
 #include <sstream>
@@ -197,9 +198,48 @@ bool is_one_group(const std::string& code) {
   return false;
 }
 
+// Whether n is 2^k for an integer k ≥ 1.
+bool is_power_of_two_above_one(numeric n) {
+  if (!n.is_integer() || n <= 1) return false;
+  while (n > 1 && (n / 2).is_integer()) n /= 2;
+  return n == 1;
+}
+
+// A positive p/2^k (k ≥ 0) as an exact decimal literal: 7/2 → Scalar(3.5), 1/4 → Scalar(0.25).
+std::string dyadic_literal(const numeric& n) {
+  numeric denominator = n.denom(), digits = n.numer();
+  int places = 0;
+  for (; denominator > 1; denominator /= 2, ++places) digits *= 5;
+  std::string text = ginac_print(digits, Notation::text);
+  if (places == 0) return "Scalar(" + text + ")";
+  if (static_cast<int>(text.size()) <= places)
+    text.insert(0, static_cast<std::size_t>(places + 1) - text.size(), '0');
+  text.insert(text.size() - static_cast<std::size_t>(places), ".");
+  return "Scalar(" + text + ")";
+}
+
+// A coefficient whose digits fit every Scalar (float's 24 bits), so that its literal is exact.
+bool fits_float(const numeric& n) { return n.numer() < numeric(1 << 24) && n.denom() < numeric(1 << 24); }
+
 // |p| in C++: coefficient and numerator factors, then one division per denominator factor, so that
-// 2 m2 / (m1 + m2) is computed as written.
+// 2 m2 / (m1 + m2) is computed as written. A coefficient p/2^k prints as one exact literal, 7/2 as
+// Scalar(3.5), and 2^k/q as a division by one, 2/7 as / Scalar(3.5): one rounding, and no product
+// 7 x that overflows where 3.5 x would not. A factor 2^k whose k is not a number (a scaling by a
+// power of two) wraps the rest: times_power_of_two(rest, k).
 std::string print_magnitude_cpp(const Product& p) {
+  ex scale = 0;
+  Product rest;
+  rest.coefficient = p.coefficient;
+  for (const Factor& f : p.factors) {
+    if (GiNaC::is_a<GiNaC::power>(f.base) && f.base.op(0).is_equal(2) &&
+        !GiNaC::is_a<numeric>(f.base.op(1))) {
+      scale += f.exponent * f.base.op(1);
+    } else {
+      rest.factors.push_back(f);
+    }
+  }
+  if (!scale.is_zero())
+    return "times_power_of_two(" + print_magnitude_cpp(rest) + ", " + print_any(scale, Notation::cpp) + ")";
   std::vector<std::string> numerator, denominator;
   for (const Factor& f : p.factors) {
     if (f.exponent.is_negative()) {
@@ -212,8 +252,15 @@ std::string print_magnitude_cpp(const Product& p) {
   std::sort(numerator.begin(), numerator.end());
   std::sort(denominator.begin(), denominator.end());
   const numeric top = GiNaC::abs(p.coefficient.numer()), bottom = p.coefficient.denom();
-  if (top != 1 || numerator.empty()) numerator.insert(numerator.begin(), scalar_literal(top));
-  if (bottom != 1) denominator.push_back(scalar_literal(bottom));
+  if (bottom != 1 && is_power_of_two_above_one(bottom) && fits_float(top / bottom)) {
+    numerator.insert(numerator.begin(), dyadic_literal(top / bottom));
+  } else if (bottom != 1 && is_power_of_two_above_one(top) && fits_float(bottom / top)) {
+    if (numerator.empty()) numerator.push_back(scalar_literal(1));
+    denominator.push_back(dyadic_literal(bottom / top));
+  } else {
+    if (top != 1 || numerator.empty()) numerator.insert(numerator.begin(), scalar_literal(top));
+    if (bottom != 1) denominator.push_back(scalar_literal(bottom));
+  }
   std::string out;
   for (const std::string& part : numerator) out += (out.empty() ? "" : " * ") + part;
   for (const std::string& part : denominator) out += " / " + part;
@@ -322,6 +369,10 @@ std::string print_cpp_leaf(const ex& e) {
   if (e.is_equal(plain_mass_low())) return "plain_mass_low<Scalar>()";
   if (e.is_equal(plain_mass_high())) return "plain_mass_high<Scalar>()";
   if (GiNaC::is_a<GiNaC::symbol>(e)) return GiNaC::ex_to<GiNaC::symbol>(e).get_name();
+  if (GiNaC::is_a<GiNaC::function>(e) && GiNaC::ex_to<GiNaC::function>(e).get_name() == "binary_exponent") {
+    // The emitted header defines binary_exponent(): the exponent as a Scalar, for host and device.
+    return "binary_exponent(" + print_any(e.op(0), Notation::cpp) + ")";
+  }
   if (GiNaC::is_a<GiNaC::function>(e) && GiNaC::ex_to<GiNaC::function>(e).get_name() == "abs") {
     // The emitted header defines absolute_value(): constexpr, unlike std::abs before C++23.
     return "absolute_value(" + print_any(e.op(0), Notation::cpp) + ")";
@@ -357,6 +408,8 @@ std::string print_any(const ex& e, Notation notation) {
       const std::string inner = print_any(w, notation);
       return notation == Notation::latex ? "\\left|" + inner + "\\right|" : "abs(" + inner + ")";
     }
+    if (name == "binary_exponent" && notation == Notation::latex)
+      return "\\lfloor \\log_2 \\left|" + arguments + "\\right| \\rfloor";
     if (notation == Notation::latex) return "\\operatorname{" + name + "}\\left(" + arguments + "\\right)";
     return name + "(" + arguments + ")";
   }

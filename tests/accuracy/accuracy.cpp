@@ -15,11 +15,11 @@
 // The spinning-ball kernels (billiards::kernels::spin) return quantities of their own (an impulse, a
 // time, a velocity change), judged by their relative error, |computed − exact| / (ε |exact|), the
 // denominator floored at the smallest subnormal; an exact +∞ (a phase without friction) must come out
-// +∞. Their inputs are drawn by parameter name: each positive quantity log-uniform over
-// [2^−E/4, 2^E/4] (E the type's largest exponent: 1e−9 to 4e9 in float), where no intermediate of
-// these few-operation forms can overflow or underflow, with zeros (no slip, no friction), restitution 0
-// and 1, and equal masses among them; tangential_velocity_change, which depends on the masses only
-// through their ratio, gets masses over the whole normal range.
+// +∞, and where the exact value rounds to ±∞ in the type (it exceeds the largest finite number by half
+// an ulp or more) ±∞ is the correctly rounded result, not a failure. Their inputs are drawn by
+// parameter name: each positive quantity log-uniform over the whole range, from the smallest subnormal
+// to the largest finite number, with zeros (no slip, no friction), restitution 0 and 1, and equal masses
+// among them.
 //
 // Usage: billiards-accuracy [--samples N] [--limit ULP]
 //   prints a Markdown table (kernel, type, samples, largest error in ULP, non-finite results) and
@@ -78,10 +78,12 @@ bool names_infinity(const ex& e) {
 // The kernel's outputs evaluated exactly from its derived steps. An infinite mass is the limit
 // t → 0 of 1/t, taken after normal(): the steps are rational in t. Piecewise guards are honoured (the
 // last one whose condition holds, exactly, gives the value); same-value guards are alternative forms
-// of the same quantity and are skipped. A square root is evaluated to GiNaC::Digits digits.
+// of the same quantity and are skipped. A step that divides by zero (the significands of a duration
+// without friction) is left undefined, and an output that still reads it is an error. A square root is
+// evaluated to GiNaC::Digits digits.
 template <typename Scalar>
 std::vector<Exact> exact_outputs(const billiards::derive::Kernel& kernel, const Inputs<Scalar>& in) {
-  const GiNaC::symbol t("t");
+  const GiNaC::symbol t("t"), undefined("undefined");
   GiNaC::exmap values;
   std::map<ex, bool, GiNaC::ex_is_less> infinite;
   bool has_infinity = false;
@@ -104,8 +106,12 @@ std::vector<Exact> exact_outputs(const billiards::derive::Kernel& kernel, const 
       if (static_cast<bool>(GiNaC::ex_to<GiNaC::relational>(condition))) chosen = &guard;
     }
     infinite[step.name] = chosen != nullptr && names_infinity(chosen->alternative);
-    values[step.name] =
-        infinite[step.name] ? ex(0) : evaluate(chosen ? chosen->alternative : step.expression);
+    try {
+      values[step.name] =
+          infinite[step.name] ? ex(0) : evaluate(chosen ? chosen->alternative : step.expression);
+    } catch (const GiNaC::pole_error&) {
+      values[step.name] = undefined;  // a division by zero (no friction) that a later guard replaces
+    }
   }
   std::vector<Exact> outputs;
   for (const ex& output : kernel.outputs) {
@@ -390,9 +396,28 @@ Row measure(const billiards::derive::Kernel& kernel, const char* type, long samp
 
 // ---- The spinning-ball kernels ---------------------------------------------------------------
 
+// True where an exact value rounds to ±∞ in Scalar: its magnitude at least the largest finite number
+// plus half that number's ulp. There ±∞ is the correctly rounded result, not a failure.
+template <typename Scalar>
+bool rounds_to_infinity(const numeric& value) {
+  using limits = std::numeric_limits<Scalar>;
+  static const numeric threshold =
+      exact_rational(limits::max()) + numeric(2).power(limits::max_exponent - 1 - limits::digits);
+  return GiNaC::abs(value) >= threshold;
+}
+
+// A spin kernel's output that is NaN, or ∞ where the exact value is finite in Scalar.
+template <typename Scalar>
+bool wrongly_non_finite(Scalar computed, const Exact& exact) {
+  if (std::isnan(computed)) return true;
+  if (!std::isinf(computed) || exact.infinite) return false;
+  return !rounds_to_infinity<Scalar>(exact.value) || (computed > 0) != (exact.value > 0);
+}
+
 template <typename Scalar>
 double relative_ulp_error(Scalar computed, const Exact& exact) {
   if (exact.infinite) return std::isinf(computed) && computed > 0 ? 0 : 1e6;
+  if (std::isinf(computed)) return wrongly_non_finite(computed, exact) ? 1e6 : 0;
   if (!std::isfinite(computed)) return 1e6;
   numeric scale = exact_rational(std::numeric_limits<Scalar>::epsilon()) * GiNaC::abs(exact.value);
   const numeric smallest = exact_rational(std::numeric_limits<Scalar>::denorm_min());
@@ -409,7 +434,6 @@ class SpinInputGenerator {
 
   Inputs<Scalar> operator()(const billiards::derive::Kernel& kernel, int sample) {
     const int mode = sample % 8;
-    const bool ratio_only = kernel.name == "tangential_velocity_change";
     Inputs<Scalar> in;
     for (const ex& parameter : kernel.parameters) {
       const std::string name = GiNaC::ex_to<GiNaC::symbol>(parameter).get_name();
@@ -419,8 +443,6 @@ class SpinInputGenerator {
         in[name] = -wide();  // approaching
       } else if (name.find("friction") != std::string::npos) {
         in[name] = mode == 3 ? Scalar(0) : mode == 4 ? wide() : Scalar(unit_(random_));
-      } else if ((name == "m1" || name == "m2") && ratio_only) {
-        in[name] = log_uniform(std::numeric_limits<Scalar>::min(), std::numeric_limits<Scalar>::max() / 2);
       } else if (mode == 5 && (name == "tangential_slip" || name.find("speed") != std::string::npos)) {
         in[name] = Scalar(0);  // no slip, at rest, no spin
       } else {
@@ -439,13 +461,14 @@ class SpinInputGenerator {
                               -in["relative_normal_speed"] *
                               static_cast<Scalar>(std::exp2(4 * unit_(random_) - 2));
     }
+    // Where those products overflow, a slip of the whole range instead.
+    if (in.count("tangential_slip") && !std::isfinite(in["tangential_slip"])) in["tangential_slip"] = wide();
     return in;
   }
 
  private:
   Scalar wide() {
-    const int quarter = std::numeric_limits<Scalar>::max_exponent / 4;
-    return log_uniform(std::ldexp(Scalar(1), -quarter), std::ldexp(Scalar(1), quarter));
+    return log_uniform(std::numeric_limits<Scalar>::denorm_min(), std::numeric_limits<Scalar>::max());
   }
   Scalar log_uniform(Scalar low, Scalar high) {
     std::uniform_real_distribution<double> exponent(std::log2(static_cast<double>(low)),
@@ -470,7 +493,7 @@ Row measure_spin(const billiards::derive::Kernel& kernel, const char* type, long
         kernel.name, [&](const char* key) { return in.at(key); });
     const std::vector<Exact> exact = exact_outputs(kernel, in);
     for (std::size_t i = 0; i < computed.size(); ++i) {
-      if (std::isnan(computed[i]) || (std::isinf(computed[i]) && !exact[i].infinite)) ++row.non_finite;
+      if (wrongly_non_finite(computed[i], exact[i])) ++row.non_finite;
       const double error = relative_ulp_error(computed[i], exact[i]);
       if (error > row.worst) {
         row.worst = error;

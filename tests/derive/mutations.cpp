@@ -1,6 +1,7 @@
 #include "mutations.hpp"
 
 #include "core/named_constants.hpp"
+#include "core/powers_of_two.hpp"
 
 #include <stdexcept>
 
@@ -112,12 +113,18 @@ const std::vector<Mutation>& spin_mutations() {
        [](Kernel& k) { k.outputs.at(0) = numeric(7, 2) / symbol(k, "m1"); }},
       {"normal_impulse_restitution_dropped", "normal_impulse",
        [](Kernel& k) {
-         k.outputs.at(0) = -2 * symbol(k, "relative_normal_speed") * symbol(k, "reduced_mass");
+         k.outputs.at(0) =
+             -2 * times_power_of_two(symbol(k, "scaled_impulse"), symbol(k, "impulse_exponent"));
        }},
-      {"reduced_mass_guard_wrong_ratio", "normal_impulse",
+      {"heavier_mass_guard_keeps_the_lighter", "normal_impulse",
+       [](Kernel& k) { step(k, "heavier_mass").guards.at(0).alternative = symbol(k, "m2"); }},
+      // The scaling by powers of two (issue 14): a significand not scaled back, an exponent's sign.
+      {"normal_impulse_not_scaled_back", "normal_impulse",
+       [](Kernel& k) { k.outputs.at(0) = -(1 + symbol(k, "restitution")) * symbol(k, "scaled_impulse"); }},
+      {"normal_impulse_speed_exponent_subtracted", "normal_impulse",
        [](Kernel& k) {
-         step(k, "reduced_mass").guards.at(0).alternative =
-             symbol(k, "m2") / (1 + symbol(k, "m1") / symbol(k, "m2"));
+         step(k, "impulse_exponent").expression =
+             symbol(k, "lighter_mass_exponent") - symbol(k, "relative_normal_speed_exponent");
        }},
       {"friction_bound_reversed", "friction_impulse",
        [](Kernel& k) {
@@ -128,7 +135,7 @@ const std::vector<Mutation>& spin_mutations() {
        [](Kernel& k) { step(k, "impulse").guards.at(0).alternative = symbol(k, "friction"); }},
       // The mass-ratio form of the tangential change: each ball's fraction, the 2/7, the sliding bound.
       {"tangential_change_fractions_swapped", "tangential_velocity_change",
-       [](Kernel& k) { step(k, "first_factor").expression = symbol(k, "second_fraction"); }},
+       [](Kernel& k) { step(k, "first").expression = symbol(k, "second_fraction") * symbol(k, "bound"); }},
       {"tangential_change_two_fifths", "tangential_velocity_change",
        [](Kernel& k) {
          step(k, "sticking_change").expression = numeric(2, 5) * symbol(k, "tangential_slip");
@@ -138,7 +145,16 @@ const std::vector<Mutation>& spin_mutations() {
          step(k, "sliding_change").expression = -symbol(k, "friction") * symbol(k, "relative_normal_speed");
        }},
       {"tangential_change_small_mass_form_wrong_mass", "tangential_velocity_change",
-       [](Kernel& k) { step(k, "second_multiplier").guards.at(0).alternative = symbol(k, "m2"); }},
+       [](Kernel& k) {
+         // Ball 1's small-mass form for ball 2's.
+         step(k, "second").guards.at(0).alternative = times_power_of_two(
+             symbol(k, "scaled_first_small_mass_change"), symbol(k, "first_small_mass_change_exponent"));
+       }},
+      {"tangential_change_small_mass_exponent_sign", "tangential_velocity_change",
+       [](Kernel& k) {
+         step(k, "second_small_mass_change_exponent").expression =
+             symbol(k, "bound_exponent") - symbol(k, "m1_exponent") - symbol(k, "m2_exponent");
+       }},
       {"tangential_change_bound_reversed", "tangential_velocity_change",
        [](Kernel& k) {
          Guard& guard = step(k, "bound").guards.at(0);
@@ -146,24 +162,42 @@ const std::vector<Mutation>& spin_mutations() {
        }},
       // A hollow sphere's R/I = 3/(2 m R) for the solid sphere's 5/(2 m R).
       {"spin_change_hollow_sphere", "spin_change",
-       [](Kernel& k) { k.outputs.at(0) = 3 * symbol(k, "velocity_change") / (2 * symbol(k, "radius")); }},
+       [](Kernel& k) { k.outputs.at(0) = numeric(3, 2) * symbol(k, "change_per_radius"); }},
+      {"spin_change_without_the_half", "spin_change",
+       [](Kernel& k) { k.outputs.at(0) = 5 * symbol(k, "change_per_radius"); }},
       {"spin_change_inverted_inertia", "spin_change_per_impulse",
-       [](Kernel& k) { k.outputs.at(0) = numeric(2, 5) / (symbol(k, "mass") * symbol(k, "radius")); }},
+       [](Kernel& k) {
+         step(k, "scaled_per_impulse").expression =
+             numeric(2, 5) / (symbol(k, "scaled_mass") * symbol(k, "scaled_radius"));
+       }},
+      {"spin_change_per_impulse_radius_not_scaled", "spin_change_per_impulse",
+       [](Kernel& k) { step(k, "scaled_radius").expression = symbol(k, "radius"); }},
+      {"tangential_mass_term_seven", "tangential_inverse_effective_mass",
+       [](Kernel& k) { step(k, "first_term").expression = 7 / symbol(k, "m1"); }},
       {"slide_time_five_for_seven", "slide_time",
        [](Kernel& k) {
-         step(k, "duration").expression =
-             2 * symbol(k, "slip_speed") / (5 * symbol(k, "sliding_friction") * symbol(k, "gravity"));
+         step(k, "scaled_duration").expression =
+             2 * symbol(k, "scaled_slip_speed") /
+             (5 * symbol(k, "scaled_sliding_friction") * symbol(k, "scaled_gravity"));
        }},
       {"slide_time_frictionless_zero", "slide_time",
        [](Kernel& k) { step(k, "duration").guards.at(0).alternative = 0; }},
+      {"slide_time_gravity_exponent_added", "slide_time",
+       [](Kernel& k) {
+         step(k, "duration_exponent").expression = symbol(k, "slip_speed_exponent") +
+                                                   symbol(k, "gravity_exponent") -
+                                                   symbol(k, "sliding_friction_exponent");
+       }},
       {"roll_time_gravity_dropped", "roll_time",
        [](Kernel& k) {
-         step(k, "duration").expression = symbol(k, "speed") / symbol(k, "rolling_friction");
+         step(k, "scaled_duration").expression =
+             symbol(k, "scaled_speed") / symbol(k, "scaled_rolling_friction");
        }},
       {"spin_time_factor_inverted", "spin_time",
        [](Kernel& k) {
-         step(k, "duration").expression = 5 * symbol(k, "radius") * symbol(k, "spin_speed") /
-                                          (2 * symbol(k, "spinning_friction") * symbol(k, "gravity"));
+         step(k, "scaled_duration").expression =
+             5 * symbol(k, "scaled_radius") * symbol(k, "scaled_spin_speed") /
+             (2 * symbol(k, "scaled_spinning_friction") * symbol(k, "scaled_gravity"));
        }},
   };
   return mutations;

@@ -1,5 +1,6 @@
 // The emitter: C++ without pow or floating literals, common subexpressions hoisted, honest op counts.
 #include "core/named_constants.hpp"
+#include "core/powers_of_two.hpp"
 #include "emit/emitter.hpp"
 #include "models/parkin2023/paper.hpp"
 #include "print/printer.hpp"
@@ -21,10 +22,27 @@ bool contains(const std::string& text, const std::string& part) {
 
 TEST_CASE("C++ notation", "[derive][emitter]") {
   const GiNaC::symbol m1("m1"), m2("m2"), v("v");
-  SECTION("numbers are Scalar(integer), never floating literals") {
+  SECTION("numbers are Scalar(integer) or exact binary fractions, never a rounded literal") {
     CHECK(print(2 * m2 / (m1 + m2), Notation::cpp) == "Scalar(2) * m2 / (m1 + m2)");
-    CHECK(print(GiNaC::numeric(1, 2) * v, Notation::cpp) == "v / Scalar(2)");
     CHECK(print(ex(GiNaC::numeric(-3, 4)), Notation::cpp) == "-(Scalar(3) / Scalar(4))");
+    // A coefficient p/2^k is one exact literal, 2^k/q a division by one: one rounding, no 7 v that
+    // overflows where 3.5 v would not.
+    CHECK(print(GiNaC::numeric(1, 2) * v, Notation::cpp) == "Scalar(0.5) * v");
+    CHECK(print(GiNaC::numeric(7, 2) / m1, Notation::cpp) == "Scalar(3.5) / m1");
+    CHECK(print(GiNaC::numeric(3, 64) * v, Notation::cpp) == "Scalar(0.046875) * v");
+    CHECK(print(GiNaC::numeric(2, 7) * v, Notation::cpp) == "v / Scalar(3.5)");
+    CHECK(print(GiNaC::numeric(-4, 5) / v, Notation::cpp) == "-(Scalar(1) / v / Scalar(1.25))");
+    // Neither: an integer ratio, as before; nor beyond float's 24 bits.
+    CHECK(print(GiNaC::numeric(3, 7) * v, Notation::cpp) == "Scalar(3) * v / Scalar(7)");
+    CHECK(print(GiNaC::numeric(1, 1 << 25) * v, Notation::cpp) == "v / Scalar(33554432)");
+  }
+  SECTION("a power of two with an exponent that is no number scales, binary_exponent is the header's") {
+    const GiNaC::symbol k("k"), j("j");
+    CHECK(print(v * GiNaC::pow(2, -k), Notation::cpp) == "times_power_of_two(v, -k)");
+    CHECK(print(-3 * v / m1 * GiNaC::pow(2, k - j), Notation::cpp) ==
+          "-(times_power_of_two(Scalar(3) * v / m1, k - j))");
+    CHECK(print(binary_exponent(m1 + m2), Notation::cpp) == "binary_exponent(m1 + m2)");
+    CHECK(print(binary_exponent(v), Notation::latex) == "\\lfloor \\log_2 \\left|v\\right| \\rfloor");
   }
   SECTION("integer powers are products, reciprocals are divisions: no pow()") {
     CHECK(print(GiNaC::pow(v, 3), Notation::cpp) == "v * v * v");

@@ -1,6 +1,7 @@
 // The kernel validation on small kernels: each rule proven able to fail, and to pass.
 #include "core/claim.hpp"
 #include "core/named_constants.hpp"
+#include "core/powers_of_two.hpp"
 #include "emit/validate.hpp"
 
 #include <catch2/catch.hpp>
@@ -40,7 +41,8 @@ Kernel share_kernel() {
 
 bool mentions(const std::vector<KernelProblem>& problems, const std::string& text) {
   for (const KernelProblem& problem : problems) {
-    if ((problem.kernel + " " + problem.claim + " " + problem.reason).find(text) != std::string::npos) return true;
+    if ((problem.kernel + " " + problem.claim + " " + problem.reason).find(text) != std::string::npos)
+      return true;
   }
   return false;
 }
@@ -51,7 +53,9 @@ TEST_CASE("A kernel is validated against the claims", "[derive][validate]") {
   std::vector<Claim> claims = {verified("test.share", a * x / (a + b))};
   Kernel kernel = share_kernel();
 
-  SECTION("outputs equal to the claim's derived expression: proven") { CHECK(validate_kernel(kernel, claims).empty()); }
+  SECTION("outputs equal to the claim's derived expression: proven") {
+    CHECK(validate_kernel(kernel, claims).empty());
+  }
   SECTION("an output that differs is named with the claim and the residual") {
     kernel.outputs = {-kernel.outputs[0]};
     const auto problems = validate_kernel(kernel, claims);
@@ -75,7 +79,8 @@ TEST_CASE("A kernel is validated against the claims", "[derive][validate]") {
   SECTION("a same-value guard: its alternative must keep the outputs equal") {
     claims.push_back(verified("test.other_form", 0));
     const GiNaC::symbol share = kernel.steps[1].name;
-    kernel.steps[1].guards = {{share < smallest_normal(), 1 - b / (a + b), Guard::Kind::same_value, "test.other_form"}};
+    kernel.steps[1].guards = {
+        {share < smallest_normal(), 1 - b / (a + b), Guard::Kind::same_value, "test.other_form"}};
     CHECK(validate_kernel(kernel, claims).empty());
     kernel.steps[1].guards[0].alternative = 1 - a / (a + b);
     CHECK(mentions(validate_kernel(kernel, claims), "under its guard"));
@@ -113,4 +118,60 @@ TEST_CASE("A kernel is validated against the claims", "[derive][validate]") {
     kernel.in_claim_terms = {{x, y + 1}};
     CHECK(validate_kernel(kernel, claims).empty());
   }
+}
+
+TEST_CASE("A kernel scaled by powers of two is proven for any exponent", "[derive][validate]") {
+  // a/(b x) on the significands of a, b and x, scaled back by 2^(ka − kb − kx) (scaled_monomial).
+  const std::vector<Claim> claims = {verified("test.quotient", a / (b * x))};
+  const ScaledMonomial scaled = scaled_monomial("quotient", a / (b * x), {a, b, x});
+  Kernel kernel;
+  kernel.name = "quotient";
+  kernel.parameters = {a, b, x};
+  kernel.steps = scaled.steps;
+  kernel.outputs = {scaled.value};
+  kernel.equals = "test.quotient";
+  REQUIRE(kernel.steps.size() == 8);
+  CHECK(kernel.steps[0].name.get_name() == "a_exponent");
+  CHECK(kernel.steps[1].name.get_name() == "scaled_a");
+  CHECK(kernel.steps[6].name.get_name() == "scaled_quotient");
+  CHECK(kernel.steps[7].name.get_name() == "quotient_exponent");
+
+  SECTION("the scaled form equals the claim") { CHECK(validate_kernel(kernel, claims).empty()); }
+  SECTION("an exponent with the wrong sign is caught") {
+    const ex ka = kernel.steps[0].name, kb = kernel.steps[2].name, kx = kernel.steps[4].name;
+    kernel.outputs = {times_power_of_two(kernel.steps[6].name, ka + kb - kx)};
+    CHECK(mentions(validate_kernel(kernel, claims), "differ"));
+  }
+  SECTION("a significand not scaled back is caught") {
+    kernel.outputs = {kernel.steps[6].name};
+    CHECK(mentions(validate_kernel(kernel, claims), "differ"));
+  }
+  SECTION("a significand that is not its number over 2^exponent is caught") {
+    kernel.steps[3].expression = b;
+    CHECK(mentions(validate_kernel(kernel, claims), "differ"));
+  }
+  SECTION("only a monomial of integer degrees can be scaled") {
+    CHECK_THROWS_WITH(scaled_monomial("sum", a + b, {a, b}),
+                      Catch::Contains("not a monomial of integer degree in a"));
+    CHECK_THROWS_WITH(scaled_monomial("root", GiNaC::sqrt(a), {a}), Catch::Contains("integer degree in a"));
+    CHECK_THROWS_WITH(scaled_monomial("power", GiNaC::pow(3, a), {a}),
+                      Catch::Contains("integer degree in a"));
+  }
+}
+
+TEST_CASE("binary_exponent is exact on rationals and held on symbols", "[derive][validate]") {
+  CHECK(binary_exponent(GiNaC::numeric(1)) == 0);
+  CHECK(binary_exponent(GiNaC::numeric(3, 2)) == 0);
+  CHECK(binary_exponent(GiNaC::numeric(2)) == 1);
+  CHECK(binary_exponent(GiNaC::numeric(-7)) == 2);
+  CHECK(binary_exponent(GiNaC::numeric(1, 3)) == -2);
+  CHECK(binary_exponent(GiNaC::numeric(1, 4)) == -2);
+  CHECK(binary_exponent(GiNaC::numeric(0)) == 0);
+  CHECK(binary_exponent(GiNaC::numeric(1).div(GiNaC::numeric(2).power(1074))) == -1074);
+  CHECK(!GiNaC::is_a<GiNaC::numeric>(binary_exponent(a)));
+  // 2^(k + 3) · 2^(−k) resolves to 8 for the same k, to no number for another.
+  const ex k = binary_exponent(a), other = binary_exponent(b);
+  CHECK(GiNaC::normal(resolve_powers_of_two(GiNaC::pow(2, k + 3) * GiNaC::pow(2, -k))) == 8);
+  CHECK(!GiNaC::is_a<GiNaC::numeric>(
+      GiNaC::normal(resolve_powers_of_two(GiNaC::pow(2, k + 3) * GiNaC::pow(2, -other)))));
 }

@@ -1,13 +1,20 @@
 // billiards::collide_with_friction against the impulse equations written out by hand in long double
 // (an independent reference, not the runtime's code path), the conservation laws, the energy, the
-// μ = 0 reduction to collide(..., e) and the published throw of a stun shot (Alciatore, TP A-14).
+// μ = 0 reduction to collide(..., e) and the published throw of a stun shot (Alciatore, TP A-14); the
+// spin kernels over the whole exponent range against long double, and their scaling helpers against
+// std::ilogb and std::ldexp.
 #include <billiards/spin.hpp>
 
 #include <catch2/catch.hpp>
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <limits>
 #include <random>
+#include <type_traits>
+#include <vector>
 
 namespace {
 
@@ -253,4 +260,132 @@ TEMPLATE_TEST_CASE("checked::collide_with_friction rejects bad input, naming the
   const auto plain = billiards::collide_with_friction(good, other, n, Scalar(0.9), Scalar(0.2));
   CHECK(checked.first.velocity == plain.first.velocity);
   CHECK(checked.second.angular_velocity == plain.second.angular_velocity);
+}
+
+// ---- The spin kernels over the whole exponent range (issue 14) --------------------------------------
+
+namespace {
+
+template <typename Scalar>
+using Bits = std::conditional_t<sizeof(Scalar) == 8, std::uint64_t, std::uint32_t>;
+
+// Edge values and random bit patterns (every exponent, subnormals, ±0, ±∞ and NaNs among them).
+template <typename Scalar>
+std::vector<Scalar> every_kind_of(std::uint64_t seed, int random_count) {
+  using limits = std::numeric_limits<Scalar>;
+  std::vector<Scalar> values = {Scalar(0),
+                                Scalar(-0.0),
+                                limits::denorm_min(),
+                                -limits::denorm_min(),
+                                limits::min(),
+                                std::nextafter(limits::min(), Scalar(0)),
+                                Scalar(1),
+                                Scalar(1.5),
+                                -Scalar(3),
+                                limits::max(),
+                                -limits::max(),
+                                limits::infinity(),
+                                -limits::infinity(),
+                                limits::quiet_NaN()};
+  std::mt19937_64 random(seed);
+  for (int i = 0; i < random_count; ++i) {
+    const auto bits = static_cast<Bits<Scalar>>(random());
+    Scalar x;
+    std::memcpy(&x, &bits, sizeof x);
+    values.push_back(x);
+  }
+  return values;
+}
+
+// Log-uniform over the whole positive range, the smallest subnormal to the largest finite number.
+template <typename Scalar>
+Scalar anywhere(std::mt19937_64& random) {
+  using limits = std::numeric_limits<Scalar>;
+  std::uniform_real_distribution<double> exponent(std::log2(static_cast<double>(limits::denorm_min())),
+                                                  std::log2(static_cast<double>(limits::max())));
+  return std::clamp(static_cast<Scalar>(std::exp2(exponent(random))), limits::denorm_min(), limits::max());
+}
+
+// Whether `computed` is `exact` (long double, whose exponent range holds every product of these
+// inputs) correctly rounded to Scalar within `ulps` relative ULP, the unit floored at the smallest
+// subnormal; where the exact value rounds to ±∞ in Scalar, ±∞.
+template <typename Scalar>
+bool within_ulps(Scalar computed, long double exact, long double ulps) {
+  using limits = std::numeric_limits<Scalar>;
+  const long double overflow =
+      static_cast<long double>(limits::max()) + std::ldexp(1.0L, limits::max_exponent - 1 - limits::digits);
+  if (std::fabs(exact) >= overflow) return std::isinf(computed) && (computed > 0) == (exact > 0);
+  if (!std::isfinite(computed)) return false;
+  const long double unit = std::max(static_cast<long double>(limits::epsilon()) * std::fabs(exact),
+                                    static_cast<long double>(limits::denorm_min()));
+  return std::fabs(static_cast<long double>(computed) - exact) <= ulps * unit;
+}
+
+}  // namespace
+
+TEMPLATE_TEST_CASE("kernels::spin::binary_exponent and times_power_of_two are std::ilogb and std::ldexp",
+                   "[runtime][spin]", float, double) {
+  using Scalar = TestType;
+  namespace spin = billiards::kernels::spin;
+  std::mt19937_64 random(29);
+  std::uniform_int_distribution<int> exponent(-2 * std::numeric_limits<Scalar>::max_exponent - 60,
+                                              2 * std::numeric_limits<Scalar>::max_exponent + 60);
+  for (const Scalar x : every_kind_of<Scalar>(17, 3000)) {
+    INFO("x = " << x);
+    const bool ordinary = std::isfinite(x) && x != 0;
+    CHECK(spin::binary_exponent(x) == (ordinary ? Scalar(std::ilogb(x)) : Scalar(0)));
+    if (ordinary)
+      CHECK(std::ldexp(x, -std::ilogb(x)) == spin::times_power_of_two(x, -spin::binary_exponent(x)));
+    for (const int k : {0, 1, -1, 4096, -4096, 5000, -5000, exponent(random), exponent(random)}) {
+      INFO("k = " << k);
+      const Scalar expected = std::ldexp(x, k), scaled = spin::times_power_of_two(x, Scalar(k));
+      if (std::isnan(x)) {
+        CHECK(std::isnan(scaled));
+      } else {
+        CHECK(std::memcmp(&expected, &scaled, sizeof expected) == 0);  // the same bits, signed zeros too
+      }
+    }
+  }
+  // A NaN exponent is clamped, not converted (which would be undefined): 1 · 2^−4096 is +0.
+  CHECK(spin::times_power_of_two(Scalar(1), std::numeric_limits<Scalar>::quiet_NaN()) == Scalar(0));
+}
+
+TEMPLATE_TEST_CASE("The spin kernels over the whole exponent range, against long double", "[runtime][spin]",
+                   float, double) {
+  using Scalar = TestType;
+  using L = long double;
+  namespace spin = billiards::kernels::spin;
+  std::mt19937_64 random(31);
+  std::uniform_real_distribution<double> unit(0, 1);
+  for (int i = 0; i < 20000; ++i) {
+    const Scalar a = anywhere<Scalar>(random), b = anywhere<Scalar>(random), c = anywhere<Scalar>(random),
+                 d = anywhere<Scalar>(random), e = Scalar(unit(random));
+    const L la = a, lb = b, lc = c, ld = d, le = e;
+    INFO("a = " << a << ", b = " << b << ", c = " << c << ", d = " << d << ", e = " << e);
+    // The formulas as the audit states them (sliding.slide_time, rolling.stop_time, spinning.stop_time,
+    // kernel.spin_change_per_impulse, kernel.spin_change, friction.normal_impulse, k for solid spheres).
+    CHECK(within_ulps(spin::slide_time(a, b, c), 2 * la / (7 * lb * lc), 3));
+    CHECK(within_ulps(spin::roll_time(a, b, c), la / (lb * lc), 3));
+    CHECK(within_ulps(spin::spin_time(a, b, c, d), 2 * lb * la / (5 * lc * ld), 3));
+    CHECK(within_ulps(spin::spin_change_per_impulse(a, b), 5 / (2 * la * lb), 3));
+    CHECK(within_ulps(spin::spin_change(a, b), 5 * la / (2 * lb), 3));
+    CHECK(within_ulps(spin::normal_impulse(a, b, e, -c), (1 + le) * (la * lb / (la + lb)) * lc, 4));
+    CHECK(within_ulps(spin::tangential_inverse_effective_mass(a, b), 3.5L * (1 / la + 1 / lb), 3));
+    // kernel.tangential_velocity_change: j/m1 and j/m2 for masses a, b, approach −c, slip d, μ ∈ [0, 1).
+    const Scalar mu = Scalar(unit(random));
+    const L bound = std::min((1 + le) * L(mu) * lc, 2 * ld / 7);
+    const auto change = spin::tangential_velocity_change(a, b, e, mu, -c, d);
+    CHECK(within_ulps(change.first, bound * lb / (la + lb), 4));
+    CHECK(within_ulps(change.second, bound * la / (la + lb), 4));
+  }
+  // Found by the accuracy tool: a bound of 8e34 over a light ball of 2e-4 overflowed float before the
+  // small-mass form multiplied by the other mass, 3e-43.
+  if constexpr (std::is_same_v<Scalar, float>) {
+    const float m1 = 0.000188278573f, m2 = 3.33509035e-43f, e = 0.874731421f, mu = 0.842392862f,
+                approach = -1.04723191e+35f, slip = 2.92764817e+35f;
+    const auto change = spin::tangential_velocity_change(m1, m2, e, mu, approach, slip);
+    const L bound = std::min((1 + L(e)) * L(mu) * -L(approach), 2 * L(slip) / 7);
+    CHECK(within_ulps(change.first, bound * L(m2) / (L(m1) + L(m2)), 4));
+    CHECK(within_ulps(change.second, bound * L(m1) / (L(m1) + L(m2)), 4));
+  }
 }

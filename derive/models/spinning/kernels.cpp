@@ -3,6 +3,9 @@
 #include "models/spinning/steps.hpp"
 
 #include "core/named_constants.hpp"
+#include "core/powers_of_two.hpp"
+
+#include <stdexcept>
 
 namespace billiards::derive::spinning {
 
@@ -129,30 +132,57 @@ void kernel_claims(Recorder& record, const Contact& c, const Impulse& impulse, c
 std::vector<Kernel> spin_kernels(const Cloth& cloth) {
   const Symbols& s = symbols();
   using Kind = Guard::Kind;
+  // A phase's duration, a monomial in its speed, friction, gravity (and radius) over the whole exponent
+  // range: on their significands, scaled back once (scaled_monomial), and `frictionless` where the
+  // friction is zero.
+  const GiNaC::symbol duration("duration");
+  const auto timed = [&](const ex& time, const std::vector<ex>& parameters, const Guard& frictionless) {
+    ScaledMonomial scaled = scaled_monomial("duration", time, parameters);
+    scaled.steps.push_back({duration, scaled.value, {frictionless}});
+    return scaled.steps;
+  };
   std::vector<Kernel> kernels;
-  kernels.push_back({
-      .name = "tangential_inverse_effective_mass",
-      .brief = "The tangential inverse effective mass k = (7/2)(1/m1 + 1/m2) of a contact between two solid "
-               "spheres: a tangential impulse j changes the tangential slip by k j.",
-      .parameters = {s.m1, s.m2},
-      .outputs = {numeric(7, 2) * (1 / s.m1 + 1 / s.m2)},
-      .equals = "impulse.tangential_inverse_effective_mass_solid_spheres",
-      .claims = {"impulse.decoupled"},
-  });
   {
+    // 3.5/m1 + 3.5/m2: each term rounds once and neither exceeds the sum, so nothing overflows that the
+    // result does not (7/m1 before a halving would, for m1 just above the smallest normal number).
+    const GiNaC::symbol first("first_term"), second("second_term");
+    kernels.push_back({
+        .name = "tangential_inverse_effective_mass",
+        .brief =
+            "The tangential inverse effective mass k = (7/2)(1/m1 + 1/m2) of a contact between two solid "
+            "spheres: a tangential impulse j changes the tangential slip by k j.",
+        .parameters = {s.m1, s.m2},
+        .steps = {{first, numeric(7, 2) / s.m1}, {second, numeric(7, 2) / s.m2}},
+        .outputs = {first + second},
+        .equals = "impulse.tangential_inverse_effective_mass_solid_spheres",
+        .claims = {"impulse.decoupled"},
+    });
+  }
+  {
+    // J_n = −(1 + e) m s/(1 + m/M), m the lighter mass and M the heavier: the product m s on the
+    // significands of m and s (binary_exponent), scaled back once, so that neither a subnormal mass nor
+    // a huge speed loses digits or overflows before the result does.
     const GiNaC::realsymbol speed("relative_normal_speed");
-    const GiNaC::symbol reduced("reduced_mass");
+    const GiNaC::symbol lighter("lighter_mass"), heavier("heavier_mass"), ratio("mass_ratio");
+    const auto heavier_first = [&](const ex& alternative) {
+      return Guard{s.m2 < s.m1, alternative, Kind::same_value, "friction.normal_impulse"};
+    };
+    const ScaledMonomial product =
+        scaled_monomial("impulse", lighter * speed / (1 + ratio), {lighter, speed});
+    std::vector<KernelStep> steps = {{lighter, s.m1, {heavier_first(s.m2)}},
+                                     {heavier, s.m2, {heavier_first(s.m1)}},
+                                     {ratio, lighter / heavier}};
+    steps.insert(steps.end(), product.steps.begin(), product.steps.end());
     kernels.push_back({
         .name = "normal_impulse",
         .brief = "The normal impulse J_n = −(1 + e) μ_red (v2 − v1)·n, μ_red = m1 m2/(m1 + m2), from the "
                  "relative normal speed (v2 − v1)·n (negative for approaching balls). The reduced mass is "
                  "taken as m/(1 + m/M) with m the smaller mass, so neither the product nor the sum of the "
-                 "masses is formed.",
+                 "masses is formed, and m times the speed on their significands, scaled back once.",
         .parameters = {s.m1, s.m2, s.restitution, speed},
-        .steps = {{reduced,
-                   s.m1 / (1 + s.m1 / s.m2),
-                   {{s.m2 < s.m1, s.m2 / (1 + s.m2 / s.m1), Kind::same_value, "friction.normal_impulse"}}}},
-        .outputs = {-(1 + s.restitution) * speed * reduced},
+        .steps = steps,
+        // (1 + e) ∈ [1, 2] times the significand, before the scaling back: as printed.
+        .outputs = {-(1 + s.restitution) * product.value},
         .equals = "friction.normal_impulse",
         .in_claim_terms = {{speed, s.normal_slip}},
     });
@@ -181,57 +211,79 @@ std::vector<Kernel> spin_kernels(const Cloth& cloth) {
   {
     const GiNaC::realsymbol speed("relative_normal_speed");
     const GiNaC::possymbol slip("tangential_slip");
-    const GiNaC::symbol first("first_fraction"), second("second_fraction"), sticking("sticking_change"),
-        coulomb("coulomb_speed"), sliding("sliding_change"), bound("bound"), per_mass("bound_per_total_mass"),
-        first_factor("first_factor"), first_multiplier("first_multiplier"), second_factor("second_factor"),
-        second_multiplier("second_multiplier"), change1("first"), change2("second");
+    const GiNaC::symbol first_ratio("first_mass_ratio"), second_ratio("second_mass_ratio"),
+        first("first_fraction"), second("second_fraction"), sticking("sticking_change"),
+        coulomb("coulomb_speed"), sliding("sliding_change"), bound("bound"), change1("first"),
+        change2("second");
     // Where a fraction falls below the normal range (a mass ratio beyond 2^126 in float) the heavy
-    // ball's change is bound/(m1 + m2) times the light mass, as the paper's model's small-mass form:
-    // the product rounds once, even into the subnormal range, and the sum cannot overflow there.
+    // ball's change is the bound times m_light/m_heavy over 1 + m_light/m_heavy: formed on the
+    // significands of the bound and the masses and scaled back once (scaled_monomial), so that neither
+    // a subnormal ratio loses digits nor a huge bound over a mass below 1 overflows before the result.
+    // Ball 1's form is built first; ball 2's reuses its exponents and significands.
+    const ScaledMonomial light_first = scaled_monomial(
+        "first_small_mass_change", bound * s.m2 / (s.m1 * (1 + second_ratio)), {bound, s.m1, s.m2});
+    const auto named = [&](const std::string& name) {
+      for (const KernelStep& step : light_first.steps) {
+        if (step.name.get_name() == name) return step.name;
+      }
+      throw std::logic_error("tangential_velocity_change: no step " + name);
+    };
+    const GiNaC::symbol light_second("scaled_second_small_mass_change"),
+        light_second_exponent("second_small_mass_change_exponent");
+    std::vector<KernelStep> steps = {
+        {first_ratio, s.m1 / s.m2},
+        {second_ratio, s.m2 / s.m1},
+        {first, 1 / (1 + first_ratio)},
+        {second, 1 / (1 + second_ratio)},
+        {sticking, numeric(2, 7) * slip},
+        // μ (v2 − v1)·n first: (1 + e) ∈ [1, 2] then cannot overflow a product the
+        // result stays below, as (1 + e) μ could for a huge μ beside a tiny approach.
+        {coulomb, s.friction * speed},
+        {sliding, -(1 + s.restitution) * coulomb},
+        {bound,
+         sticking,
+         {{sliding < sticking, sliding, Kind::piecewise, "kernel.tangential_velocity_change"}}}};
+    steps.insert(steps.end(), light_first.steps.begin(), light_first.steps.end());
+    steps.push_back({light_second,
+                     named("scaled_bound") * named("scaled_m1") / (named("scaled_m2") * (1 + first_ratio))});
+    steps.push_back(
+        {light_second_exponent, named("bound_exponent") + named("m1_exponent") - named("m2_exponent")});
     const auto tiny = [](const GiNaC::symbol& fraction, const ex& alternative) {
       return Guard{fraction < smallest_normal(), alternative, Kind::same_value,
                    "kernel.tangential_velocity_change"};
     };
+    steps.push_back({change1, first * bound, {tiny(first, light_first.value)}});
+    steps.push_back(
+        {change2, second * bound, {tiny(second, times_power_of_two(light_second, light_second_exponent))}});
     kernels.push_back({
         .name = "tangential_velocity_change",
-        .brief = "The changes j/m1 and j/m2 of the two balls' velocities along û_t (ball 1 +, ball 2 −) that "
-                 "the tangential impulse j = min(μ J_n, |u_t|/k) makes, as min(−(1 + e) μ (v2 − v1)·n, "
-                 "2|u_t|/7)/(1 + m1/m2) and /(1 + m2/m1): only the mass ratio enters, so no mass's size can "
-                 "overflow it; beyond the normal range of a fraction the heavy ball's change is the bound "
-                 "over m1 + m2 times the light mass.",
+        .brief =
+            "The changes j/m1 and j/m2 of the two balls' velocities along û_t (ball 1 +, ball 2 −) that "
+            "the tangential impulse j = min(μ J_n, |u_t|/k) makes, as min(−(1 + e) μ (v2 − v1)·n, "
+            "2|u_t|/7)/(1 + m1/m2) and /(1 + m2/m1): only the mass ratio enters, so no mass's size can "
+            "overflow it; beyond the normal range of a fraction the heavy ball's change is the bound "
+            "times m_light/m_heavy over 1 + m_light/m_heavy, formed on significands and scaled back once.",
         .parameters = {s.m1, s.m2, s.restitution, s.friction, speed, slip},
-        .steps = {{first, 1 / (1 + s.m1 / s.m2)},
-                  {second, 1 / (1 + s.m2 / s.m1)},
-                  {sticking, numeric(2, 7) * slip},
-                  // μ (v2 − v1)·n first: (1 + e) ∈ [1, 2] then cannot overflow a product the result
-                  // stays below, as (1 + e) μ could for a huge μ beside a tiny approach.
-                  {coulomb, s.friction * speed},
-                  {sliding, -(1 + s.restitution) * coulomb},
-                  {bound,
-                   sticking,
-                   {{sliding < sticking, sliding, Kind::piecewise, "kernel.tangential_velocity_change"}}},
-                  {per_mass, bound / (s.m1 + s.m2)},
-                  {first_factor, first, {tiny(first, per_mass)}},
-                  {first_multiplier, bound, {tiny(first, s.m2)}},
-                  {change1, first_factor * first_multiplier},
-                  {second_factor, second, {tiny(second, per_mass)}},
-                  {second_multiplier, bound, {tiny(second, s.m1)}},
-                  {change2, second_factor * second_multiplier}},
+        .steps = steps,
         .outputs = {change1, change2},
         .equals = "kernel.tangential_velocity_change",
         .in_claim_terms = {{speed, s.normal_slip}, {slip, s.tangential_slip}},
         .claims = {"kernel.tangential_velocity_change_sliding_condition", "friction.sticking_impulse",
                    "friction.sliding_never_reverses"},
+        .names = {{"first_denominator", 1 + first_ratio}, {"second_denominator", 1 + second_ratio}},
     });
   }
   {
     const GiNaC::possymbol change("velocity_change"), radius("radius");
+    const GiNaC::symbol per_radius("change_per_radius");
     kernels.push_back({
         .name = "spin_change",
         .brief = "The spin change 5 Δv/(2R) along n × û_t of a ball of radius R whose velocity a tangential "
                  "impulse changes by Δv (tangential_velocity_change's first for ball 1, second for ball 2).",
         .parameters = {change, radius},
-        .outputs = {5 * change / (2 * radius)},
+        // Δv/R first, then 2.5 times it: 5 Δv would overflow before the result does.
+        .steps = {{per_radius, change / radius}},
+        .outputs = {numeric(5, 2) * per_radius},
         .equals = "kernel.spin_change",
         .in_claim_terms = {{change, s.velocity_change}, {radius, s.R1}},
         .claims = {"kernel.spin_change_second_ball"},
@@ -239,12 +291,15 @@ std::vector<Kernel> spin_kernels(const Cloth& cloth) {
   }
   {
     const GiNaC::possymbol mass("mass"), radius("radius");
+    const ScaledMonomial per_impulse =
+        scaled_monomial("per_impulse", numeric(5, 2) / (mass * radius), {mass, radius});
     kernels.push_back({
         .name = "spin_change_per_impulse",
         .brief = "R/I = 5/(2 m R) for a solid sphere of mass m and radius R: a tangential impulse j against "
                  "the slip û_t turns its spin by (5 j/(2 m R)) (n × û_t).",
         .parameters = {mass, radius},
-        .outputs = {numeric(5, 2) / (mass * radius)},
+        .steps = per_impulse.steps,
+        .outputs = {per_impulse.value},
         .equals = "kernel.spin_change_per_impulse",
         .in_claim_terms = {{mass, s.m1}, {radius, s.R1}},
         .claims = {"kernel.spin_change_per_impulse_second_ball"},
@@ -252,50 +307,47 @@ std::vector<Kernel> spin_kernels(const Cloth& cloth) {
   }
   {
     const GiNaC::possymbol slip("slip_speed"), mu("sliding_friction"), gravity("gravity");
-    const GiNaC::symbol time("duration");
     kernels.push_back({
         .name = "slide_time",
         .brief = "The time t_s = 2 |u0|/(7 μ_s g) a ball slides on the cloth before it rolls, from its slip "
                  "speed |u0|; +∞ without sliding friction.",
         .parameters = {slip, mu, gravity},
-        .steps = {{time,
-                   cloth.slide_time.subs(lst{s.slip_speed == slip, s.sliding_friction == mu, s.g == gravity}),
-                   {{mu <= 0, infinity(), Kind::piecewise, "sliding.frictionless_slides_on"}}}},
-        .outputs = {time},
+        .steps = timed(
+            cloth.slide_time.subs(lst{s.slip_speed == slip, s.sliding_friction == mu, s.g == gravity}),
+            {slip, mu, gravity}, {mu <= 0, infinity(), Kind::piecewise, "sliding.frictionless_slides_on"}),
+        .outputs = {duration},
         .equals = "sliding.slide_time",
         .in_claim_terms = {{slip, s.slip_speed}, {mu, s.sliding_friction}, {gravity, s.g}},
     });
   }
   {
     const GiNaC::possymbol speed("speed"), mu("rolling_friction"), gravity("gravity");
-    const GiNaC::symbol time("duration");
     kernels.push_back({
         .name = "roll_time",
         .brief = "The time t_r = |v0|/(μ_r g) a rolling ball takes to stop, from its speed |v0|; +∞ without "
                  "rolling resistance.",
         .parameters = {speed, mu, gravity},
-        .steps = {{time,
-                   cloth.roll_time.subs(lst{s.ball_speed == speed, s.rolling_friction == mu, s.g == gravity}),
-                   {{mu <= 0, infinity(), Kind::piecewise, "rolling.frictionless_rolls_on"}}}},
-        .outputs = {time},
+        .steps = timed(
+            cloth.roll_time.subs(lst{s.ball_speed == speed, s.rolling_friction == mu, s.g == gravity}),
+            {speed, mu, gravity}, {mu <= 0, infinity(), Kind::piecewise, "rolling.frictionless_rolls_on"}),
+        .outputs = {duration},
         .equals = "rolling.stop_time",
         .in_claim_terms = {{speed, s.ball_speed}, {mu, s.rolling_friction}, {gravity, s.g}},
     });
   }
   {
     const GiNaC::possymbol spin("spin_speed"), radius("radius"), mu("spinning_friction"), gravity("gravity");
-    const GiNaC::symbol time("duration");
     kernels.push_back({
         .name = "spin_time",
         .brief =
             "The time t_z = 2 R |ω_z|/(5 μ_sp g) until the spin about ẑ stops, from |ω_z| and the radius "
             "R; +∞ without spinning friction.",
         .parameters = {spin, radius, mu, gravity},
-        .steps = {{time,
-                   cloth.spin_time.subs(
-                       lst{s.spin == spin, s.R == radius, s.spinning_friction == mu, s.g == gravity}),
-                   {{mu <= 0, infinity(), Kind::piecewise, "spinning.frictionless_spins_on"}}}},
-        .outputs = {time},
+        .steps = timed(cloth.spin_time.subs(
+                           lst{s.spin == spin, s.R == radius, s.spinning_friction == mu, s.g == gravity}),
+                       {spin, radius, mu, gravity},
+                       {mu <= 0, infinity(), Kind::piecewise, "spinning.frictionless_spins_on"}),
+        .outputs = {duration},
         .equals = "spinning.stop_time",
         .in_claim_terms = {{spin, s.spin}, {radius, s.R}, {mu, s.spinning_friction}, {gravity, s.g}},
     });
