@@ -22,15 +22,24 @@ const GiNaC::symbol& plain_mass_high() {
   return constant;
 }
 
-bool is_named_constant(const GiNaC::ex& e) {
-  return e.is_equal(smallest_normal()) || e.is_equal(infinity()) || e.is_equal(plain_mass_low()) ||
-         e.is_equal(plain_mass_high());
+const GiNaC::symbol& moderate_low() {
+  static const GiNaC::symbol constant("moderate_low", "x_{\\text{low}}");
+  return constant;
 }
+
+const GiNaC::symbol& moderate_high() {
+  static const GiNaC::symbol constant("moderate_high", "x_{\\text{high}}");
+  return constant;
+}
+
+bool is_named_constant(const GiNaC::ex& e) { return e.is_equal(infinity()) || positive_finite_rank(e) >= 0; }
 
 int positive_finite_rank(const GiNaC::ex& e) {
   if (e.is_equal(smallest_normal())) return 0;
   if (e.is_equal(plain_mass_low())) return 1;
-  if (e.is_equal(plain_mass_high())) return 2;
+  if (e.is_equal(moderate_low())) return 2;
+  if (e.is_equal(moderate_high())) return 3;
+  if (e.is_equal(plain_mass_high())) return 4;
   return -1;
 }
 

@@ -18,12 +18,20 @@ const GiNaC::symbol& infinity();
 const GiNaC::symbol& plain_mass_low();
 const GiNaC::symbol& plain_mass_high();
 
+/// The moderate range [2^−(E/4 − 2), 2^(E/4 − 2)] of Scalar, E = std::numeric_limits<Scalar>::max_exponent
+/// (2^−254 to 2^254 in double, 2^−30 to 2^30 in float): a product or quotient of four numbers in it, times
+/// 2/7 or 5/2, is a normal number, so a monomial kernel's plain form keeps every digit there. Printed as
+/// moderate_low<Scalar>() and moderate_high<Scalar>().
+const GiNaC::symbol& moderate_low();
+const GiNaC::symbol& moderate_high();
+
 /// True for a symbol that is one of the named constants above.
 bool is_named_constant(const GiNaC::ex& e);
 
 /// For the named constants that are positive and finite in float and double, their place in
 /// increasing order: smallest_normal 0 (2^−126, 2^−1022), plain_mass_low 1 (2^−61, 2^−509),
-/// plain_mass_high 2 (2^61, 2^509); −1 for anything else (+∞ included).
+/// moderate_low 2 (2^−30, 2^−254), moderate_high 3 (2^30, 2^254), plain_mass_high 4 (2^61, 2^509); −1
+/// for anything else (+∞ included).
 int positive_finite_rank(const GiNaC::ex& e);
 
 }  // namespace billiards::derive

@@ -280,14 +280,22 @@ std::string predicate_function(const Kernel& kernel) {
         " On the host, for IEEE float and double (orders_as_bits), it compares bits: the largest "
         "bits_above of the low end at most the high end's.";
     const std::string low = print(interval->first, Notation::cpp);
-    std::string largest = "bits_above(" + read[0] + ", low)";
-    for (std::size_t i = 1; i < read.size(); ++i)
-      largest = "larger(" + largest + ", bits_above(" + read[i] + ", low))";
+    // Two parameters in one expression; more by a running largest, one line each.
+    std::string largest = "bits_above(" + read[0] + ", low)", running;
+    if (read.size() > 2) {
+      running = "    auto largest = " + largest + ";\n";
+      for (std::size_t i = 1; i < read.size(); ++i)
+        running += "    largest = larger(largest, bits_above(" + read[i] + ", low));\n";
+      largest = "largest";
+    } else {
+      for (std::size_t i = 1; i < read.size(); ++i)
+        largest = "larger(" + largest + ", bits_above(" + read[i] + ", low))";
+    }
     const std::string head = "    return " + largest + " <=",
                       tail = "bits_above(" + print(interval->second, Notation::cpp) + ", low);";
     bits =
         "#if !defined(__CUDA_ARCH__)\n  if constexpr (orders_as_bits<Scalar>()) {\n    const Scalar low = " +
-        low + ";\n" + head +
+        low + ";\n" + running + head +
         (head.size() + 1 + tail.size() <= column_limit ? " " : "\n" + std::string(11, ' ')) + tail +
         "\n  }\n#endif\n";
   }
@@ -627,9 +635,16 @@ std::string kernels_header(const Derivation& derivation, const std::string& audi
       << "}\n"
       << float_and_double("infinity", "+∞ in float.", "__builtin_huge_valf()", "+∞ in double.",
                           "__builtin_huge_val()");
-  const bool plain_range = std::any_of(derivation.kernels.begin(), derivation.kernels.end(),
-                                       [](const Kernel& k) { return k.fast_path || !k.domain.empty(); });
-  if (plain_range) {
+  // Each range's ends only where a fast path's conditions or a kernel's domain read them.
+  const auto reads_constant = [&](const ex& constant) {
+    return std::any_of(derivation.kernels.begin(), derivation.kernels.end(), [&](const Kernel& k) {
+      const auto has = [&](const ex& condition) { return condition.has(constant); };
+      return std::any_of(k.domain.begin(), k.domain.end(), has) ||
+             (k.fast_path &&
+              std::any_of(k.fast_path->conditions.begin(), k.fast_path->conditions.end(), has));
+    });
+  };
+  if (reads_constant(plain_mass_low()) || reads_constant(plain_mass_high())) {
     out << "\n/// The plain form's mass range [4 √x_min, 1/(4 √x_min)], x_min = `smallest_normal<Scalar>()`: "
            "2^−509 to\n"
         << "/// 2^509 in double, 2^−61 to 2^61 in float. Within it m1 + m2, (1 + e)/(m1 + m2) and each\n"
@@ -646,6 +661,27 @@ std::string kernels_header(const Derivation& derivation, const std::string& audi
         << "template <typename Scalar>\n"
         << "BILLIARDS_HOST_DEVICE constexpr Scalar plain_mass_high() noexcept {\n"
         << "  return Scalar(1) / plain_mass_low<Scalar>();\n"
+        << "}\n";
+  }
+  if (reads_constant(moderate_low()) || reads_constant(moderate_high())) {
+    out << "\n/// The moderate range [2^−(E/4 − 2), 2^(E/4 − 2)], E = "
+           "`std::numeric_limits<Scalar>::max_exponent`: "
+           "2^−254\n"
+        << "/// to 2^254 in double, 2^−30 to 2^30 in float. A product or quotient of four numbers in it, "
+           "times "
+           "2/7 or\n"
+        << "/// 5/2, is a normal number, so a monomial kernel's plain form keeps every digit there.\n"
+        << "template <typename Scalar>\n"
+        << "BILLIARDS_HOST_DEVICE constexpr Scalar moderate_low() noexcept {\n"
+        << "  Scalar low = Scalar(1);\n"
+        << "  for (int k = 0; k < std::numeric_limits<Scalar>::max_exponent / 4 - 2; ++k) low /= Scalar(2);\n"
+        << "  return low;\n"
+        << "}\n"
+        << float_and_double("moderate_low", "2^−30 in float.", "0x1p-30f", "2^−254 in double.", "0x1p-254")
+        << "/// `1/moderate_low<Scalar>()`, exactly (a power of two).\n"
+        << "template <typename Scalar>\n"
+        << "BILLIARDS_HOST_DEVICE constexpr Scalar moderate_high() noexcept {\n"
+        << "  return Scalar(1) / moderate_low<Scalar>();\n"
         << "}\n";
   }
   if (reads_bits) {

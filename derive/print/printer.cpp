@@ -368,6 +368,8 @@ std::string print_cpp_leaf(const ex& e) {
   if (e.is_equal(infinity())) return "infinity<Scalar>()";
   if (e.is_equal(plain_mass_low())) return "plain_mass_low<Scalar>()";
   if (e.is_equal(plain_mass_high())) return "plain_mass_high<Scalar>()";
+  if (e.is_equal(moderate_low())) return "moderate_low<Scalar>()";
+  if (e.is_equal(moderate_high())) return "moderate_high<Scalar>()";
   if (GiNaC::is_a<GiNaC::symbol>(e)) return GiNaC::ex_to<GiNaC::symbol>(e).get_name();
   if (GiNaC::is_a<GiNaC::function>(e) && GiNaC::ex_to<GiNaC::function>(e).get_name() == "binary_exponent") {
     // The emitted header defines binary_exponent(): the exponent as a Scalar, for host and device.

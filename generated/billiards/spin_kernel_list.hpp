@@ -4,7 +4,7 @@
 // (throw after Alciatore, TP A-14), listed by the derivation, so that tests call, measure and compile each
 // one without a list kept by hand.
 //
-// Fingerprint: fnv1a64:cd6e18184c5ffc6c (of this header and the audit)
+// Fingerprint: fnv1a64:bd2fb8b9b0dcd122 (of this header and the audit)
 #pragma once
 
 #include <billiards/spin_kernels.hpp>
@@ -49,12 +49,24 @@ std::vector<Scalar> call(const std::string& name, const Arguments& at) {
     const auto r = spin_change_per_impulse(at("mass"), at("radius"));
     return {r};
   }
+  if (name == "plain_slide_time") {
+    const auto r = plain_slide_time(at("slip_speed"), at("sliding_friction"), at("gravity"));
+    return {r};
+  }
   if (name == "slide_time") {
     const auto r = slide_time(at("slip_speed"), at("sliding_friction"), at("gravity"));
     return {r};
   }
+  if (name == "plain_roll_time") {
+    const auto r = plain_roll_time(at("speed"), at("rolling_friction"), at("gravity"));
+    return {r};
+  }
   if (name == "roll_time") {
     const auto r = roll_time(at("speed"), at("rolling_friction"), at("gravity"));
+    return {r};
+  }
+  if (name == "plain_spin_time") {
+    const auto r = plain_spin_time(at("spin_speed"), at("radius"), at("spinning_friction"), at("gravity"));
     return {r};
   }
   if (name == "spin_time") {
@@ -78,8 +90,11 @@ BILLIARDS_HOST_DEVICE Scalar sum_of_every_kernel(const Scalar* a) noexcept {
   }
   sum += spin_change(a[0], a[1]);
   sum += spin_change_per_impulse(a[0], a[1]);
+  sum += plain_slide_time(a[0], a[1], a[2]);
   sum += slide_time(a[0], a[1], a[2]);
+  sum += plain_roll_time(a[0], a[1], a[2]);
   sum += roll_time(a[0], a[1], a[2]);
+  sum += plain_spin_time(a[0], a[1], a[2], a[3]);
   sum += spin_time(a[0], a[1], a[2], a[3]);
   return sum;
 }

@@ -5,7 +5,7 @@
 // verified claim of the derivation audit before it was printed, and names the claims it implements. They take
 // masses and dot products, so they serve vectors of any dimension and need no Eigen.
 //
-// Fingerprint: fnv1a64:ec49265036ca9c16 (of this header and the audit)
+// Fingerprint: fnv1a64:8bfda20746acb101 (of this header and the audit)
 #pragma once
 
 #include <bit>
@@ -77,6 +77,31 @@ BILLIARDS_HOST_DEVICE constexpr double infinity<double>() noexcept {
   return __builtin_huge_val();
 }
 
+/// The moderate range [2^−(E/4 − 2), 2^(E/4 − 2)], E = `std::numeric_limits<Scalar>::max_exponent`: 2^−254
+/// to 2^254 in double, 2^−30 to 2^30 in float. A product or quotient of four numbers in it, times 2/7 or
+/// 5/2, is a normal number, so a monomial kernel's plain form keeps every digit there.
+template <typename Scalar>
+BILLIARDS_HOST_DEVICE constexpr Scalar moderate_low() noexcept {
+  Scalar low = Scalar(1);
+  for (int k = 0; k < std::numeric_limits<Scalar>::max_exponent / 4 - 2; ++k) low /= Scalar(2);
+  return low;
+}
+/// 2^−30 in float.
+template <>
+BILLIARDS_HOST_DEVICE constexpr float moderate_low<float>() noexcept {
+  return 0x1p-30f;
+}
+/// 2^−254 in double.
+template <>
+BILLIARDS_HOST_DEVICE constexpr double moderate_low<double>() noexcept {
+  return 0x1p-254;
+}
+/// `1/moderate_low<Scalar>()`, exactly (a power of two).
+template <typename Scalar>
+BILLIARDS_HOST_DEVICE constexpr Scalar moderate_high() noexcept {
+  return Scalar(1) / moderate_low<Scalar>();
+}
+
 /// Whether Scalar is IEEE float or double, whose positive numbers order as their bits.
 template <typename Scalar>
 constexpr bool orders_as_bits() noexcept {
@@ -85,6 +110,21 @@ constexpr bool orders_as_bits() noexcept {
 /// The unsigned integer type of Scalar's width, for IEEE float and double.
 template <typename Scalar>
 using BitsOf = std::conditional_t<sizeof(Scalar) == 4, std::uint32_t, std::uint64_t>;
+/// The bits of x minus those of low, as an unsigned integer of Scalar's width, for IEEE float and
+/// double (orders_as_bits). For finite 0 < low ≤ high, low ≤ x ≤ high exactly when
+/// bits_above(x, low) ≤ bits_above(high, low): positive numbers order as their bits, and an x below
+/// low (+0 included) wraps around, and a negative x (−0 included), +∞ and a NaN lie above it.
+/// Host code; on the device the predicates compare the numbers.
+template <typename Scalar>
+constexpr auto bits_above(Scalar x, Scalar low) noexcept {
+  using Bits = BitsOf<Scalar>;
+  return static_cast<Bits>(std::bit_cast<Bits>(x) - std::bit_cast<Bits>(low));
+}
+/// The larger of two unsigned integers.
+template <typename Bits>
+constexpr Bits larger(Bits a, Bits b) noexcept {
+  return a > b ? a : b;
+}
 
 /// The exponent k of x = f · 2^k, 1 ≤ |f| < 2: ⌊log2 |x|⌋ for a finite nonzero x, subnormals included,
 /// as a Scalar (an integer, exact); 0 for ±0, ±∞ and NaN, which times_power_of_two(x, −k) then leaves
@@ -262,6 +302,42 @@ BILLIARDS_HOST_DEVICE Scalar spin_change_per_impulse(Scalar mass, Scalar radius)
   return times_power_of_two(scaled_per_impulse, per_impulse_exponent);
 }
 
+/// The same as slide_time where every input lies in [moderate_low, moderate_high]
+/// (slide_time_is_moderate), where the plain form keeps every digit without scaling. slide_time takes
+/// it there itself.
+///
+/// Proven equal to the derived expression of the audit claim `sliding.slide_time` before it was
+/// printed; also implements `sliding.frictionless_slides_on`.
+///
+/// Total ops: 4
+template <typename Scalar>
+BILLIARDS_HOST_DEVICE constexpr Scalar plain_slide_time(Scalar slip_speed, Scalar sliding_friction,
+                                                        Scalar gravity) noexcept {
+  Scalar duration = slip_speed / gravity / sliding_friction / Scalar(3.5);
+  if (sliding_friction <= Scalar(0)) duration = infinity<Scalar>();
+  return duration;
+}
+
+/// True when every input of slide_time lies in [moderate_low<Scalar>(), moderate_high<Scalar>()], where
+/// it takes its plain form (false for 0, +∞ and NaN). On the host, for IEEE float and double
+/// (orders_as_bits), it compares bits: the largest bits_above of the low end at most the high end's.
+template <typename Scalar>
+BILLIARDS_HOST_DEVICE constexpr bool slide_time_is_moderate(Scalar slip_speed, Scalar sliding_friction,
+                                                            Scalar gravity) noexcept {
+#if !defined(__CUDA_ARCH__)
+  if constexpr (orders_as_bits<Scalar>()) {
+    const Scalar low = moderate_low<Scalar>();
+    auto largest = bits_above(slip_speed, low);
+    largest = larger(largest, bits_above(sliding_friction, low));
+    largest = larger(largest, bits_above(gravity, low));
+    return largest <= bits_above(moderate_high<Scalar>(), low);
+  }
+#endif
+  return moderate_low<Scalar>() <= slip_speed && slip_speed <= moderate_high<Scalar>() &&
+         moderate_low<Scalar>() <= sliding_friction && sliding_friction <= moderate_high<Scalar>() &&
+         moderate_low<Scalar>() <= gravity && gravity <= moderate_high<Scalar>();
+}
+
 /// The time t_s = 2 |u0|/(7 μ_s g) a ball slides on the cloth before it rolls, from its slip speed
 /// |u0|; +∞ without sliding friction.
 ///
@@ -271,6 +347,8 @@ BILLIARDS_HOST_DEVICE Scalar spin_change_per_impulse(Scalar mass, Scalar radius)
 /// Total ops: 16
 template <typename Scalar>
 BILLIARDS_HOST_DEVICE Scalar slide_time(Scalar slip_speed, Scalar sliding_friction, Scalar gravity) noexcept {
+  if (slide_time_is_moderate(slip_speed, sliding_friction, gravity))
+    return plain_slide_time(slip_speed, sliding_friction, gravity);
   const Scalar slip_speed_exponent = binary_exponent(slip_speed);
   const Scalar scaled_slip_speed = times_power_of_two(slip_speed, -slip_speed_exponent);
   const Scalar sliding_friction_exponent = binary_exponent(sliding_friction);
@@ -284,6 +362,42 @@ BILLIARDS_HOST_DEVICE Scalar slide_time(Scalar slip_speed, Scalar sliding_fricti
   return duration;
 }
 
+/// The same as roll_time where every input lies in [moderate_low, moderate_high]
+/// (roll_time_is_moderate), where the plain form keeps every digit without scaling. roll_time takes it
+/// there itself.
+///
+/// Proven equal to the derived expression of the audit claim `rolling.stop_time` before it was printed;
+/// also implements `rolling.frictionless_rolls_on`.
+///
+/// Total ops: 3
+template <typename Scalar>
+BILLIARDS_HOST_DEVICE constexpr Scalar plain_roll_time(Scalar speed, Scalar rolling_friction,
+                                                       Scalar gravity) noexcept {
+  Scalar duration = speed / gravity / rolling_friction;
+  if (rolling_friction <= Scalar(0)) duration = infinity<Scalar>();
+  return duration;
+}
+
+/// True when every input of roll_time lies in [moderate_low<Scalar>(), moderate_high<Scalar>()], where
+/// it takes its plain form (false for 0, +∞ and NaN). On the host, for IEEE float and double
+/// (orders_as_bits), it compares bits: the largest bits_above of the low end at most the high end's.
+template <typename Scalar>
+BILLIARDS_HOST_DEVICE constexpr bool roll_time_is_moderate(Scalar speed, Scalar rolling_friction,
+                                                           Scalar gravity) noexcept {
+#if !defined(__CUDA_ARCH__)
+  if constexpr (orders_as_bits<Scalar>()) {
+    const Scalar low = moderate_low<Scalar>();
+    auto largest = bits_above(speed, low);
+    largest = larger(largest, bits_above(rolling_friction, low));
+    largest = larger(largest, bits_above(gravity, low));
+    return largest <= bits_above(moderate_high<Scalar>(), low);
+  }
+#endif
+  return moderate_low<Scalar>() <= speed && speed <= moderate_high<Scalar>() &&
+         moderate_low<Scalar>() <= rolling_friction && rolling_friction <= moderate_high<Scalar>() &&
+         moderate_low<Scalar>() <= gravity && gravity <= moderate_high<Scalar>();
+}
+
 /// The time t_r = |v0|/(μ_r g) a rolling ball takes to stop, from its speed |v0|; +∞ without rolling
 /// resistance.
 ///
@@ -293,6 +407,8 @@ BILLIARDS_HOST_DEVICE Scalar slide_time(Scalar slip_speed, Scalar sliding_fricti
 /// Total ops: 15
 template <typename Scalar>
 BILLIARDS_HOST_DEVICE Scalar roll_time(Scalar speed, Scalar rolling_friction, Scalar gravity) noexcept {
+  if (roll_time_is_moderate(speed, rolling_friction, gravity))
+    return plain_roll_time(speed, rolling_friction, gravity);
   const Scalar speed_exponent = binary_exponent(speed);
   const Scalar scaled_speed = times_power_of_two(speed, -speed_exponent);
   const Scalar rolling_friction_exponent = binary_exponent(rolling_friction);
@@ -306,6 +422,45 @@ BILLIARDS_HOST_DEVICE Scalar roll_time(Scalar speed, Scalar rolling_friction, Sc
   return duration;
 }
 
+/// The same as spin_time where every input lies in [moderate_low, moderate_high]
+/// (spin_time_is_moderate), where the plain form keeps every digit without scaling. spin_time takes it
+/// there itself.
+///
+/// Proven equal to the derived expression of the audit claim `spinning.stop_time` before it was
+/// printed; also implements `spinning.frictionless_spins_on`.
+///
+/// Total ops: 5
+template <typename Scalar>
+BILLIARDS_HOST_DEVICE constexpr Scalar plain_spin_time(Scalar spin_speed, Scalar radius,
+                                                       Scalar spinning_friction, Scalar gravity) noexcept {
+  Scalar duration = radius * spin_speed / gravity / spinning_friction / Scalar(2.5);
+  if (spinning_friction <= Scalar(0)) duration = infinity<Scalar>();
+  return duration;
+}
+
+/// True when every input of spin_time lies in [moderate_low<Scalar>(), moderate_high<Scalar>()], where
+/// it takes its plain form (false for 0, +∞ and NaN). On the host, for IEEE float and double
+/// (orders_as_bits), it compares bits: the largest bits_above of the low end at most the high end's.
+template <typename Scalar>
+BILLIARDS_HOST_DEVICE constexpr bool spin_time_is_moderate(Scalar spin_speed, Scalar radius,
+                                                           Scalar spinning_friction,
+                                                           Scalar gravity) noexcept {
+#if !defined(__CUDA_ARCH__)
+  if constexpr (orders_as_bits<Scalar>()) {
+    const Scalar low = moderate_low<Scalar>();
+    auto largest = bits_above(spin_speed, low);
+    largest = larger(largest, bits_above(radius, low));
+    largest = larger(largest, bits_above(spinning_friction, low));
+    largest = larger(largest, bits_above(gravity, low));
+    return largest <= bits_above(moderate_high<Scalar>(), low);
+  }
+#endif
+  return moderate_low<Scalar>() <= spin_speed && spin_speed <= moderate_high<Scalar>() &&
+         moderate_low<Scalar>() <= radius && radius <= moderate_high<Scalar>() &&
+         moderate_low<Scalar>() <= spinning_friction && spinning_friction <= moderate_high<Scalar>() &&
+         moderate_low<Scalar>() <= gravity && gravity <= moderate_high<Scalar>();
+}
+
 /// The time t_z = 2 R |ω_z|/(5 μ_sp g) until the spin about ẑ stops, from |ω_z| and the radius R;
 /// +∞ without spinning friction.
 ///
@@ -316,6 +471,8 @@ BILLIARDS_HOST_DEVICE Scalar roll_time(Scalar speed, Scalar rolling_friction, Sc
 template <typename Scalar>
 BILLIARDS_HOST_DEVICE Scalar spin_time(Scalar spin_speed, Scalar radius, Scalar spinning_friction,
                                        Scalar gravity) noexcept {
+  if (spin_time_is_moderate(spin_speed, radius, spinning_friction, gravity))
+    return plain_spin_time(spin_speed, radius, spinning_friction, gravity);
   const Scalar spin_speed_exponent = binary_exponent(spin_speed);
   const Scalar scaled_spin_speed = times_power_of_two(spin_speed, -spin_speed_exponent);
   const Scalar radius_exponent = binary_exponent(radius);

@@ -435,6 +435,23 @@ class SpinInputGenerator {
   Inputs<Scalar> operator()(const billiards::derive::Kernel& kernel, int sample) {
     const int mode = sample % 8;
     Inputs<Scalar> in;
+    // A fast path's plain form is measured inside its domain only: the moderate range, the one domain
+    // the spin kernels have (checked, so that a new one is not silently ignored).
+    if (!kernel.domain.empty()) {
+      for (const ex& condition : kernel.domain) {
+        if (!condition.has(billiards::derive::moderate_low()) &&
+            !condition.has(billiards::derive::moderate_high()))
+          throw std::logic_error("kernel " + kernel.name + ": a domain other than the moderate range");
+      }
+      for (const ex& parameter : kernel.parameters) {
+        in[GiNaC::ex_to<GiNaC::symbol>(parameter).get_name()] =
+            mode == 0   ? billiards::kernels::spin::moderate_low<Scalar>()
+            : mode == 1 ? billiards::kernels::spin::moderate_high<Scalar>()
+                        : log_uniform(billiards::kernels::spin::moderate_low<Scalar>(),
+                                      billiards::kernels::spin::moderate_high<Scalar>());
+      }
+      return in;
+    }
     for (const ex& parameter : kernel.parameters) {
       const std::string name = GiNaC::ex_to<GiNaC::symbol>(parameter).get_name();
       if (name == "restitution") {

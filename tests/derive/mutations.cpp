@@ -180,6 +180,8 @@ const std::vector<Mutation>& spin_mutations() {
              2 * symbol(k, "scaled_slip_speed") /
              (5 * symbol(k, "scaled_sliding_friction") * symbol(k, "scaled_gravity"));
        }},
+      {"slide_time_fast_path_range_wider_than_its_plain_form", "slide_time",
+       [](Kernel& k) { k.fast_path->conditions.at(1) = symbol(k, "slip_speed") <= infinity(); }},
       {"slide_time_frictionless_zero", "slide_time",
        [](Kernel& k) { step(k, "duration").guards.at(0).alternative = 0; }},
       {"slide_time_gravity_exponent_added", "slide_time",

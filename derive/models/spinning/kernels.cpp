@@ -136,12 +136,49 @@ std::vector<Kernel> spin_kernels(const Cloth& cloth) {
   // range: on their significands, scaled back once (scaled_monomial), and `frictionless` where the
   // friction is zero.
   const GiNaC::symbol duration("duration");
+  ex plain_time;
+  Guard plain_guard;
   const auto timed = [&](const ex& time, const std::vector<ex>& parameters, const Guard& frictionless) {
+    plain_time = time;
+    plain_guard = frictionless;
     ScaledMonomial scaled = scaled_monomial("duration", time, parameters);
     scaled.steps.push_back({duration, scaled.value, {frictionless}});
     return scaled.steps;
   };
+  // Where every input lies in [moderate_low, moderate_high] the plain form, the duration as derived,
+  // keeps every digit and needs no scaling: the kernel just pushed takes it there first, a kernel of its
+  // own (plain_<name>) printed before it.
   std::vector<Kernel> kernels;
+  const auto with_moderate_path = [&](Kernel full) {
+    std::vector<ex> conditions;
+    for (const ex& parameter : full.parameters) {
+      conditions.push_back(moderate_low() <= parameter);
+      conditions.push_back(parameter <= moderate_high());
+    }
+    Kernel plain{
+        .name = "plain_" + full.name,
+        .brief = "The same as " + full.name + " where every input lies in [moderate_low, moderate_high] (" +
+                 full.name + "_is_moderate), where the plain form keeps every digit without scaling. " +
+                 full.name + " takes it there itself.",
+        .parameters = full.parameters,
+        .steps = {{duration, plain_time, {plain_guard}}},
+        .outputs = {duration},
+        .equals = full.equals,
+        .in_claim_terms = full.in_claim_terms,
+        .domain = conditions,
+    };
+    full.fast_path = FastPath{
+        .predicate = full.name + "_is_moderate",
+        .brief = "True when every input of " + full.name +
+                 " lies in [moderate_low<Scalar>(), moderate_high<Scalar>()], where it takes its plain form "
+                 "(false for 0, +∞ and NaN).",
+        .conditions = conditions,
+        .kernel = plain.name,
+        .claim = full.equals,
+    };
+    kernels.push_back(plain);
+    kernels.push_back(full);
+  };
   {
     // 3.5/m1 + 3.5/m2: each term rounds once and neither exceeds the sum, so nothing overflows that the
     // result does not (7/m1 before a halving would, for m1 just above the smallest normal number).
@@ -307,7 +344,7 @@ std::vector<Kernel> spin_kernels(const Cloth& cloth) {
   }
   {
     const GiNaC::possymbol slip("slip_speed"), mu("sliding_friction"), gravity("gravity");
-    kernels.push_back({
+    with_moderate_path({
         .name = "slide_time",
         .brief = "The time t_s = 2 |u0|/(7 μ_s g) a ball slides on the cloth before it rolls, from its slip "
                  "speed |u0|; +∞ without sliding friction.",
@@ -322,7 +359,7 @@ std::vector<Kernel> spin_kernels(const Cloth& cloth) {
   }
   {
     const GiNaC::possymbol speed("speed"), mu("rolling_friction"), gravity("gravity");
-    kernels.push_back({
+    with_moderate_path({
         .name = "roll_time",
         .brief = "The time t_r = |v0|/(μ_r g) a rolling ball takes to stop, from its speed |v0|; +∞ without "
                  "rolling resistance.",
@@ -337,7 +374,7 @@ std::vector<Kernel> spin_kernels(const Cloth& cloth) {
   }
   {
     const GiNaC::possymbol spin("spin_speed"), radius("radius"), mu("spinning_friction"), gravity("gravity");
-    kernels.push_back({
+    with_moderate_path({
         .name = "spin_time",
         .brief =
             "The time t_z = 2 R |ω_z|/(5 μ_sp g) until the spin about ẑ stops, from |ω_z| and the radius "
