@@ -28,10 +28,6 @@ ex binary_exponent_eval(const ex& x) {
   return binary_exponent(x).hold();
 }
 
-bool is_power_of_two_with_symbolic_exponent(const ex& e) {
-  return GiNaC::is_a<GiNaC::power>(e) && e.op(0).is_equal(2) && !GiNaC::is_a<numeric>(e.op(1));
-}
-
 // The symbol standing for 2^a, the same for equal a on every call.
 const GiNaC::possymbol& power_symbol(const ex& a) {
   static std::map<ex, GiNaC::possymbol, GiNaC::ex_is_less> symbols;
@@ -43,6 +39,23 @@ const GiNaC::possymbol& power_symbol(const ex& a) {
 }  // namespace
 
 REGISTER_FUNCTION(binary_exponent, eval_func(binary_exponent_eval))
+
+std::optional<int> exact_binary_logarithm(const numeric& n) {
+  if (!n.is_rational() || !n.is_positive()) return std::nullopt;
+  // 2^|k| is an integer: as many halvings of it as bring it to 1.
+  numeric power = n >= 1 ? n : numeric(1) / n;
+  int k = 0;
+  while (power.is_integer() && power > 1 && (power / 2).is_integer()) {
+    power /= 2;
+    ++k;
+  }
+  if (power != 1) return std::nullopt;
+  return n >= 1 ? k : -k;
+}
+
+bool is_power_of_two_with_symbolic_exponent(const ex& e) {
+  return GiNaC::is_a<GiNaC::power>(e) && e.op(0).is_equal(2) && !GiNaC::is_a<numeric>(e.op(1));
+}
 
 ex times_power_of_two(const ex& x, const ex& k) { return x * GiNaC::pow(2, k); }
 

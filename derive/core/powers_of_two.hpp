@@ -8,6 +8,8 @@
 
 #include <ginac/ginac.h>
 
+#include <optional>
+
 namespace billiards::derive {
 
 /// ⌊log2 |x|⌋ for a nonzero rational x, 0 for 0; held unevaluated for a symbol. Printed in C++ as
@@ -16,6 +18,12 @@ DECLARE_FUNCTION_1P(binary_exponent)
 
 /// x · 2^k: printed in C++ as times_power_of_two(x, k).
 GiNaC::ex times_power_of_two(const GiNaC::ex& x, const GiNaC::ex& k);
+
+/// k where n = 2^k exactly for an integer k (of either sign); nothing for any other number.
+std::optional<int> exact_binary_logarithm(const GiNaC::numeric& n);
+
+/// True for 2^k whose exponent k is not a number: a scaling by a power of two.
+bool is_power_of_two_with_symbolic_exponent(const GiNaC::ex& e);
 
 /// True when `e` contains binary_exponent(…) or a power of two whose exponent is not a number: a
 /// kernel that needs the emitted header's scaling helpers.

@@ -46,20 +46,24 @@ int count_operations(const std::string& code) {
   return count;
 }
 
-// "/// " lines holding `text`, wrapped before the column limit.
-std::string doc_comment(const std::string& text, const std::string& indent = "") {
+// `text` as comment lines, each `prefix` and as many words as fit in `width` characters after it.
+std::string filled_comment(const std::string& text, const std::string& prefix, std::size_t width) {
   std::istringstream words(text);
   std::string word, line, out;
-  const std::size_t width = 100 - indent.size();
   while (words >> word) {
     if (!line.empty() && line.size() + 1 + word.size() > width) {
-      out += indent + "/// " + line + "\n";
+      out += prefix + line + "\n";
       line.clear();
     }
     line += (line.empty() ? "" : " ") + word;
   }
-  if (!line.empty()) out += indent + "/// " + line + "\n";
+  if (!line.empty()) out += prefix + line + "\n";
   return out;
+}
+
+// "/// " lines holding `text`, wrapped before the column limit.
+std::string doc_comment(const std::string& text, const std::string& indent = "") {
+  return filled_comment(text, indent + "/// ", 100 - indent.size());
 }
 
 // `head` followed by `items` separated by ", " and then `tail`, wrapped like clang-format: items
@@ -93,6 +97,28 @@ std::string short_if(const std::string& head, const std::string& statement) {
   return head + "\n    " + statement;
 }
 
+// `head` then `items` joined by `separator` (which ends a line where one breaks), wrapped before the
+// column limit with continuation lines indented to `indent`, then `tail`; `head` starts at column
+// `column`.
+std::string wrapped_terms(std::size_t column, const std::string& head, const std::vector<std::string>& items,
+                          const std::string& separator, const std::string& indent, const std::string& tail) {
+  std::string out = head;
+  std::size_t width = column + head.size();
+  for (std::size_t i = 0; i < items.size(); ++i) {
+    const std::string piece = items[i] + (i + 1 < items.size() ? separator : tail);
+    if (i > 0 && width + 1 + piece.size() > column_limit) {
+      out += "\n" + indent;
+      width = indent.size();
+    } else if (i > 0) {
+      out += " ";
+      ++width;
+    }
+    out += piece;
+    width += piece.size();
+  }
+  return out;
+}
+
 // `code` (a statement's expression and its ";"), starting at `column`, broken where it passes the column
 // limit as clang-format does: after a binary operator or a comma, each continuation line indented to
 // `indent`.
@@ -108,18 +134,7 @@ std::string wrapped_code(std::size_t column, const std::string& code, const std:
       pieces.back() += code[i];
     }
   }
-  std::string out = pieces.front();
-  std::size_t width = column + out.size();
-  for (std::size_t i = 1; i < pieces.size(); ++i) {
-    if (width + 1 + pieces[i].size() > column_limit) {
-      out += "\n" + indent + pieces[i];
-      width = indent.size() + pieces[i].size();
-    } else {
-      out += " " + pieces[i];
-      width += 1 + pieces[i].size();
-    }
-  }
-  return out;
+  return wrapped_terms(column, "", pieces, "", indent, "");
 }
 
 // `head code;` in a function body (indented by 2), or, when that passes the column limit, broken after
@@ -164,28 +179,6 @@ bool needs_runtime_math(const Kernel& kernel) {
     }
     return false;
   });
-}
-
-// `head` then `items` joined by `separator` (which ends a line where one breaks), wrapped before the
-// column limit with continuation lines indented to `indent`, then `tail`; `head` starts at column
-// `column`.
-std::string wrapped_terms(std::size_t column, const std::string& head, const std::vector<std::string>& items,
-                          const std::string& separator, const std::string& indent, const std::string& tail) {
-  std::string out = head;
-  std::size_t width = column + head.size();
-  for (std::size_t i = 0; i < items.size(); ++i) {
-    const std::string piece = items[i] + (i + 1 < items.size() ? separator : tail);
-    if (i > 0 && width + 1 + piece.size() > column_limit) {
-      out += "\n" + indent;
-      width = indent.size();
-    } else if (i > 0) {
-      out += " ";
-      ++width;
-    }
-    out += piece;
-    width += piece.size();
-  }
-  return out;
 }
 
 // A function signature as clang-format lays it out in the project's style: on one line when it fits,
@@ -471,19 +464,7 @@ std::string with_fingerprint(const std::string& text, const std::string& audit_t
 }
 
 // `text` as "// " comment lines, each filled up to the column limit (as clang-format reflows them).
-std::string line_comment(const std::string& text) {
-  std::istringstream words(text);
-  std::string word, line, out;
-  while (words >> word) {
-    if (!line.empty() && 3 + line.size() + 1 + word.size() > column_limit) {
-      out += "// " + line + "\n";
-      line.clear();
-    }
-    line += (line.empty() ? "" : " ") + word;
-  }
-  if (!line.empty()) out += "// " + line + "\n";
-  return out;
-}
+std::string line_comment(const std::string& text) { return filled_comment(text, "// ", column_limit - 3); }
 
 // The header's opening comment: generated, do not edit, `description` (one paragraph), the fingerprint.
 std::string preamble(const std::string& description) {
@@ -496,8 +477,6 @@ std::string preamble(const std::string& description) {
          fingerprint_marker + " (of this header and the audit)\n";
 }
 
-// The explicit float and double specialisations of a constant function template `name<Scalar>()`,
-// each with its comment and its literal (device code has no std::numeric_limits).
 // The scaling helpers a kernel with binary_exponent or times_power_of_two calls (after orders_as_bits
 // and BitsOf).
 std::string scaling_helpers() {
@@ -551,6 +530,8 @@ std::string scaling_helpers() {
          "}\n";
 }
 
+// The explicit float and double specialisations of a constant function template `name<Scalar>()`,
+// each with its comment and its literal (device code has no std::numeric_limits).
 std::string float_and_double(const std::string& name, const std::string& float_brief,
                              const std::string& float_value, const std::string& double_brief,
                              const std::string& double_value) {
@@ -562,6 +543,24 @@ std::string float_and_double(const std::string& name, const std::string& float_b
             type + ">() noexcept {\n  return " + value + ";\n}\n";
   }
   return text;
+}
+
+// A range of powers of two as the constant function templates `<name>_low<Scalar>()`, `start` halved
+// `halvings` times (the generic form; float and double take their literals), and `<name>_high`, its
+// inverse, each after `doc`.
+std::string power_of_two_range(const std::string& doc, const std::string& name, const std::string& start,
+                               const std::string& start_comment, const std::string& halvings,
+                               const std::pair<std::string, std::string>& in_float,
+                               const std::pair<std::string, std::string>& in_double) {
+  const std::string low = name + "_low", high = name + "_high";
+  return "\n" + doc_comment(doc) + "template <typename Scalar>\nBILLIARDS_HOST_DEVICE constexpr Scalar " +
+         low + "() noexcept {\n  Scalar low = Scalar(" + start + ");" + start_comment +
+         "\n  for (int k = 0; k < " + halvings + "; ++k) low /= Scalar(2);\n  return low;\n}\n" +
+         float_and_double(low, in_float.first, in_float.second, in_double.first, in_double.second) +
+         "/// `1/" + low +
+         "<Scalar>()`, exactly (a power of two).\ntemplate <typename Scalar>\n"
+         "BILLIARDS_HOST_DEVICE constexpr Scalar " +
+         high + "() noexcept {\n  return Scalar(1) / " + low + "<Scalar>();\n}\n";
 }
 
 }  // namespace
@@ -645,44 +644,22 @@ std::string kernels_header(const Derivation& derivation, const std::string& audi
     });
   };
   if (reads_constant(plain_mass_low()) || reads_constant(plain_mass_high())) {
-    out << "\n/// The plain form's mass range [4 √x_min, 1/(4 √x_min)], x_min = `smallest_normal<Scalar>()`: "
-           "2^−509 to\n"
-        << "/// 2^509 in double, 2^−61 to 2^61 in float. Within it m1 + m2, (1 + e)/(m1 + m2) and each\n"
-        << "/// (1 + e) m_i/(m1 + m2) are normal numbers, so the one-division form keeps every digit.\n"
-        << "template <typename Scalar>\n"
-        << "BILLIARDS_HOST_DEVICE constexpr Scalar plain_mass_low() noexcept {\n"
-        << "  Scalar low = Scalar(4);  // 4 √x_min = 4 · 2^((min_exponent − 1)/2)\n"
-        << "  for (int k = 0; k < (1 - std::numeric_limits<Scalar>::min_exponent) / 2; ++k) low /= "
-           "Scalar(2);\n"
-        << "  return low;\n"
-        << "}\n"
-        << float_and_double("plain_mass_low", "2^−61 in float.", "0x1p-61f", "2^−509 in double.", "0x1p-509")
-        << "/// `1/plain_mass_low<Scalar>()`, exactly (a power of two).\n"
-        << "template <typename Scalar>\n"
-        << "BILLIARDS_HOST_DEVICE constexpr Scalar plain_mass_high() noexcept {\n"
-        << "  return Scalar(1) / plain_mass_low<Scalar>();\n"
-        << "}\n";
+    out << power_of_two_range(
+        "The plain form's mass range [4 √x_min, 1/(4 √x_min)], x_min = `smallest_normal<Scalar>()`: 2^−509 "
+        "to "
+        "2^509 in double, 2^−61 to 2^61 in float. Within it m1 + m2, (1 + e)/(m1 + m2) and each (1 + e) "
+        "m_i/(m1 + m2) are normal numbers, so the one-division form keeps every digit.",
+        "plain_mass", "4", "  // 4 √x_min = 4 · 2^((min_exponent − 1)/2)",
+        "(1 - std::numeric_limits<Scalar>::min_exponent) / 2", {"2^−61 in float.", "0x1p-61f"},
+        {"2^−509 in double.", "0x1p-509"});
   }
   if (reads_constant(moderate_low()) || reads_constant(moderate_high())) {
-    out << "\n/// The moderate range [2^−(E/4 − 2), 2^(E/4 − 2)], E = "
-           "`std::numeric_limits<Scalar>::max_exponent`: "
-           "2^−254\n"
-        << "/// to 2^254 in double, 2^−30 to 2^30 in float. A product or quotient of four numbers in it, "
-           "times "
-           "2/7 or\n"
-        << "/// 5/2, is a normal number, so a monomial kernel's plain form keeps every digit there.\n"
-        << "template <typename Scalar>\n"
-        << "BILLIARDS_HOST_DEVICE constexpr Scalar moderate_low() noexcept {\n"
-        << "  Scalar low = Scalar(1);\n"
-        << "  for (int k = 0; k < std::numeric_limits<Scalar>::max_exponent / 4 - 2; ++k) low /= Scalar(2);\n"
-        << "  return low;\n"
-        << "}\n"
-        << float_and_double("moderate_low", "2^−30 in float.", "0x1p-30f", "2^−254 in double.", "0x1p-254")
-        << "/// `1/moderate_low<Scalar>()`, exactly (a power of two).\n"
-        << "template <typename Scalar>\n"
-        << "BILLIARDS_HOST_DEVICE constexpr Scalar moderate_high() noexcept {\n"
-        << "  return Scalar(1) / moderate_low<Scalar>();\n"
-        << "}\n";
+    out << power_of_two_range(
+        "The moderate range [2^−(E/4 − 2), 2^(E/4 − 2)], E = `std::numeric_limits<Scalar>::max_exponent`: "
+        "2^−254 to 2^254 in double, 2^−30 to 2^30 in float. A product or quotient of four numbers in it, "
+        "times 2/7 or 5/2, is a normal number, so a monomial kernel's plain form keeps every digit there.",
+        "moderate", "1", "", "std::numeric_limits<Scalar>::max_exponent / 4 - 2",
+        {"2^−30 in float.", "0x1p-30f"}, {"2^−254 in double.", "0x1p-254"});
   }
   if (reads_bits) {
     out << "\n/// Whether Scalar is IEEE float or double, whose positive numbers order as their bits.\n"

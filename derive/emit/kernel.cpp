@@ -3,6 +3,7 @@
 #include "core/powers_of_two.hpp"
 
 #include <algorithm>
+#include <optional>
 #include <stdexcept>
 
 namespace billiards::derive {
@@ -27,7 +28,6 @@ using GiNaC::numeric;
 ScaledMonomial scaled_monomial(const std::string& name, const ex& monomial,
                                const std::vector<ex>& parameters) {
   ScaledMonomial out;
-  GiNaC::exmap to_significands;
   ex exponent = 0;
   for (const ex& parameter : parameters) {
     if (!monomial.has(parameter)) continue;
@@ -38,27 +38,18 @@ ScaledMonomial scaled_monomial(const std::string& name, const ex& monomial,
       return std::invalid_argument("scaled_monomial " + name +
                                    ": the form is not a monomial of integer degree in " + base);
     };
-    if (!GiNaC::is_a<numeric>(ratio) || !GiNaC::ex_to<numeric>(ratio).is_rational() ||
-        !GiNaC::ex_to<numeric>(ratio).is_positive())
-      throw not_a_monomial();
-    // 2^a for an integer a: as many halvings of 2^|a| as bring it to 1.
-    const numeric ratio_value = GiNaC::ex_to<numeric>(ratio);
-    numeric power = ratio_value >= 1 ? ratio_value : numeric(1) / ratio_value;
-    int degree = 0;
-    while (power.is_integer() && power > 1 && (power / 2).is_integer()) {
-      power /= 2;
-      ++degree;
-    }
-    if (power != 1) throw not_a_monomial();
-    if (ratio_value < 1) degree = -degree;
+    const std::optional<int> degree =
+        GiNaC::is_a<numeric>(ratio) ? exact_binary_logarithm(GiNaC::ex_to<numeric>(ratio)) : std::nullopt;
+    if (!degree) throw not_a_monomial();
     const GiNaC::symbol exponent_step(base + "_exponent"), significand_step("scaled_" + base);
     out.steps.push_back({exponent_step, binary_exponent(parameter)});
     out.steps.push_back({significand_step, times_power_of_two(parameter, -exponent_step)});
-    to_significands[parameter] = significand_step;
-    exponent += degree * exponent_step;
+    out.scaled[parameter] = significand_step;
+    out.exponent[parameter] = exponent_step;
+    exponent += *degree * exponent_step;
   }
   const GiNaC::symbol significand("scaled_" + name), exponent_sum(name + "_exponent");
-  out.steps.push_back({significand, monomial.subs(to_significands)});
+  out.steps.push_back({significand, monomial.subs(out.scaled)});
   out.steps.push_back({exponent_sum, exponent});
   out.value = times_power_of_two(significand, exponent_sum);
   return out;

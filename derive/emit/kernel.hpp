@@ -87,6 +87,8 @@ struct Kernel {
 struct ScaledMonomial {
   std::vector<KernelStep> steps;
   GiNaC::ex value;
+  GiNaC::exmap scaled;    ///< each parameter read → its step `scaled_<x_i>`
+  GiNaC::exmap exponent;  ///< each parameter read → its step `<x_i>_exponent`
 };
 /// Throws std::invalid_argument when `monomial` is not a monomial in `parameters` of integer degrees.
 ScaledMonomial scaled_monomial(const std::string& name, const GiNaC::ex& monomial,

@@ -199,11 +199,7 @@ bool is_one_group(const std::string& code) {
 }
 
 // Whether n is 2^k for an integer k ≥ 1.
-bool is_power_of_two_above_one(numeric n) {
-  if (!n.is_integer() || n <= 1) return false;
-  while (n > 1 && (n / 2).is_integer()) n /= 2;
-  return n == 1;
-}
+bool is_power_of_two_above_one(const numeric& n) { return exact_binary_logarithm(n).value_or(0) >= 1; }
 
 // A positive p/2^k (k ≥ 0) as an exact decimal literal: 7/2 → Scalar(3.5), 1/4 → Scalar(0.25).
 std::string dyadic_literal(const numeric& n) {
@@ -231,8 +227,7 @@ std::string print_magnitude_cpp(const Product& p) {
   Product rest;
   rest.coefficient = p.coefficient;
   for (const Factor& f : p.factors) {
-    if (GiNaC::is_a<GiNaC::power>(f.base) && f.base.op(0).is_equal(2) &&
-        !GiNaC::is_a<numeric>(f.base.op(1))) {
+    if (is_power_of_two_with_symbolic_exponent(f.base)) {
       scale += f.exponent * f.base.op(1);
     } else {
       rest.factors.push_back(f);

@@ -5,7 +5,7 @@
 // was printed, and names the claims it implements. They take masses and dot products, so they serve vectors
 // of any dimension and need no Eigen.
 //
-// Fingerprint: fnv1a64:20779b9f7e34fb3a (of this header and the audit)
+// Fingerprint: fnv1a64:64ef0f5f3107e2ae (of this header and the audit)
 #pragma once
 
 #include <bit>
@@ -77,8 +77,8 @@ BILLIARDS_HOST_DEVICE constexpr double infinity<double>() noexcept {
   return __builtin_huge_val();
 }
 
-/// The plain form's mass range [4 √x_min, 1/(4 √x_min)], x_min = `smallest_normal<Scalar>()`: 2^−509 to
-/// 2^509 in double, 2^−61 to 2^61 in float. Within it m1 + m2, (1 + e)/(m1 + m2) and each
+/// The plain form's mass range [4 √x_min, 1/(4 √x_min)], x_min = `smallest_normal<Scalar>()`:
+/// 2^−509 to 2^509 in double, 2^−61 to 2^61 in float. Within it m1 + m2, (1 + e)/(m1 + m2) and each
 /// (1 + e) m_i/(m1 + m2) are normal numbers, so the one-division form keeps every digit.
 template <typename Scalar>
 BILLIARDS_HOST_DEVICE constexpr Scalar plain_mass_low() noexcept {

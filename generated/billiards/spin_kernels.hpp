@@ -5,7 +5,7 @@
 // verified claim of the derivation audit before it was printed, and names the claims it implements. They take
 // masses and dot products, so they serve vectors of any dimension and need no Eigen.
 //
-// Fingerprint: fnv1a64:8bfda20746acb101 (of this header and the audit)
+// Fingerprint: fnv1a64:fa7969cff3c96200 (of this header and the audit)
 #pragma once
 
 #include <bit>
@@ -77,9 +77,10 @@ BILLIARDS_HOST_DEVICE constexpr double infinity<double>() noexcept {
   return __builtin_huge_val();
 }
 
-/// The moderate range [2^−(E/4 − 2), 2^(E/4 − 2)], E = `std::numeric_limits<Scalar>::max_exponent`: 2^−254
-/// to 2^254 in double, 2^−30 to 2^30 in float. A product or quotient of four numbers in it, times 2/7 or
-/// 5/2, is a normal number, so a monomial kernel's plain form keeps every digit there.
+/// The moderate range [2^−(E/4 − 2), 2^(E/4 − 2)], E =
+/// `std::numeric_limits<Scalar>::max_exponent`: 2^−254 to 2^254 in double, 2^−30 to 2^30 in float.
+/// A product or quotient of four numbers in it, times 2/7 or 5/2, is a normal number, so a monomial
+/// kernel's plain form keeps every digit there.
 template <typename Scalar>
 BILLIARDS_HOST_DEVICE constexpr Scalar moderate_low() noexcept {
   Scalar low = Scalar(1);

@@ -169,6 +169,14 @@ TEST_CASE("binary_exponent is exact on rationals and held on symbols", "[derive]
   CHECK(binary_exponent(GiNaC::numeric(0)) == 0);
   CHECK(binary_exponent(GiNaC::numeric(1).div(GiNaC::numeric(2).power(1074))) == -1074);
   CHECK(!GiNaC::is_a<GiNaC::numeric>(binary_exponent(a)));
+  // The exact logarithm: only for powers of two, of either sign of exponent.
+  CHECK(exact_binary_logarithm(GiNaC::numeric(8)) == 3);
+  CHECK(exact_binary_logarithm(GiNaC::numeric(1)) == 0);
+  CHECK(exact_binary_logarithm(GiNaC::numeric(1, 16)) == -4);
+  CHECK_FALSE(exact_binary_logarithm(GiNaC::numeric(6)));
+  CHECK_FALSE(exact_binary_logarithm(GiNaC::numeric(3, 4)));
+  CHECK_FALSE(exact_binary_logarithm(GiNaC::numeric(-2)));
+  CHECK_FALSE(exact_binary_logarithm(GiNaC::numeric(0)));
   // 2^(k + 3) · 2^(−k) resolves to 8 for the same k, to no number for another.
   const ex k = binary_exponent(a), other = binary_exponent(b);
   CHECK(GiNaC::normal(resolve_powers_of_two(GiNaC::pow(2, k + 3) * GiNaC::pow(2, -k))) == 8);

@@ -126,14 +126,8 @@ TEMPLATE_TEST_CASE("kernels::within_plain_mass_range, on the bits, is the range 
                                 -low,
                                 -Scalar(1),
                                 -limits::infinity()};
-  std::mt19937_64 random(11);
-  using Bits = std::conditional_t<sizeof(Scalar) == 8, std::uint64_t, std::uint32_t>;
-  for (int i = 0; i < 2000; ++i) {
-    const Bits bits = static_cast<Bits>(random());
-    Scalar x;
-    std::memcpy(&x, &bits, sizeof x);
-    values.push_back(x);
-  }
+  const std::vector<Scalar> every_kind = billiards_test::every_kind_of<Scalar>(11, 2000);
+  values.insert(values.end(), every_kind.begin(), every_kind.end());
   // The range as written, by floating-point comparisons (what the predicate computes on the device).
   const auto in_range = [&](Scalar a, Scalar b) { return low <= a && a <= high && low <= b && b <= high; };
   for (const Scalar a : values) {

@@ -3,6 +3,8 @@
 // μ = 0 reduction to collide(..., e) and the published throw of a stun shot (Alciatore, TP A-14); the
 // spin kernels over the whole exponent range against long double, and their scaling helpers against
 // std::ilogb and std::ldexp.
+#include "test_support.hpp"
+
 #include <billiards/spin.hpp>
 
 #include <catch2/catch.hpp>
@@ -266,37 +268,6 @@ TEMPLATE_TEST_CASE("checked::collide_with_friction rejects bad input, naming the
 
 namespace {
 
-template <typename Scalar>
-using Bits = std::conditional_t<sizeof(Scalar) == 8, std::uint64_t, std::uint32_t>;
-
-// Edge values and random bit patterns (every exponent, subnormals, ±0, ±∞ and NaNs among them).
-template <typename Scalar>
-std::vector<Scalar> every_kind_of(std::uint64_t seed, int random_count) {
-  using limits = std::numeric_limits<Scalar>;
-  std::vector<Scalar> values = {Scalar(0),
-                                Scalar(-0.0),
-                                limits::denorm_min(),
-                                -limits::denorm_min(),
-                                limits::min(),
-                                std::nextafter(limits::min(), Scalar(0)),
-                                Scalar(1),
-                                Scalar(1.5),
-                                -Scalar(3),
-                                limits::max(),
-                                -limits::max(),
-                                limits::infinity(),
-                                -limits::infinity(),
-                                limits::quiet_NaN()};
-  std::mt19937_64 random(seed);
-  for (int i = 0; i < random_count; ++i) {
-    const auto bits = static_cast<Bits<Scalar>>(random());
-    Scalar x;
-    std::memcpy(&x, &bits, sizeof x);
-    values.push_back(x);
-  }
-  return values;
-}
-
 // Log-uniform over the whole positive range, the smallest subnormal to the largest finite number.
 template <typename Scalar>
 Scalar anywhere(std::mt19937_64& random) {
@@ -330,7 +301,7 @@ TEMPLATE_TEST_CASE("kernels::spin::binary_exponent and times_power_of_two are st
   std::mt19937_64 random(29);
   std::uniform_int_distribution<int> exponent(-2 * std::numeric_limits<Scalar>::max_exponent - 60,
                                               2 * std::numeric_limits<Scalar>::max_exponent + 60);
-  for (const Scalar x : every_kind_of<Scalar>(17, 3000)) {
+  for (const Scalar x : billiards_test::every_kind_of<Scalar>(17, 3000)) {
     INFO("x = " << x);
     const bool ordinary = std::isfinite(x) && x != 0;
     CHECK(spin::binary_exponent(x) == (ordinary ? Scalar(std::ilogb(x)) : Scalar(0)));

@@ -132,24 +132,18 @@ void kernel_claims(Recorder& record, const Contact& c, const Impulse& impulse, c
 std::vector<Kernel> spin_kernels(const Cloth& cloth) {
   const Symbols& s = symbols();
   using Kind = Guard::Kind;
-  // A phase's duration, a monomial in its speed, friction, gravity (and radius) over the whole exponent
-  // range: on their significands, scaled back once (scaled_monomial), and `frictionless` where the
-  // friction is zero.
+  // A phase's duration `time`, a monomial in the kernel's parameters (its speed, friction, gravity and
+  // radius), over the whole exponent range: on their significands, scaled back once (scaled_monomial),
+  // and `frictionless` where the friction is zero. Where every input lies in [moderate_low,
+  // moderate_high] the plain form, the duration as derived, keeps every digit and needs no scaling: the
+  // kernel takes it there first, a kernel of its own (plain_<name>) printed before it.
   const GiNaC::symbol duration("duration");
-  ex plain_time;
-  Guard plain_guard;
-  const auto timed = [&](const ex& time, const std::vector<ex>& parameters, const Guard& frictionless) {
-    plain_time = time;
-    plain_guard = frictionless;
-    ScaledMonomial scaled = scaled_monomial("duration", time, parameters);
-    scaled.steps.push_back({duration, scaled.value, {frictionless}});
-    return scaled.steps;
-  };
-  // Where every input lies in [moderate_low, moderate_high] the plain form, the duration as derived,
-  // keeps every digit and needs no scaling: the kernel just pushed takes it there first, a kernel of its
-  // own (plain_<name>) printed before it.
   std::vector<Kernel> kernels;
-  const auto with_moderate_path = [&](Kernel full) {
+  const auto push_phase_time = [&](Kernel full, const ex& time, const Guard& frictionless) {
+    ScaledMonomial scaled = scaled_monomial("duration", time, full.parameters);
+    scaled.steps.push_back({duration, scaled.value, {frictionless}});
+    full.steps = scaled.steps;
+    full.outputs = {duration};
     std::vector<ex> conditions;
     for (const ex& parameter : full.parameters) {
       conditions.push_back(moderate_low() <= parameter);
@@ -161,7 +155,7 @@ std::vector<Kernel> spin_kernels(const Cloth& cloth) {
                  full.name + "_is_moderate), where the plain form keeps every digit without scaling. " +
                  full.name + " takes it there itself.",
         .parameters = full.parameters,
-        .steps = {{duration, plain_time, {plain_guard}}},
+        .steps = {{duration, time, {frictionless}}},
         .outputs = {duration},
         .equals = full.equals,
         .in_claim_terms = full.in_claim_terms,
@@ -259,12 +253,6 @@ std::vector<Kernel> spin_kernels(const Cloth& cloth) {
     // Ball 1's form is built first; ball 2's reuses its exponents and significands.
     const ScaledMonomial light_first = scaled_monomial(
         "first_small_mass_change", bound * s.m2 / (s.m1 * (1 + second_ratio)), {bound, s.m1, s.m2});
-    const auto named = [&](const std::string& name) {
-      for (const KernelStep& step : light_first.steps) {
-        if (step.name.get_name() == name) return step.name;
-      }
-      throw std::logic_error("tangential_velocity_change: no step " + name);
-    };
     const GiNaC::symbol light_second("scaled_second_small_mass_change"),
         light_second_exponent("second_small_mass_change_exponent");
     std::vector<KernelStep> steps = {
@@ -281,10 +269,11 @@ std::vector<Kernel> spin_kernels(const Cloth& cloth) {
          sticking,
          {{sliding < sticking, sliding, Kind::piecewise, "kernel.tangential_velocity_change"}}}};
     steps.insert(steps.end(), light_first.steps.begin(), light_first.steps.end());
-    steps.push_back({light_second,
-                     named("scaled_bound") * named("scaled_m1") / (named("scaled_m2") * (1 + first_ratio))});
+    const GiNaC::exmap& scaled = light_first.scaled;
+    const GiNaC::exmap& exponent = light_first.exponent;
     steps.push_back(
-        {light_second_exponent, named("bound_exponent") + named("m1_exponent") - named("m2_exponent")});
+        {light_second, scaled.at(bound) * scaled.at(s.m1) / (scaled.at(s.m2) * (1 + first_ratio))});
+    steps.push_back({light_second_exponent, exponent.at(bound) + exponent.at(s.m1) - exponent.at(s.m2)});
     const auto tiny = [](const GiNaC::symbol& fraction, const ex& alternative) {
       return Guard{fraction < smallest_normal(), alternative, Kind::same_value,
                    "kernel.tangential_velocity_change"};
@@ -344,50 +333,45 @@ std::vector<Kernel> spin_kernels(const Cloth& cloth) {
   }
   {
     const GiNaC::possymbol slip("slip_speed"), mu("sliding_friction"), gravity("gravity");
-    with_moderate_path({
-        .name = "slide_time",
-        .brief = "The time t_s = 2 |u0|/(7 μ_s g) a ball slides on the cloth before it rolls, from its slip "
-                 "speed |u0|; +∞ without sliding friction.",
-        .parameters = {slip, mu, gravity},
-        .steps = timed(
-            cloth.slide_time.subs(lst{s.slip_speed == slip, s.sliding_friction == mu, s.g == gravity}),
-            {slip, mu, gravity}, {mu <= 0, infinity(), Kind::piecewise, "sliding.frictionless_slides_on"}),
-        .outputs = {duration},
-        .equals = "sliding.slide_time",
-        .in_claim_terms = {{slip, s.slip_speed}, {mu, s.sliding_friction}, {gravity, s.g}},
-    });
+    push_phase_time(
+        {
+            .name = "slide_time",
+            .brief = "The time t_s = 2 |u0|/(7 μ_s g) a ball slides on the cloth before it rolls, from its "
+                     "slip speed |u0|; +∞ without sliding friction.",
+            .parameters = {slip, mu, gravity},
+            .equals = "sliding.slide_time",
+            .in_claim_terms = {{slip, s.slip_speed}, {mu, s.sliding_friction}, {gravity, s.g}},
+        },
+        cloth.slide_time.subs(lst{s.slip_speed == slip, s.sliding_friction == mu, s.g == gravity}),
+        {mu <= 0, infinity(), Kind::piecewise, "sliding.frictionless_slides_on"});
   }
   {
     const GiNaC::possymbol speed("speed"), mu("rolling_friction"), gravity("gravity");
-    with_moderate_path({
-        .name = "roll_time",
-        .brief = "The time t_r = |v0|/(μ_r g) a rolling ball takes to stop, from its speed |v0|; +∞ without "
-                 "rolling resistance.",
-        .parameters = {speed, mu, gravity},
-        .steps = timed(
-            cloth.roll_time.subs(lst{s.ball_speed == speed, s.rolling_friction == mu, s.g == gravity}),
-            {speed, mu, gravity}, {mu <= 0, infinity(), Kind::piecewise, "rolling.frictionless_rolls_on"}),
-        .outputs = {duration},
-        .equals = "rolling.stop_time",
-        .in_claim_terms = {{speed, s.ball_speed}, {mu, s.rolling_friction}, {gravity, s.g}},
-    });
+    push_phase_time(
+        {
+            .name = "roll_time",
+            .brief = "The time t_r = |v0|/(μ_r g) a rolling ball takes to stop, from its speed |v0|; +∞ "
+                     "without rolling resistance.",
+            .parameters = {speed, mu, gravity},
+            .equals = "rolling.stop_time",
+            .in_claim_terms = {{speed, s.ball_speed}, {mu, s.rolling_friction}, {gravity, s.g}},
+        },
+        cloth.roll_time.subs(lst{s.ball_speed == speed, s.rolling_friction == mu, s.g == gravity}),
+        {mu <= 0, infinity(), Kind::piecewise, "rolling.frictionless_rolls_on"});
   }
   {
     const GiNaC::possymbol spin("spin_speed"), radius("radius"), mu("spinning_friction"), gravity("gravity");
-    with_moderate_path({
-        .name = "spin_time",
-        .brief =
-            "The time t_z = 2 R |ω_z|/(5 μ_sp g) until the spin about ẑ stops, from |ω_z| and the radius "
-            "R; +∞ without spinning friction.",
-        .parameters = {spin, radius, mu, gravity},
-        .steps = timed(cloth.spin_time.subs(
-                           lst{s.spin == spin, s.R == radius, s.spinning_friction == mu, s.g == gravity}),
-                       {spin, radius, mu, gravity},
-                       {mu <= 0, infinity(), Kind::piecewise, "spinning.frictionless_spins_on"}),
-        .outputs = {duration},
-        .equals = "spinning.stop_time",
-        .in_claim_terms = {{spin, s.spin}, {radius, s.R}, {mu, s.spinning_friction}, {gravity, s.g}},
-    });
+    push_phase_time(
+        {
+            .name = "spin_time",
+            .brief = "The time t_z = 2 R |ω_z|/(5 μ_sp g) until the spin about ẑ stops, from |ω_z| and the "
+                     "radius R; +∞ without spinning friction.",
+            .parameters = {spin, radius, mu, gravity},
+            .equals = "spinning.stop_time",
+            .in_claim_terms = {{spin, s.spin}, {radius, s.R}, {mu, s.spinning_friction}, {gravity, s.g}},
+        },
+        cloth.spin_time.subs(lst{s.spin == spin, s.R == radius, s.spinning_friction == mu, s.g == gravity}),
+        {mu <= 0, infinity(), Kind::piecewise, "spinning.frictionless_spins_on"});
   }
   return kernels;
 }
