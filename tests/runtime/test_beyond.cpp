@@ -12,6 +12,7 @@
 #include <cstring>
 #include <limits>
 #include <random>
+#include <vector>
 
 namespace {
 
@@ -190,6 +191,38 @@ TEMPLATE_TEST_CASE("Beyond the paper", "[runtime][beyond]", (Config<float, 2>), 
     }
   }
 
+  SECTION("a direction of any length gives the same bits, taken as it is or scaled first") {
+    // d = 2^k d0 for every k that keeps d exact and finite: where d·d is moderate the call takes d as
+    // it is, elsewhere it scales d first; every quantity then differs by a power of two only, so the
+    // results must agree with d0's to the last bit, in both calls that take a direction.
+    const auto bits_equal = [](const Vector& a, const Vector& b) {
+      return std::memcmp(a.data(), b.data(), sizeof(Scalar) * std::size_t(N)) == 0;
+    };
+    using limits = std::numeric_limits<Scalar>;
+    int compared = 0;
+    for (int trial = 0; trial < 20; ++trial) {
+      const Scalar m1 = random_mass(), m2 = random_mass(), e = Scalar(unit_interval(random));
+      const Vector v1 = random_vector<Vector>(random), v2 = random_vector<Vector>(random);
+      const Vector d0 = random_vector<Vector>(random), zero = Vector::Zero();
+      const auto [x1, x2] = billiards::collide_along_direction(m1, v1, m2, v2, d0, e);
+      const auto [y1, y2] = billiards::collide_if_approaching(m1, zero, v1, m2, d0, v2, e);
+      for (int k = limits::min_exponent - limits::digits; k < limits::max_exponent; ++k) {
+        Vector d;
+        for (int i = 0; i < N; ++i) d[i] = std::ldexp(d0[i], k);
+        bool exact_scaling = d.allFinite();
+        for (int i = 0; i < N; ++i) exact_scaling = exact_scaling && std::ldexp(d[i], -k) == d0[i];
+        if (!exact_scaling) continue;
+        const auto [z1, z2] = billiards::collide_along_direction(m1, v1, m2, v2, d, e);
+        const auto [w1, w2] = billiards::collide_if_approaching(m1, zero, v1, m2, d, v2, e);
+        if (!bits_equal(z1, x1) || !bits_equal(z2, x2) || !bits_equal(w1, y1) || !bits_equal(w2, y2)) {
+          FAIL("d = 2^" << k << " d0 differs from d0");
+        }
+        ++compared;
+      }
+    }
+    CHECK(compared > 18 * (limits::max_exponent - limits::min_exponent));
+  }
+
   SECTION("only approaching contacts are resolved; separating ones are left unchanged") {
     int approaching = 0, separating = 0;
     for (int trial = 0; trial < 10000; ++trial) {
@@ -253,4 +286,24 @@ TEMPLATE_TEST_CASE("Unchanged means every bit: negative zeros are kept", "[runti
     const Vector r = billiards::reflect(negative_zero, n);
     CHECK(bits_equal(r, negative_zero));
   }
+}
+
+TEMPLATE_TEST_CASE("The moderate squared length: bits against comparisons on every kind of input",
+                   "[runtime][beyond]", float, double) {
+  using Scalar = TestType;
+  using limits = std::numeric_limits<Scalar>;
+  const Scalar high = std::ldexp(Scalar(1), limits::max_exponent / 4), low = 1 / high;
+  std::vector<Scalar> inputs = billiards_test::every_kind_of<Scalar>(23, 3000);
+  for (const Scalar edge : {low, high}) {
+    inputs.push_back(edge);
+    inputs.push_back(std::nextafter(edge, Scalar(0)));
+    inputs.push_back(std::nextafter(edge, limits::infinity()));
+  }
+  int inside = 0;
+  for (const Scalar x : inputs) {
+    const bool expected = low <= x && x <= high;
+    CHECK(billiards::detail::has_moderate_squared_length(x) == expected);
+    inside += expected ? 1 : 0;
+  }
+  CHECK(inside > 4);
 }

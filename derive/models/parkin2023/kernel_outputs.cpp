@@ -78,6 +78,39 @@ void kernel_outputs(Recorder& record, const Setting& setting, const Selection& s
         .display_definitions = {{s.relative_direction_speed, direction_speed_in_components}},
         .depends_on = {"beyond.any_normal.direction_form", "beyond.restitution.impulse_coefficients"},
     });
+    // The changes see the velocities only through their difference: moving both balls by the same
+    // velocity along the line of centres changes nothing. So the runtime passes the kernels 0 and one
+    // dot product (v2 − v1)·n in place of v1·n and v2·n.
+    {
+      const GiNaC::realsymbol shift("u");
+      const GiNaC::exmap along_n{{s.v1n, s.v1n + shift}, {s.v2n, s.v2n + shift}};
+      GiNaC::exmap along_d;
+      for (std::size_t i = 0; i < space.v1.size(); ++i) {
+        along_d[space.v1[i]] = space.v1[i] + shift * direction.d[i];
+        along_d[space.v2[i]] = space.v2[i] + shift * direction.d[i];
+      }
+      lst shifted, unchanged;
+      for (const ex& change : changes_e) shifted.append(GiNaC::normal(change.subs(along_n) - change));
+      for (const ex& multiple : multiples) shifted.append(GiNaC::normal(multiple.subs(along_d) - multiple));
+      for (std::size_t i = 0; i < shifted.nops(); ++i) unchanged.append(0);
+      record.add({
+          .id = "kernel.relative_speed_only",
+          .statement = "The collision kernels depend on v1·n and v2·n (v1·d and v2·d) only through their "
+                       "difference: adding the same u to both (u d to v1 and v2) leaves every change "
+                       "unchanged, so the kernels may be given 0 and (v2 − v1)·n.",
+          .method = "v1·n → v1·n + u, v2·n → v2·n + u in kernel.normal_velocity_change, v_i → v_i + u d in "
+                    "kernel.direction_velocity_change (3-D components); each change minus the original, "
+                    "zero after normal()",
+          .comparison = Comparison::identity,
+          .paper_expression = unchanged,
+          .derived_expression = shifted,
+          .note = "The runtime's calls and collide_batch compute (v2 − v1)·n as one dot product of the "
+                  "difference (detail::difference_dot) and pass v1·n = 0: three subtractions in place of "
+                  "a second dot product, and no cancellation between two large dot products. e = 1 "
+                  "covers the elastic kernel, the clamped speed the approaching one.",
+          .depends_on = {"kernel.normal_velocity_change", "kernel.direction_velocity_change"},
+      });
+    }
     // Only approaching balls: the relative speed along d clamped as beyond.approaching.kernel_form proves.
     const ex clamped = approach_speed.subs(speed == direction_speed_in_components);
     const lst approaching{GiNaC::normal(multiples.op(0) / direction_speed_in_components) * clamped,

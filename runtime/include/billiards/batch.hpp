@@ -102,9 +102,9 @@ void collide_batch(std::span<const Scalar> m1, const Components<Scalar, Dimensio
         d[k] = normal[k][i];
       }
       const auto normal_at = [&](std::size_t k) { return d[k]; };
-      const Scalar v1n = detail::dot<Dimension>([&](std::size_t k) { return a[k]; }, normal_at);
-      const Scalar v2n = detail::dot<Dimension>([&](std::size_t k) { return b[k]; }, normal_at);
-      const auto change = kernel(mass1[i], mass2[i], v1n, v2n);
+      const Scalar relative = detail::difference_dot<Dimension>(
+          [&](std::size_t k) { return a[k]; }, [&](std::size_t k) { return b[k]; }, normal_at);
+      const auto change = kernel(mass1[i], mass2[i], Scalar(0), relative);
       for (std::size_t k = 0; k < Dimension; ++k) {
         x1[k][i] = detail::plus_multiple(a[k], change.first, d[k]);
         x2[k][i] = detail::plus_multiple(b[k], change.second, d[k]);

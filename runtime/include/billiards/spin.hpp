@@ -90,12 +90,11 @@ template <typename Scalar, typename DN>
   detail::assert_restitution(restitution);
   const detail::Vector3<Scalar> normal = n;
   const Scalar m1 = ball1.mass, m2 = ball2.mass;
-  const Scalar v1n = detail::dot(ball1.velocity, normal), v2n = detail::dot(ball2.velocity, normal);
-  const Scalar relative_normal_speed = v2n - v1n;
+  const Scalar relative_normal_speed = detail::difference_dot(ball1.velocity, ball2.velocity, normal);
   if (!(relative_normal_speed < 0)) return {ball1, ball2};  // separating, resting or NaN: unchanged
   Collision<SpinningBall<Scalar>> after{ball1, ball2};
   // The normal part: the restitution kernel, as collide(m1, v1, m2, v2, n, e).
-  const auto change = kernels::normal_velocity_change(m1, m2, v1n, v2n, restitution);
+  const auto change = kernels::normal_velocity_change(m1, m2, Scalar(0), relative_normal_speed, restitution);
   after.first.velocity = detail::plus_multiple(ball1.velocity, change.first, normal);
   after.second.velocity = detail::plus_multiple(ball2.velocity, change.second, normal);
   // The tangential part: Coulomb friction against the slip of the contact points.
