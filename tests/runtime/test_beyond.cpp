@@ -192,9 +192,10 @@ TEMPLATE_TEST_CASE("Beyond the paper", "[runtime][beyond]", (Config<float, 2>), 
   }
 
   SECTION("a direction of any length gives the same bits, taken as it is or scaled first") {
-    // d = 2^k d0 for every k that keeps d exact and finite: where d·d is moderate the call takes d as
-    // it is, elsewhere it scales d first; every quantity then differs by a power of two only, so the
-    // results must agree with d0's to the last bit, in both calls that take a direction.
+    // d = 2^k d0 for every k that keeps d exact and finite: where d·d is moderate the call takes the dot
+    // products of d as it is and scales late, elsewhere it scales d first; every quantity then differs
+    // by a power of two only, so the results must agree with d0's to the last bit, in both calls that
+    // take a direction.
     const auto bits_equal = [](const Vector& a, const Vector& b) {
       return std::memcmp(a.data(), b.data(), sizeof(Scalar) * std::size_t(N)) == 0;
     };
@@ -292,7 +293,7 @@ TEMPLATE_TEST_CASE("The moderate squared length: bits against comparisons on eve
                    "[runtime][beyond]", float, double) {
   using Scalar = TestType;
   using limits = std::numeric_limits<Scalar>;
-  const Scalar high = std::ldexp(Scalar(1), limits::max_exponent / 4), low = 1 / high;
+  const Scalar high = std::ldexp(Scalar(1), limits::max_exponent / 4), low = 1;
   std::vector<Scalar> inputs = billiards_test::every_kind_of<Scalar>(23, 3000);
   for (const Scalar edge : {low, high}) {
     inputs.push_back(edge);

@@ -254,8 +254,8 @@ template <typename Scalar, std::size_t N>
   for (std::size_t k = 0; k < N; ++k) d[k] = times_power_of_two(d[k], exponent);
 }
 
-/// 2^±(E/4), E = max_exponent (2^±256 in double, 2^±32 in float): the squared lengths d·d for which a
-/// collision along d needs no scaling (has_moderate_squared_length).
+/// 2^(E/4), E = max_exponent (2^256 in double, 2^32 in float): the top of the squared lengths d·d for
+/// which collide_along() takes d as it is (has_moderate_squared_length).
 template <typename Scalar>
 [[nodiscard]] constexpr Scalar moderate_squared_length_high() noexcept {
   Scalar power = 1;
@@ -263,33 +263,16 @@ template <typename Scalar>
   return power;
 }
 
-/// Whether d·d (`squared_length`) lies in [2^−(E/4), 2^(E/4)] (false for NaN, ±∞, 0 and negatives).
-/// There the collision along d is taken on d itself: scale_to_unit_binade would multiply d by a power of
-/// two 2^−e and every quantity of the collision by a power of two with it (v·d by 2^−e, d·d by 2^−2e,
-/// the multiple c of d by 2^e, c·d not at all), so the result has the same bits either way, short of a
-/// product of components that falls into the subnormal range in one and not the other. The range keeps
-/// d·d a normal number, |d|∞ ≥ 2^−(E/8)/√N and (v2 − v1)·d/(d·d) ≤ |v2 − v1| 2^(E/8) √N: finite for
-/// every velocity below the checked API's component_limit. On IEEE float and double the test compares
-/// bits, as kernels::within_plain_mass_range does (kernels::bits_above): one subtraction, one comparison.
+/// Whether d·d (`squared_length`) lies in [1, 2^(E/4)] (false for NaN, ±∞, zero and negatives). On IEEE
+/// float and double the test compares bits, as kernels::within_plain_mass_range does
+/// (kernels::bits_above): one subtraction, one comparison.
 template <typename Scalar>
 [[nodiscard]] constexpr bool has_moderate_squared_length(Scalar squared_length) noexcept {
-  constexpr Scalar high = moderate_squared_length_high<Scalar>(), low = 1 / high;
+  constexpr Scalar low = 1, high = moderate_squared_length_high<Scalar>();
   if constexpr (kernels::orders_as_bits<Scalar>()) {
     return kernels::bits_above(squared_length, low) <= kernels::bits_above(high, low);
   } else {
     return low <= squared_length && squared_length <= high;
-  }
-}
-
-/// `d` as collide_along_scaled takes it: itself where d·d is moderate (has_moderate_squared_length),
-/// else scaled to its unit binade. The length of d never matters; the common d skips the scaling, whose
-/// integer maximum of exponent fields stood between the inputs and every product of the call (1.6 →
-/// 1.3 times the hand-written form's time in the benchmark).
-template <typename Scalar, std::size_t N>
-[[gnu::always_inline]] inline void scale_unless_moderate(std::array<Scalar, N>& d) noexcept {
-  if (!has_moderate_squared_length(
-          dot<N>([&d](std::size_t k) { return d[k]; }, [&d](std::size_t k) { return d[k]; }))) {
-    scale_to_unit_binade(d);
   }
 }
 
@@ -318,6 +301,47 @@ template <typename D1, typename D2, typename Scalar, std::size_t N, typename Ker
     after.second[Eigen::Index(k)] = plus_multiple(second(k), change.second, d[k]);
   }
   return after;
+}
+
+/// The collision along `d`, of any length, by `kernel` (as collide_along_scaled): the same bits as
+/// scale_to_unit_binade then collide_along_scaled wherever their intermediates are normal numbers, and
+/// no fewer digits elsewhere.
+///
+/// Scaling d by 2^−e (d' = 2^−e d, |d'|∞ in [1/2, 1)) scales v·d by 2^−e and d·d by 2^−2e, exactly
+/// while they stay normal, and the multiple of d' the kernel returns is that of d times 2^e
+/// (beyond.any_normal.scale_invariant). So where d·d lies in [1, 2^(E/4)] (has_moderate_squared_length)
+/// the dot products are taken on d itself, and the kernel is given d·d · 2^−e: it then divides
+/// (v2 − v1)·d 2^−e by d·d 2^−2e, to the bit, and returns the multiple of d' that
+/// collide_along_scaled would, which is applied to d' = 2^−e d (exact). Only the factor 2^−e waits
+/// for the integer maximum of d's exponent fields, beside the dot products rather than before them
+/// (1.6 → 1.3 times the hand-written form's time in the benchmark). In that range 2^−e ≤ 1, so every
+/// product of components is at least as large as its scaled twin: none underflows that would not
+/// scaled, and d·d ≤ 2^(E/4) keeps |d|∞ ≤ 2^(E/8), so none overflows for velocities below the checked
+/// API's component_limit. Elsewhere, and for scalars without an IEEE exponent field, d is scaled first.
+template <typename D1, typename D2, typename Scalar, std::size_t N, typename Kernel>
+[[gnu::always_inline]] inline Collision<PlainVector<D1>> collide_along(const Eigen::MatrixBase<D1>& v1,
+                                                                       const Eigen::MatrixBase<D2>& v2,
+                                                                       std::array<Scalar, N> d,
+                                                                       Kernel kernel) noexcept {
+  if constexpr (has_exponent_field<Scalar>) {
+    const auto along = [&d](std::size_t k) { return d[k]; };
+    if (const Scalar dd = dot<N>(along, along); has_moderate_squared_length(dd)) {
+      using Field = ExponentField<Scalar>;
+      const Scalar factor = Field::inverse(Field::largest(d));  // 2^−e, a normal number here
+      const auto first = [&v1](std::size_t k) { return v1[Eigen::Index(k)]; };
+      const auto second = [&v2](std::size_t k) { return v2[Eigen::Index(k)]; };
+      const auto change = kernel(Scalar(0), difference_dot<N>(first, second, along), dd * factor);
+      Collision<PlainVector<D1>> after;
+      for (std::size_t k = 0; k < N; ++k) {
+        const Scalar scaled = d[k] * factor;
+        after.first[Eigen::Index(k)] = plus_multiple(first(k), change.first, scaled);
+        after.second[Eigen::Index(k)] = plus_multiple(second(k), change.second, scaled);
+      }
+      return after;
+    }
+  }
+  scale_to_unit_binade(d);
+  return collide_along_scaled(v1, v2, d, kernel);
 }
 
 /// |v| from v scaled by the power of two of its largest component (exact) and scaled back: the squares
@@ -484,8 +508,7 @@ template <typename D1, typename D2, typename DN>
 /// alike): the same as collide() with \f$n = d/|d|\f$, without a square root, and unchanged when
 /// \f$d\f$ is scaled. Audit claims `beyond.any_normal.direction_form`,
 /// `beyond.any_normal.scale_invariant`; kernel kernels::direction_velocity_change.
-/// Where d·d lies outside [2^−(E/4), 2^(E/4)] (E = max_exponent) d is first scaled by a power of two
-/// (exact; the same bits as d itself where both are finite), so its length never matters.
+/// d is scaled by a power of two (exact; detail::collide_along), so its length never matters.
 /// Preconditions (not checked): \f$d \ne 0\f$ and finite (a zero direction gives NaN), masses as
 /// for collide().
 template <typename D1, typename D2, typename DD>
@@ -496,9 +519,7 @@ template <typename D1, typename D2, typename DD>
   detail::require_vectors<D1, D2, DD>();
   detail::assert_masses(m1, m2);
   detail::assert_restitution(restitution);
-  auto direction = detail::scalars_of(d);
-  detail::scale_unless_moderate(direction);
-  return detail::collide_along_scaled(v1, v2, direction, [&](auto v1d, auto v2d, auto dd) {
+  return detail::collide_along(v1, v2, detail::scalars_of(d), [&](auto v1d, auto v2d, auto dd) {
     return kernels::direction_velocity_change(m1, m2, v1d, v2d, dd, restitution);
   });
 }
@@ -520,9 +541,7 @@ template <typename DP1, typename D1, typename DP2, typename D2>
   detail::require_vectors<D1, D2, DP1, DP2>();
   detail::assert_masses(m1, m2);
   detail::assert_restitution(restitution);
-  auto d = detail::scalars_of(p2 - p1);
-  detail::scale_unless_moderate(d);
-  return detail::collide_along_scaled(v1, v2, d, [&](auto v1d, auto v2d, auto dd) {
+  return detail::collide_along(v1, v2, detail::scalars_of(p2 - p1), [&](auto v1d, auto v2d, auto dd) {
     return kernels::approaching_direction_velocity_change(m1, m2, v1d, v2d, dd, restitution);
   });
 }
