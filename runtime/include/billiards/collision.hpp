@@ -314,10 +314,11 @@ template <typename D1, typename D2, typename Scalar, std::size_t N, typename Ker
 /// (v2 − v1)·d 2^−e by d·d 2^−2e, to the bit, and returns the multiple of d' that
 /// collide_along_scaled would, which is applied to d' = 2^−e d (exact). Only the factor 2^−e waits
 /// for the integer maximum of d's exponent fields, beside the dot products rather than before them
-/// (1.76 → 1.5 times the hand-written form's time in the benchmark). In that range 2^−e ≤ 1, so every
-/// product of components is at least as large as its scaled twin: none underflows where the scaled
-/// one would not, and d·d ≤ 2^(E/4) keeps |d|∞ ≤ 2^(E/8), so none overflows for velocities below the checked
-/// API's component_limit. Elsewhere, and for scalars without an IEEE exponent field, d is scaled first.
+/// (1.76 → 1.5 times the hand-written form's time in the benchmark). In that range 2^−e ≤ 1, so
+/// every product of components is at least as large as its scaled twin: none underflows where the
+/// scaled one would not, and d·d ≤ 2^(E/4) keeps |d|∞ ≤ 2^(E/8), so none overflows for velocities
+/// below the checked API's component_limit. Elsewhere, and for scalars without an IEEE exponent
+/// field, d is scaled first.
 template <typename D1, typename D2, typename Scalar, std::size_t N, typename Kernel>
 [[gnu::always_inline]] inline Collision<PlainVector<D1>> collide_along(const Eigen::MatrixBase<D1>& v1,
                                                                        const Eigen::MatrixBase<D2>& v2,
