@@ -224,6 +224,38 @@ TEMPLATE_TEST_CASE("Beyond the paper", "[runtime][beyond]", (Config<float, 2>), 
     CHECK(compared > 18 * (limits::max_exponent - limits::min_exponent));
   }
 
+  SECTION("a heavy ball's subnormal change keeps its digits along a direction of any length") {
+    // m1/m2 beyond the normal range: ball 1 moves by a subnormal amount. Scaled to its unit binade, d
+    // leaves that change within a rounding or two of the smallest subnormal; taken unscaled, a long d
+    // would multiply the rounding of the multiple by |d| (what the fuzzer once found).
+    using limits = std::numeric_limits<Scalar>;
+    const Scalar heavy = std::ldexp(Scalar(1), limits::max_exponent / 2);
+    const Scalar light = std::ldexp(Scalar(1), -limits::max_exponent / 2 - 10);
+    const long double tiny = limits::denorm_min();
+    Vector v1 = Vector::Zero(), v2 = Vector::Zero(), d0 = Vector::Zero();
+    for (int i = 0; i < N; ++i) {
+      v2[i] = Scalar(-1) / Scalar(i + 1);
+      d0[i] = Scalar(1) - Scalar(0.25) * Scalar(i);
+    }
+    for (int k = -30; k <= 30; ++k) {
+      Vector d;
+      for (int i = 0; i < N; ++i) d[i] = std::ldexp(d0[i], k);
+      for (const Scalar e : {Scalar(1), Scalar(0.5)}) {
+        const auto [x1, x2] = billiards::collide_along_direction(heavy, v1, light, v2, d, e);
+        const auto reference =
+            paper::restitution_collision<N>(heavy, exact(v1), light, exact(v2), exact(d), e);
+        for (int i = 0; i < N; ++i) {
+          REQUIRE(reference.x1[i] != 0);
+          REQUIRE(std::fabs(reference.x1[i]) < limits::min());
+          if (!(std::fabs(x1[i] - reference.x1[i]) <= 2 * tiny)) {
+            FAIL("d = 2^" << k << " d0, e = " << e << ": x1[" << i << "] = " << x1[i] << ", exact "
+                          << static_cast<double>(reference.x1[i]));
+          }
+        }
+      }
+    }
+  }
+
   SECTION("only approaching contacts are resolved; separating ones are left unchanged") {
     int approaching = 0, separating = 0;
     for (int trial = 0; trial < 10000; ++trial) {
