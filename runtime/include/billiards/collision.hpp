@@ -284,41 +284,44 @@ template <typename Derived>
   return scalars;
 }
 
-/// The collision along `direction` (already scaled to its unit binade) by `kernel`, one of the
-/// direction kernels: v1·d, v2·d and d·d in, v1 + c1 d and v2 + c2 d out, on scalars throughout.
+/// The collision along d' = factor · d by `kernel`, one of the direction kernels, given d and
+/// squared_length = d'·d'/factor: the kernel takes 0, (v2 − v1)·d and squared_length, and returns the
+/// multiples c1, c2 of d'; out come v1 + c1 d' and v2 + c2 d', on scalars throughout. The kernel's
+/// quotient (v2 − v1)·d/squared_length is (v2 − v1)·d'/(d'·d'), so with d already scaled, factor 1 and
+/// squared_length d·d, this is the collision along d as the kernel defines it.
 template <typename D1, typename D2, typename Scalar, std::size_t N, typename Kernel>
-[[gnu::always_inline]] inline Collision<PlainVector<D1>> collide_along_scaled(const Eigen::MatrixBase<D1>& v1,
-                                                                              const Eigen::MatrixBase<D2>& v2,
-                                                                              const std::array<Scalar, N>& d,
-                                                                              Kernel kernel) noexcept {
+[[gnu::always_inline]] inline Collision<PlainVector<D1>> collide_along_multiple(
+    const Eigen::MatrixBase<D1>& v1, const Eigen::MatrixBase<D2>& v2, const std::array<Scalar, N>& d,
+    Scalar squared_length, Scalar factor, Kernel kernel) noexcept {
   const auto along = [&d](std::size_t k) { return d[k]; };
   const auto first = [&v1](std::size_t k) { return v1[Eigen::Index(k)]; };
   const auto second = [&v2](std::size_t k) { return v2[Eigen::Index(k)]; };
-  const auto change = kernel(Scalar(0), difference_dot<N>(first, second, along), dot<N>(along, along));
+  const auto change = kernel(Scalar(0), difference_dot<N>(first, second, along), squared_length);
   Collision<PlainVector<D1>> after;
   for (std::size_t k = 0; k < N; ++k) {
-    after.first[Eigen::Index(k)] = plus_multiple(first(k), change.first, d[k]);
-    after.second[Eigen::Index(k)] = plus_multiple(second(k), change.second, d[k]);
+    const Scalar scaled = d[k] * factor;
+    after.first[Eigen::Index(k)] = plus_multiple(first(k), change.first, scaled);
+    after.second[Eigen::Index(k)] = plus_multiple(second(k), change.second, scaled);
   }
   return after;
 }
 
-/// The collision along `d`, of any length, by `kernel` (as collide_along_scaled): the same bits as
-/// scale_to_unit_binade then collide_along_scaled wherever their intermediates are normal numbers, and
-/// no fewer digits elsewhere.
+/// The collision along `d`, of any length, by `kernel` (collide_along_multiple): the same bits as
+/// scaling d to its unit binade first (scale_to_unit_binade) wherever the intermediates of both are
+/// normal numbers, and no fewer digits elsewhere.
 ///
 /// Scaling d by 2^−e (d' = 2^−e d, |d'|∞ in [1/2, 1)) scales v·d by 2^−e and d·d by 2^−2e, exactly
 /// while they stay normal, and the multiple of d' the kernel returns is that of d times 2^e
 /// (beyond.any_normal.scale_invariant). So where d·d lies in [1, 2^(E/4)] (has_moderate_squared_length)
 /// the dot products are taken on d itself, and the kernel is given d·d · 2^−e: it then divides
-/// (v2 − v1)·d 2^−e by d·d 2^−2e, to the bit, and returns the multiple of d' that
-/// collide_along_scaled would, which is applied to d' = 2^−e d (exact). Only the factor 2^−e waits
-/// for the integer maximum of d's exponent fields, beside the dot products rather than before them
-/// (1.76 → 1.5 times the hand-written form's time in the benchmark). In that range 2^−e ≤ 1, so
-/// every product of components is at least as large as its scaled twin: none underflows where the
-/// scaled one would not, and d·d ≤ 2^(E/4) keeps |d|∞ ≤ 2^(E/8), so none overflows for velocities
-/// below the checked API's component_limit. Elsewhere, and for scalars without an IEEE exponent
-/// field, d is scaled first.
+/// (v2 − v1)·d 2^−e by d·d 2^−2e, to the bit, and returns the multiple of d' that it returns for d'
+/// itself, which is applied to d' = 2^−e d (exact). Only the factor 2^−e waits for the integer
+/// maximum of d's exponent fields, beside the dot products rather than before them (1.76 → 1.5 times
+/// the hand-written form's time in the benchmark). In that range 2^−e ≤ 1, so every product of
+/// components is at least as large as its scaled twin: none underflows where the scaled one would
+/// not, and d·d ≤ 2^(E/4) keeps |d|∞ ≤ 2^(E/8), so none overflows for velocities below the checked
+/// API's component_limit. Elsewhere, and for scalars without an IEEE exponent field, d is scaled
+/// first.
 template <typename D1, typename D2, typename Scalar, std::size_t N, typename Kernel>
 [[gnu::always_inline]] inline Collision<PlainVector<D1>> collide_along(const Eigen::MatrixBase<D1>& v1,
                                                                        const Eigen::MatrixBase<D2>& v2,
@@ -329,20 +332,12 @@ template <typename D1, typename D2, typename Scalar, std::size_t N, typename Ker
     if (const Scalar dd = dot<N>(along, along); has_moderate_squared_length(dd)) {
       using Field = ExponentField<Scalar>;
       const Scalar factor = Field::inverse(Field::largest(d));  // 2^−e, a normal number here
-      const auto first = [&v1](std::size_t k) { return v1[Eigen::Index(k)]; };
-      const auto second = [&v2](std::size_t k) { return v2[Eigen::Index(k)]; };
-      const auto change = kernel(Scalar(0), difference_dot<N>(first, second, along), dd * factor);
-      Collision<PlainVector<D1>> after;
-      for (std::size_t k = 0; k < N; ++k) {
-        const Scalar scaled = d[k] * factor;
-        after.first[Eigen::Index(k)] = plus_multiple(first(k), change.first, scaled);
-        after.second[Eigen::Index(k)] = plus_multiple(second(k), change.second, scaled);
-      }
-      return after;
+      return collide_along_multiple(v1, v2, d, dd * factor, factor, kernel);
     }
   }
   scale_to_unit_binade(d);
-  return collide_along_scaled(v1, v2, d, kernel);
+  const auto scaled = [&d](std::size_t k) { return d[k]; };
+  return collide_along_multiple(v1, v2, d, dot<N>(scaled, scaled), Scalar(1), kernel);
 }
 
 /// |v| from v scaled by the power of two of its largest component (exact) and scaled back: the squares
