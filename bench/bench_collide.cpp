@@ -10,6 +10,8 @@
 #include <billiards/batch.hpp>
 #include <billiards/cloth.hpp>
 #include <billiards/collision.hpp>
+#include <billiards/detail/arithmetic.hpp>
+#include <billiards/kernels.hpp>
 #include <billiards/reference_kernels.hpp>
 #include <billiards/spin.hpp>
 
@@ -426,9 +428,18 @@ struct PairLoad {
   }
 };
 
-// The paper's plain formula over the same arrays, the loop a user would write instead of collide_batch:
-// x1 = v1 + (2 m2/(m1 + m2)) s n, x2 = v2 − (2 m1/(m1 + m2)) s n.
-template <typename Scalar>
+// The paper's plain formula over the same arrays, the loop a user would write instead of collide_batch
+// (PlainStep::paper): x1 = v1 + (2 m2/(m1 + m2)) s n, x2 = v2 − (2 m1/(m1 + m2)) s n, one division by
+// m1 + m2 and a multiply-add a component. The later steps turn it into collide_batch's pass one promise
+// at a time, so that bench/report.py can say what each costs in cache:
+// - keeping_zero_signs: the update v − (0 − c n) of detail::plus_multiple, which leaves v's bits alone
+//   where c n is 0 (−0 stays −0: "unchanged" means bit for bit) — two operations a component for one;
+// - generated_form: also the coefficients of kernels::plain_elastic_normal_velocity_change, 2 m2/(m1 + m2)
+//   and 2 m1/(m1 + m2), two divisions by the one sum, which give equal masses their exact exchange
+//   (2 m/(2 m) = 1) — collide_batch's pass over a block, without the mass-range test before it.
+enum class PlainStep { paper, keeping_zero_signs, generated_form };
+
+template <typename Scalar, PlainStep step>
 void plain_batch(benchmark::State& state) {
   const auto count = static_cast<std::size_t>(state.range(0));
   BatchArrays<Scalar> arrays(count);
@@ -447,11 +458,29 @@ void plain_batch(benchmark::State& state) {
       const PairLoad<Scalar> pair(x, y, d, i);
       const Scalar s = (pair.y[0] - pair.x[0]) * pair.d[0] + (pair.y[1] - pair.x[1]) * pair.d[1] +
                        (pair.y[2] - pair.x[2]) * pair.d[2];
-      const Scalar per_mass = Scalar(2) * s / (a[i] + b[i]);
-      const Scalar first = per_mass * b[i], second = per_mass * a[i];
-      for (int k = 0; k < 3; ++k) {
-        x[k][i] = pair.x[k] + first * pair.d[k];
-        y[k][i] = pair.y[k] - second * pair.d[k];
+      if constexpr (step == PlainStep::paper) {
+        const Scalar per_mass = Scalar(2) * s / (a[i] + b[i]);
+        const Scalar first = per_mass * b[i], second = per_mass * a[i];
+        for (int k = 0; k < 3; ++k) {
+          x[k][i] = pair.x[k] + first * pair.d[k];
+          y[k][i] = pair.y[k] - second * pair.d[k];
+        }
+      } else {
+        Scalar first, second;
+        if constexpr (step == PlainStep::keeping_zero_signs) {
+          const Scalar per_mass = Scalar(2) * s / (a[i] + b[i]);
+          first = per_mass * b[i];
+          second = -(per_mass * a[i]);
+        } else {
+          const auto change =
+              billiards::kernels::plain_elastic_normal_velocity_change(a[i], b[i], Scalar(0), s);
+          first = change.first;
+          second = change.second;
+        }
+        for (int k = 0; k < 3; ++k) {
+          x[k][i] = billiards::detail::plus_multiple(pair.x[k], first, pair.d[k]);
+          y[k][i] = billiards::detail::plus_multiple(pair.y[k], second, pair.d[k]);
+        }
       }
     }
     benchmark::ClobberMemory();
@@ -570,12 +599,23 @@ void register_type(const std::string& type) {
   }
   const std::pair<const char*, Function> per_pair[] = {
       {"batch", batch<Scalar>},
-      {"plain_batch", plain_batch<Scalar>},
+      {"plain_batch", plain_batch<Scalar, PlainStep::paper>},
       {"bandwidth", bandwidth_ceiling<Scalar, false>},
       {"bandwidth_prefetched", bandwidth_ceiling<Scalar, true>},
       {"divisions", division_limit<Scalar>}};
+  // The steps from the plain formula's loop to collide_batch (PlainStep), where the goal is against
+  // that loop: in cache, up to 10^4 pairs.
+  const std::pair<const char*, Function> in_cache[] = {
+      {"plain_batch_keeping_zero_signs", plain_batch<Scalar, PlainStep::keeping_zero_signs>},
+      {"plain_batch_generated_form", plain_batch<Scalar, PlainStep::generated_form>}};
   for (std::int64_t pairs = 100; pairs <= max_pairs(); pairs *= 10) {
     for (const auto& [group, function] : per_pair) {
+      benchmark::RegisterBenchmark((std::string(group) + "/" + type).c_str(), function)
+          ->Arg(pairs)
+          ->UseRealTime();
+    }
+    for (const auto& [group, function] : in_cache) {
+      if (pairs > 10'000) break;
       benchmark::RegisterBenchmark((std::string(group) + "/" + type).c_str(), function)
           ->Arg(pairs)
           ->UseRealTime();

@@ -149,6 +149,30 @@ def batch_goals(runs):
     return "\n".join(out)
 
 
+
+def batch_steps(runs):
+    """In cache, the plain formula's loop turned into collide_batch one promise at a time (PlainStep in
+    bench_collide.cpp): each step's time a pair and its ratio to the step before, and the product,
+    collide_batch over the plain loop."""
+    steps = ["plain_batch", "plain_batch_keeping_zero_signs", "plain_batch_generated_form", "batch"]
+    lines = ["| type | pairs | 1. plain loop, ns a pair | 2. keeping −0 | 3. generated plain kernel | "
+             "4. mass-range test: collide_batch | collide_batch over the plain loop |",
+             "|---|---:|---:|---:|---:|---:|---:|"]
+    found = False
+    for scalar in ("double", "float"):
+        for pairs in (100, 1000, 10000):
+            row = [runs.get(f"{name}/{scalar}/{pairs}") for name in steps]
+            if not all(row):
+                continue
+            found = True
+            ns = [1e9 / pairs_per_second(b) for b in row]
+            cells = [scalar, f"{pairs:,}", f"{ns[0]:.3f}"]
+            cells += [f"{ns[k]:.3f} ({ns[k] / ns[k - 1]:.2f}×)" for k in range(1, len(ns))]
+            cells.append(f"{ns[-1] / ns[0]:.2f}×")
+            lines.append("| " + " | ".join(cells) + " |")
+    return "\n".join(lines) if found else "(not in this run)"
+
+
 def table_events(runs):
     rows = sorted((int(name.split("/")[-1]), b) for name, b in runs.items() if name.startswith("table/events/"))
     if not rows:
@@ -312,6 +336,21 @@ of the same length (`divisions/*`): where the data sit in cache it, not the band
 {batch_table(runs)}
 
 {batch_goals(runs)}
+
+### Where the batch's time goes in cache
+
+The plain formula's loop turned into collide_batch one promise at a time, over the same arrays; each
+step's time a pair, and in brackets its ratio to the step before:
+
+1. `plain_batch/*`: the paper's formula, one division by m1 + m2 and a multiply-add a component;
+2. `plain_batch_keeping_zero_signs/*`: the update v − (0 − c n), which leaves an unchanged velocity's
+   bits alone, −0 included (issue 12);
+3. `plain_batch_generated_form/*`: the generated plain kernel, 2 m2/(m1 + m2) and 2 m1/(m1 + m2), two
+   divisions by one sum, which give equal masses their exact exchange (issue 3): collide_batch's pass;
+4. `batch/*`: collide_batch itself, which also tests the masses' range before each block of 4096 pairs
+   to pick the plain kernel or the full one for it.
+
+{batch_steps(runs)}
 
 {"![throughput against N](throughput.svg)" if svg_written else ""}
 
