@@ -28,6 +28,13 @@ struct Guard {
     /// A condition that never holds in exact arithmetic, only after rounding: `x < 0` where `claim` is
     /// a verified sign claim that x ≥ 0. Validated against that claim.
     unreachable,
+    /// A value no output sees: where the condition holds, piecewise guards of the same condition
+    /// override every output that would read the step. For a step whose usual form would fault there
+    /// and cost time doing so, e.g. the argument of a square root that is negative where the kernel
+    /// returns +∞ anyway (√ of a negative number raises the invalid flag and, under errno, calls into
+    /// libm). Validated: with it taken or not, beside those piecewise guards and any combination of the
+    /// others, every output is the same. An exact evaluation honours it, as the code does.
+    overridden,
   };
   GiNaC::ex condition;
   GiNaC::ex alternative;

@@ -37,6 +37,7 @@ class Validation {
     check_same_value_groups();
     check_piecewise_guards();
     check_unreachable_guards();
+    check_overridden_guards();
     return problems_;
   }
 
@@ -386,6 +387,56 @@ class Validation {
       if (!proven) {
         fail(guard.claim, "its guard " + print(guard.condition, Notation::text) +
                               " is not `x < 0` for the x the claim shows to be ≥ 0");
+      }
+    }
+  }
+
+  // An overridden guard changes no output: taken with the piecewise guards of its condition, the
+  // outputs equal those of the same branch without it, whichever of the other guards are taken too.
+  void check_overridden_guards() {
+    for (const GuardAt& at : all_guards()) {
+      const Guard& guard = kernel_.steps[at.first].guards[at.second];
+      if (guard.kind != Guard::Kind::overridden) continue;
+      const std::string where = "its guard " + print(guard.condition, Notation::text) + " on step " +
+                                kernel_.steps[at.first].name.get_name();
+      std::set<GuardAt> overriding;
+      std::vector<GuardAt> others;
+      for (const GuardAt& other : all_guards()) {
+        if (other == at) continue;
+        const Guard& g = kernel_.steps[other.first].guards[other.second];
+        if (g.kind == Guard::Kind::piecewise && same_condition(condition_of(other), condition_of(at))) {
+          overriding.insert(other);
+        } else {
+          others.push_back(other);
+        }
+      }
+      if (overriding.empty()) {
+        fail(guard.claim, where + " is overridden by no piecewise guard of the same condition");
+        continue;
+      }
+      constexpr std::size_t most_others = 10;  // 2^10 branches
+      if (others.size() > most_others) {
+        fail(guard.claim, where + " has too many other guards to try every combination");
+        continue;
+      }
+      for (std::size_t mask = 0; mask < (std::size_t(1) << others.size()); ++mask) {
+        std::set<GuardAt> taken = overriding;
+        for (std::size_t k = 0; k < others.size(); ++k) {
+          if (mask & (std::size_t(1) << k)) taken.insert(others[k]);
+        }
+        const GiNaC::exmap without = step_values(branch_taking(taken));
+        taken.insert(at);
+        const GiNaC::exmap with = step_values(branch_taking(taken));
+        bool same = true;
+        for (const ex& output : kernel_.outputs) {
+          same = same && GiNaC::normal(output.subs(with) - output.subs(without)).is_zero();
+        }
+        if (!same) {
+          fail(guard.claim, where +
+                                " changes an output where it is taken: no piecewise guard of its "
+                                "condition overrides every output that reads it");
+          break;
+        }
       }
     }
   }

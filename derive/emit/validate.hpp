@@ -27,7 +27,9 @@ struct KernelProblem {
 /// - the same with every same_value guard of one condition taken;
 /// - each piecewise guard either keeps the outputs equal to that claim given its condition, or its
 ///   condition (with the later guards of its step not taken) and its value are a case of its claim;
-/// - each unreachable guard reads `x < 0` where its claim is a verified sign claim that x ≥ 0.
+/// - each unreachable guard reads `x < 0` where its claim is a verified sign claim that x ≥ 0;
+/// - each overridden guard has piecewise guards of the same condition, and taken beside them (with any
+///   combination of the other guards) it leaves every output as it is.
 /// Returns every problem found; none means the kernel is proven. Never throws.
 std::vector<KernelProblem> validate_kernel(const Kernel& kernel, const std::vector<Claim>& claims);
 

@@ -76,11 +76,11 @@ bool names_infinity(const ex& e) {
 }
 
 // The kernel's outputs evaluated exactly from its derived steps. An infinite mass is the limit
-// t → 0 of 1/t, taken after normal(): the steps are rational in t. Piecewise guards are honoured (the
-// last one whose condition holds, exactly, gives the value); same-value guards are alternative forms
-// of the same quantity and are skipped. A step that divides by zero (the significands of a duration
-// without friction) is left undefined, and an output that still reads it is an error. A square root is
-// evaluated to GiNaC::Digits digits.
+// t → 0 of 1/t, taken after normal(): the steps are rational in t. Piecewise and overridden guards are
+// honoured (the last one whose condition holds, exactly, gives the value), as the code takes them;
+// same-value guards are alternative forms of the same quantity and are skipped. A step that divides by zero
+// (the significands of a duration without friction) is left undefined, and an output that still reads it is
+// an error. A square root is evaluated to GiNaC::Digits digits.
 template <typename Scalar>
 std::vector<Exact> exact_outputs(const billiards::derive::Kernel& kernel, const Inputs<Scalar>& in) {
   const GiNaC::symbol t("t"), undefined("undefined");
@@ -99,7 +99,9 @@ std::vector<Exact> exact_outputs(const billiards::derive::Kernel& kernel, const 
   for (const billiards::derive::KernelStep& step : kernel.steps) {
     const billiards::derive::Guard* chosen = nullptr;
     for (const billiards::derive::Guard& guard : step.guards) {
-      if (guard.kind != billiards::derive::Guard::Kind::piecewise) continue;
+      if (guard.kind != billiards::derive::Guard::Kind::piecewise &&
+          guard.kind != billiards::derive::Guard::Kind::overridden)
+        continue;
       const ex condition = guard.condition.subs(values);
       if (!GiNaC::is_a<GiNaC::relational>(condition) || has_infinity)
         throw std::logic_error("kernel " + kernel.name + ": a piecewise guard cannot be evaluated exactly");

@@ -74,6 +74,14 @@ const std::vector<Mutation>& paper_mutations() {
       // Beyond the eleven the issue names.
       {"time_of_impact_touching_value", "time_of_impact",
        [](Kernel& k) { step(k, "contact_time").guards.at(0).alternative = 1; }},
+      // √ of 0 where D ≤ 0 (issue 14): only where the time is +∞ anyway, and never passed off as the
+      // same value.
+      {"time_of_impact_root_clamped_under_another_condition", "time_of_impact",
+       [](Kernel& k) {
+         step(k, "root_argument").guards.at(0).condition = symbol(k, "discriminant") <= symbol(k, "gap");
+       }},
+      {"time_of_impact_root_clamp_as_the_same_value", "time_of_impact",
+       [](Kernel& k) { step(k, "root_argument").guards.at(0).kind = Guard::Kind::same_value; }},
       {"reference_discriminant_guard_not_a_sign", "raw_normal_velocity_change",
        [](Kernel& k) { step(k, "discriminant").guards.at(0).condition = symbol(k, "quadratic_b") < 0; }},
       {"step_reads_an_unknown_symbol", "elastic_normal_velocity_change",

@@ -112,6 +112,28 @@ TEST_CASE("A kernel is validated against the claims", "[derive][validate]") {
     kernel.steps[0].guards[0].condition = total - 1 < 0;
     CHECK(mentions(validate_kernel(kernel, claims), "x < 0"));
   }
+  SECTION("an overridden guard must change no output: a piecewise guard of its condition hides it") {
+    // share · x, where x < 0 gives 0: the factor x is clamped to 0 there first (overridden).
+    claims.push_back(verified("test.no_share", 0, {{lst{x < 0}, 0}}));
+    const GiNaC::symbol clamped("clamped"), product("product");
+    const GiNaC::symbol share = kernel.steps[1].name;
+    kernel.steps.push_back({clamped, x, {{x < 0, 0, Guard::Kind::overridden, "test.no_share"}}});
+    kernel.steps.push_back({product, share * clamped, {{x < 0, 0, Guard::Kind::piecewise, "test.no_share"}}});
+    kernel.outputs = {product};
+    CHECK(validate_kernel(kernel, claims).empty());
+    SECTION("no piecewise guard of the same condition") {
+      kernel.steps[3].guards[0].condition = x <= 0;
+      CHECK(mentions(validate_kernel(kernel, claims), "overridden by no piecewise guard"));
+    }
+    SECTION("the piecewise guard's value reads the clamped step") {
+      kernel.steps[3].guards[0].alternative = share * clamped;
+      CHECK(mentions(validate_kernel(kernel, claims), "changes an output"));
+    }
+    SECTION("an output beside the overridden one reads the clamped step") {
+      kernel.outputs.push_back(clamped);
+      CHECK(mentions(validate_kernel(kernel, claims), "changes an output"));
+    }
+  }
   SECTION("the kernel's parameters in the claim's terms") {
     const GiNaC::realsymbol y("y");
     claims = {verified("test.share", a * (y + 1) / (a + b))};

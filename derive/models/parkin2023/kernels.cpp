@@ -298,7 +298,8 @@ Kernel time_of_impact_kernel(const TimeOfImpact& toi) {
   const ex lagrange_in_dots = reduce_modulo((quarter_discriminant + dot(cross, cross)).expand(),
                                             GiNaC::pow(w[2], 2) == vv - w[0] * w[0] - w[1] * w[1]) -
                               cross_squared;
-  const GiNaC::symbol gap("gap"), discriminant("discriminant"), contact_time("contact_time");
+  const GiNaC::symbol gap("gap"), discriminant("discriminant"), root_argument("root_argument"),
+      contact_time("contact_time");
   const lst in_kernel{qb == b_in_dots, qc == gap};  // the stable form c/(√D − b) has no a
   // The dot products in the claims' terms, inverting what was read off: b = pv, c = pp − r², a = vv,
   // D = a r² − |p × w|², and √D for the claims' s.
@@ -319,10 +320,16 @@ Kernel time_of_impact_kernel(const TimeOfImpact& toi) {
           "0 when they already touch (or overlap by rounding) and approach; +∞ when they never touch "
           "(separating, no relative motion, a miss or a graze).",
       .parameters = {pp, pv, vv, cross_squared, contact_distance},
+      // √ is taken of D where D > 0 and of 0 elsewhere, where the time is +∞ whatever it is (an
+      // overridden guard): √ of a negative D, on every miss, raised the invalid flag and went through
+      // libm's errno path, which made time_of_impact 1.4 times slower on the benchmark's cases.
       .steps = {{gap, c_in_dots},
                 {discriminant, lagrange_in_dots},
+                {root_argument,
+                 discriminant,
+                 {{discriminant <= 0, 0, Kind::overridden, "beyond.time_of_impact.grazing"}}},
                 {contact_time,
-                 stable_root.subs(in_kernel).subs(root_of_d == GiNaC::sqrt(discriminant)),
+                 stable_root.subs(in_kernel).subs(root_of_d == GiNaC::sqrt(root_argument)),
                  {{gap < 0, 0, Kind::piecewise, "beyond.time_of_impact.touching_now"},
                   {discriminant <= 0, infinity(), Kind::piecewise, "beyond.time_of_impact.grazing"},
                   {pv >= 0, infinity(), Kind::piecewise, "beyond.time_of_impact.no_contact"}}}},
