@@ -381,8 +381,14 @@ EmittedKernel emit_kernel(const Kernel& kernel) {
     }
     const std::string test = "if (" + kernel.fast_path->predicate + "(" +
                              joined(parameters_read(kernel, kernel.fast_path->conditions), ", ") + "))";
-    emitted.body.push_back(
-        short_if(test, "return " + kernel.fast_path->kernel + "(" + joined(arguments, ", ") + ");"));
+    const std::string call = "return " + kernel.fast_path->kernel + "(";
+    std::string statement = call + joined(arguments, ", ") + ");";
+    // On a line of its own (indented by 4) when it does not fit beside the test, and its arguments
+    // wrapped under the first when it does not fit there either.
+    if (2 + test.size() + 1 + statement.size() > column_limit && 4 + statement.size() > column_limit) {
+      statement = wrapped_list("    " + call, arguments, ");").substr(4);
+    }
+    emitted.body.push_back(short_if(test, statement));
   }
   std::vector<bool> placed(hoisted.size(), false);
   const auto define = [&](const std::string& name, const ex& expression) {

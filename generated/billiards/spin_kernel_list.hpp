@@ -4,7 +4,7 @@
 // (throw after Alciatore, TP A-14), listed by the derivation, so that tests call, measure and compile each
 // one without a list kept by hand.
 //
-// Fingerprint: fnv1a64:bd2fb8b9b0dcd122 (of this header and the audit)
+// Fingerprint: fnv1a64:e7a0a9b7d1838a97 (of this header and the audit)
 #pragma once
 
 #include <billiards/spin_kernels.hpp>
@@ -35,6 +35,11 @@ std::vector<Scalar> call(const std::string& name, const Arguments& at) {
     const auto r = friction_impulse(at("friction"), at("normal_impulse"), at("tangential_slip"),
                                     at("tangential_inverse_effective_mass"));
     return {r};
+  }
+  if (name == "plain_tangential_velocity_change") {
+    const auto r = plain_tangential_velocity_change(at("m1"), at("m2"), at("restitution"), at("friction"),
+                                                    at("relative_normal_speed"), at("tangential_slip"));
+    return {r.first, r.second};
   }
   if (name == "tangential_velocity_change") {
     const auto r = tangential_velocity_change(at("m1"), at("m2"), at("restitution"), at("friction"),
@@ -84,6 +89,10 @@ BILLIARDS_HOST_DEVICE Scalar sum_of_every_kernel(const Scalar* a) noexcept {
   sum += tangential_inverse_effective_mass(a[0], a[1]);
   sum += normal_impulse(a[0], a[1], a[2], a[3]);
   sum += friction_impulse(a[0], a[1], a[2], a[3]);
+  {
+    const auto r = plain_tangential_velocity_change(a[0], a[1], a[2], a[3], a[4], a[5]);
+    sum += r.first + r.second;
+  }
   {
     const auto r = tangential_velocity_change(a[0], a[1], a[2], a[3], a[4], a[5]);
     sum += r.first + r.second;

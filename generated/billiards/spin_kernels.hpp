@@ -5,7 +5,7 @@
 // verified claim of the derivation audit before it was printed, and names the claims it implements. They take
 // masses and dot products, so they serve vectors of any dimension and need no Eigen.
 //
-// Fingerprint: fnv1a64:fa7969cff3c96200 (of this header and the audit)
+// Fingerprint: fnv1a64:ffac4916dbb9928a (of this header and the audit)
 #pragma once
 
 #include <bit>
@@ -75,6 +75,31 @@ BILLIARDS_HOST_DEVICE constexpr float infinity<float>() noexcept {
 template <>
 BILLIARDS_HOST_DEVICE constexpr double infinity<double>() noexcept {
   return __builtin_huge_val();
+}
+
+/// The plain form's mass range [4 √x_min, 1/(4 √x_min)], x_min = `smallest_normal<Scalar>()`:
+/// 2^−509 to 2^509 in double, 2^−61 to 2^61 in float. Within it m1 + m2, (1 + e)/(m1 + m2) and each
+/// (1 + e) m_i/(m1 + m2) are normal numbers, so the one-division form keeps every digit.
+template <typename Scalar>
+BILLIARDS_HOST_DEVICE constexpr Scalar plain_mass_low() noexcept {
+  Scalar low = Scalar(4);  // 4 √x_min = 4 · 2^((min_exponent − 1)/2)
+  for (int k = 0; k < (1 - std::numeric_limits<Scalar>::min_exponent) / 2; ++k) low /= Scalar(2);
+  return low;
+}
+/// 2^−61 in float.
+template <>
+BILLIARDS_HOST_DEVICE constexpr float plain_mass_low<float>() noexcept {
+  return 0x1p-61f;
+}
+/// 2^−509 in double.
+template <>
+BILLIARDS_HOST_DEVICE constexpr double plain_mass_low<double>() noexcept {
+  return 0x1p-509;
+}
+/// `1/plain_mass_low<Scalar>()`, exactly (a power of two).
+template <typename Scalar>
+BILLIARDS_HOST_DEVICE constexpr Scalar plain_mass_high() noexcept {
+  return Scalar(1) / plain_mass_low<Scalar>();
 }
 
 /// The moderate range [2^−(E/4 − 2), 2^(E/4 − 2)], E =
@@ -227,6 +252,48 @@ BILLIARDS_HOST_DEVICE constexpr Scalar friction_impulse(Scalar friction, Scalar 
   return impulse;
 }
 
+/// The same as tangential_velocity_change for masses in [plain_mass_low, plain_mass_high]
+/// (within_plain_mass_range): the bound times the shares m2/(m1 + m2) and m1/(m1 + m2) of one sum,
+/// normal numbers there. tangential_velocity_change takes it there itself.
+///
+/// Proven equal to the derived expression of the audit claim `kernel.tangential_velocity_change` before
+/// it was printed; also implements `kernel.tangential_velocity_change_sliding_condition`,
+/// `friction.sticking_impulse`, `friction.sliding_never_reverses`.
+///
+/// Total ops: 11
+template <typename Scalar>
+BILLIARDS_HOST_DEVICE constexpr TangentialVelocityChange<Scalar> plain_tangential_velocity_change(
+    Scalar m1, Scalar m2, Scalar restitution, Scalar friction, Scalar relative_normal_speed,
+    Scalar tangential_slip) noexcept {
+  const Scalar sticking_change = tangential_slip / Scalar(3.5);
+  const Scalar coulomb_speed = friction * relative_normal_speed;
+  const Scalar sliding_change = -((Scalar(1) + restitution) * coulomb_speed);
+  Scalar bound = sticking_change;
+  if (sliding_change < sticking_change) bound = sliding_change;
+  const Scalar total_mass = m1 + m2;
+  const Scalar first_share = m2 / total_mass;
+  const Scalar second_share = m1 / total_mass;
+  const Scalar first = bound * first_share;
+  const Scalar second = bound * second_share;
+  return {first, second};
+}
+
+/// True when both masses lie in [plain_mass_low<Scalar>(), plain_mass_high<Scalar>()], where
+/// tangential_velocity_change takes its plain form over one sum (false for +∞ and NaN). On the host,
+/// for IEEE float and double (orders_as_bits), it compares bits: the largest bits_above of the low end
+/// at most the high end's.
+template <typename Scalar>
+BILLIARDS_HOST_DEVICE constexpr bool within_plain_mass_range(Scalar m1, Scalar m2) noexcept {
+#if !defined(__CUDA_ARCH__)
+  if constexpr (orders_as_bits<Scalar>()) {
+    const Scalar low = plain_mass_low<Scalar>();
+    return larger(bits_above(m1, low), bits_above(m2, low)) <= bits_above(plain_mass_high<Scalar>(), low);
+  }
+#endif
+  return plain_mass_low<Scalar>() <= m1 && m1 <= plain_mass_high<Scalar>() &&
+         plain_mass_low<Scalar>() <= m2 && m2 <= plain_mass_high<Scalar>();
+}
+
 /// The changes j/m1 and j/m2 of the two balls' velocities along û_t (ball 1 +, ball 2 −) that the
 /// tangential impulse j = min(μ J_n, |u_t|/k) makes, as min(−(1 + e) μ (v2 − v1)·n, 2|u_t|/7)/(1
 /// + m1/m2) and /(1 + m2/m1): only the mass ratio enters, so no mass's size can overflow it; beyond the
@@ -242,6 +309,9 @@ template <typename Scalar>
 BILLIARDS_HOST_DEVICE TangentialVelocityChange<Scalar> tangential_velocity_change(
     Scalar m1, Scalar m2, Scalar restitution, Scalar friction, Scalar relative_normal_speed,
     Scalar tangential_slip) noexcept {
+  if (within_plain_mass_range(m1, m2))
+    return plain_tangential_velocity_change(m1, m2, restitution, friction, relative_normal_speed,
+                                            tangential_slip);
   const Scalar first_mass_ratio = m1 / m2;
   const Scalar second_mass_ratio = m2 / m1;
   const Scalar first_denominator = Scalar(1) + first_mass_ratio;

@@ -34,6 +34,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <functional>
@@ -187,6 +188,49 @@ double scaled_ulp_error(Scalar computed, const numeric& exact, const numeric& ve
   return ratio > numeric(1000000) ? 1e6 : ratio.to_double();  // anything this large fails anyway
 }
 
+namespace accuracy {
+
+// A number log-uniform in [low, high].
+template <typename Scalar>
+Scalar log_uniform(std::mt19937_64& random, Scalar low, Scalar high) {
+  std::uniform_real_distribution<double> exponent(std::log2(static_cast<double>(low)),
+                                                  std::log2(static_cast<double>(high)));
+  const Scalar x = static_cast<Scalar>(std::exp2(exponent(random)));
+  return std::min(std::max(x, low), high);
+}
+
+// Throws unless every condition of the kernel's domain reads only m1, m2 and the plain mass range's
+// ends: the one domain over masses the accuracy tool knows how to draw from.
+void require_plain_mass_range(const billiards::derive::Kernel& kernel) {
+  for (const ex& condition : kernel.domain) {
+    for (GiNaC::const_preorder_iterator it = condition.preorder_begin(); it != condition.preorder_end();
+         ++it) {
+      if (!GiNaC::is_a<GiNaC::symbol>(*it)) continue;
+      const std::string name = GiNaC::ex_to<GiNaC::symbol>(*it).get_name();
+      if (name != "m1" && name != "m2" && !it->is_equal(billiards::derive::plain_mass_low()) &&
+          !it->is_equal(billiards::derive::plain_mass_high())) {
+        throw std::invalid_argument("kernel " + kernel.name + ": its domain reads " + name +
+                                    "; the accuracy tool knows only the plain mass range");
+      }
+    }
+  }
+}
+
+// A mass in [plain_mass_low, plain_mass_high]: its ends, powers of two, the whole range log-uniform.
+template <typename Scalar>
+Scalar plain_range_mass(std::mt19937_64& random, int mode) {
+  const Scalar low = billiards::kernels::plain_mass_low<Scalar>(),
+               high = billiards::kernels::plain_mass_high<Scalar>();
+  switch (mode) {
+    case 0: return random() % 2 ? low : high;
+    case 1: return log_uniform(random, low, high);
+    case 2: return std::ldexp(Scalar(1), static_cast<int>(random() % 40) - 20);
+    default: return log_uniform(random, Scalar(1e-3), Scalar(1e3));
+  }
+}
+
+}  // namespace accuracy
+
 // Inputs in the checked API's domain, random and adversarial.
 template <typename Scalar>
 class InputGenerator {
@@ -201,13 +245,13 @@ class InputGenerator {
     // A kernel with a domain (a fast path's form) is measured inside it only: the plain form's mass
     // range, the one domain the derivation gives (checked, so that a new one is not silently ignored).
     const bool within_domain = !kernel.domain.empty();
-    if (within_domain) require_plain_mass_range(kernel);
+    if (within_domain) accuracy::require_plain_mass_range(kernel);
     const Scalar limit = std::sqrt(std::numeric_limits<Scalar>::max()) / Scalar(64);
     const Scalar direction_length = log_uniform(std::sqrt(std::numeric_limits<Scalar>::min()), limit);
     for (const ex& parameter : kernel.parameters) {
       const std::string name = GiNaC::ex_to<GiNaC::symbol>(parameter).get_name();
       if (name == "m1" || name == "m2") {
-        in[name] = within_domain                 ? plain_range_mass(mode)
+        in[name] = within_domain                 ? accuracy::plain_range_mass<Scalar>(random_, mode)
                    : finite_masses_ && mode == 0 ? mass(1)
                                                  : mass(mode);
       }
@@ -289,37 +333,7 @@ class InputGenerator {
             {"contact_distance", static_cast<Scalar>(r)}};
   }
 
-  Scalar log_uniform(Scalar low, Scalar high) {
-    std::uniform_real_distribution<double> exponent(std::log2(static_cast<double>(low)),
-                                                    std::log2(static_cast<double>(high)));
-    const Scalar x = static_cast<Scalar>(std::exp2(exponent(random_)));
-    return std::min(std::max(x, low), high);
-  }
-  static void require_plain_mass_range(const billiards::derive::Kernel& kernel) {
-    for (const ex& condition : kernel.domain) {
-      for (GiNaC::const_preorder_iterator it = condition.preorder_begin(); it != condition.preorder_end();
-           ++it) {
-        if (!GiNaC::is_a<GiNaC::symbol>(*it)) continue;
-        const std::string name = GiNaC::ex_to<GiNaC::symbol>(*it).get_name();
-        if (name != "m1" && name != "m2" && !it->is_equal(billiards::derive::plain_mass_low()) &&
-            !it->is_equal(billiards::derive::plain_mass_high())) {
-          throw std::invalid_argument("kernel " + kernel.name + ": its domain reads " + name +
-                                      "; the accuracy tool knows only the plain mass range");
-        }
-      }
-    }
-  }
-  // A mass in [plain_mass_low, plain_mass_high]: its ends, powers of two, the whole range log-uniform.
-  Scalar plain_range_mass(int mode) {
-    const Scalar low = billiards::kernels::plain_mass_low<Scalar>(),
-                 high = billiards::kernels::plain_mass_high<Scalar>();
-    switch (mode) {
-      case 0: return random_() % 2 ? low : high;
-      case 1: return log_uniform(low, high);
-      case 2: return std::ldexp(Scalar(1), static_cast<int>(random_() % 40) - 20);
-      default: return log_uniform(Scalar(1e-3), Scalar(1e3));
-    }
-  }
+  Scalar log_uniform(Scalar low, Scalar high) { return accuracy::log_uniform(random_, low, high); }
   Scalar mass(int mode) {
     const Scalar smallest = std::numeric_limits<Scalar>::denorm_min(),
                  largest = std::numeric_limits<Scalar>::max();
@@ -437,9 +451,15 @@ class SpinInputGenerator {
   Inputs<Scalar> operator()(const billiards::derive::Kernel& kernel, int sample) {
     const int mode = sample % 8;
     Inputs<Scalar> in;
-    // A fast path's plain form is measured inside its domain only: the moderate range, the one domain
-    // the spin kernels have (checked, so that a new one is not silently ignored).
-    if (!kernel.domain.empty()) {
+    // A fast path's plain form is measured inside its domain only: the moderate range (every input) or
+    // the plain mass range (the masses; checked, so that a new domain is not silently ignored).
+    const bool moderate = std::any_of(kernel.domain.begin(), kernel.domain.end(), [](const ex& condition) {
+      return condition.has(billiards::derive::moderate_low()) ||
+             condition.has(billiards::derive::moderate_high());
+    });
+    const bool plain_masses = !kernel.domain.empty() && !moderate;
+    if (plain_masses) accuracy::require_plain_mass_range(kernel);
+    if (moderate) {
       for (const ex& condition : kernel.domain) {
         if (!condition.has(billiards::derive::moderate_low()) &&
             !condition.has(billiards::derive::moderate_high()))
@@ -468,6 +488,10 @@ class SpinInputGenerator {
         in[name] = wide();
       }
     }
+    if (plain_masses) {
+      in["m1"] = accuracy::plain_range_mass<Scalar>(random_, mode);
+      in["m2"] = accuracy::plain_range_mass<Scalar>(random_, (mode + sample / 8) % 8);
+    }
     if (mode == 6 && in.count("m1")) in["m2"] = in["m1"];
     // Both regimes of the friction kernels: the sliding bound a factor of up to 4 either side of sticking.
     if (mode == 7 && in.count("tangential_slip") && in.count("normal_impulse")) {
@@ -489,12 +513,7 @@ class SpinInputGenerator {
   Scalar wide() {
     return log_uniform(std::numeric_limits<Scalar>::denorm_min(), std::numeric_limits<Scalar>::max());
   }
-  Scalar log_uniform(Scalar low, Scalar high) {
-    std::uniform_real_distribution<double> exponent(std::log2(static_cast<double>(low)),
-                                                    std::log2(static_cast<double>(high)));
-    const Scalar x = static_cast<Scalar>(std::exp2(exponent(random_)));
-    return std::min(std::max(x, low), high);
-  }
+  Scalar log_uniform(Scalar low, Scalar high) { return accuracy::log_uniform(random_, low, high); }
 
   std::mt19937_64 random_;
   std::uniform_real_distribution<double> unit_{0.0, 1.0};

@@ -168,6 +168,13 @@ const std::vector<Mutation>& spin_mutations() {
          Guard& guard = step(k, "bound").guards.at(0);
          guard.condition = guard.condition.lhs() > guard.condition.rhs();
        }},
+      // The plain form over one sum where both masses lie in the plain range (issue 14).
+      {"plain_tangential_change_shares_swapped", "plain_tangential_velocity_change",
+       [](Kernel& k) { step(k, "first").expression = symbol(k, "bound") * symbol(k, "second_share"); }},
+      {"plain_tangential_change_share_of_the_lighter_sum", "plain_tangential_velocity_change",
+       [](Kernel& k) { step(k, "second_share").expression = symbol(k, "m1") / symbol(k, "m2"); }},
+      {"tangential_change_fast_path_range_wider_than_its_plain_form", "tangential_velocity_change",
+       [](Kernel& k) { k.fast_path->conditions.at(3) = symbol(k, "m2") <= infinity(); }},
       // A hollow sphere's R/I = 3/(2 m R) for the solid sphere's 5/(2 m R).
       {"spin_change_hollow_sphere", "spin_change",
        [](Kernel& k) { k.outputs.at(0) = numeric(3, 2) * symbol(k, "change_per_radius"); }},

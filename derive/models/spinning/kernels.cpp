@@ -129,6 +129,27 @@ void kernel_claims(Recorder& record, const Contact& c, const Impulse& impulse, c
   });
 }
 
+namespace {
+
+// `plain`, a faster form of `full`'s claim where every one of `conditions` holds (its domain), and `full`
+// taking it there first through the predicate `predicate`: both appended, `plain` first.
+void push_with_fast_path(std::vector<Kernel>& kernels, Kernel plain, Kernel full,
+                         const std::vector<ex>& conditions, const std::string& predicate,
+                         const std::string& brief) {
+  plain.domain = conditions;
+  full.fast_path = FastPath{
+      .predicate = predicate,
+      .brief = brief,
+      .conditions = conditions,
+      .kernel = plain.name,
+      .claim = full.equals,
+  };
+  kernels.push_back(plain);
+  kernels.push_back(full);
+}
+
+}  // namespace
+
 std::vector<Kernel> spin_kernels(const Cloth& cloth) {
   const Symbols& s = symbols();
   using Kind = Guard::Kind;
@@ -159,19 +180,11 @@ std::vector<Kernel> spin_kernels(const Cloth& cloth) {
         .outputs = {duration},
         .equals = full.equals,
         .in_claim_terms = full.in_claim_terms,
-        .domain = conditions,
     };
-    full.fast_path = FastPath{
-        .predicate = full.name + "_is_moderate",
-        .brief = "True when every input of " + full.name +
-                 " lies in [moderate_low<Scalar>(), moderate_high<Scalar>()], where it takes its plain form "
-                 "(false for 0, +∞ and NaN).",
-        .conditions = conditions,
-        .kernel = plain.name,
-        .claim = full.equals,
-    };
-    kernels.push_back(plain);
-    kernels.push_back(full);
+    push_with_fast_path(kernels, plain, full, conditions, full.name + "_is_moderate",
+                        "True when every input of " + full.name +
+                            " lies in [moderate_low<Scalar>(), moderate_high<Scalar>()], where it takes its "
+                            "plain form (false for 0, +∞ and NaN).");
   };
   {
     // 3.5/m1 + 3.5/m2: each term rounds once and neither exceeds the sum, so nothing overflows that the
@@ -281,7 +294,25 @@ std::vector<Kernel> spin_kernels(const Cloth& cloth) {
     steps.push_back({change1, first * bound, {tiny(first, light_first.value)}});
     steps.push_back(
         {change2, second * bound, {tiny(second, times_power_of_two(light_second, light_second_exponent))}});
-    kernels.push_back({
+    // Where both masses lie in the collision kernels' plain range the shares m2/(m1 + m2) and
+    // m1/(m1 + m2) over one sum: no ratio, no scaling, and each share at least 2^−123 (float), a normal
+    // number (beyond.plain_range.smallest_share of the paper's model), so the changes round three times
+    // where the ratio form rounds four. The bound's steps are the full kernel's.
+    const GiNaC::symbol total("total_mass"), first_share("first_share"), second_share("second_share");
+    const std::vector<ex> plain_range = {plain_mass_low() <= s.m1, s.m1 <= plain_mass_high(),
+                                         plain_mass_low() <= s.m2, s.m2 <= plain_mass_high()};
+    std::vector<KernelStep> plain_steps;
+    for (const KernelStep& step : steps) {
+      for (const GiNaC::symbol& kept : {sticking, coulomb, sliding, bound}) {
+        if (step.name == kept) plain_steps.push_back(step);
+      }
+    }
+    plain_steps.push_back({total, s.m1 + s.m2});
+    plain_steps.push_back({first_share, s.m2 / total});
+    plain_steps.push_back({second_share, s.m1 / total});
+    plain_steps.push_back({change1, bound * first_share});
+    plain_steps.push_back({change2, bound * second_share});
+    Kernel full{
         .name = "tangential_velocity_change",
         .brief =
             "The changes j/m1 and j/m2 of the two balls' velocities along û_t (ball 1 +, ball 2 −) that "
@@ -297,7 +328,20 @@ std::vector<Kernel> spin_kernels(const Cloth& cloth) {
         .claims = {"kernel.tangential_velocity_change_sliding_condition", "friction.sticking_impulse",
                    "friction.sliding_never_reverses"},
         .names = {{"first_denominator", 1 + first_ratio}, {"second_denominator", 1 + second_ratio}},
-    });
+    };
+    Kernel plain = full;
+    plain.name = "plain_" + full.name;
+    plain.brief =
+        "The same as tangential_velocity_change for masses in [plain_mass_low, plain_mass_high] "
+        "(within_plain_mass_range): the bound times the shares m2/(m1 + m2) and m1/(m1 + m2) of one "
+        "sum, normal numbers there. tangential_velocity_change takes it there itself.";
+    plain.steps = plain_steps;
+    plain.names = {};
+    push_with_fast_path(
+        kernels, plain, full, plain_range, "within_plain_mass_range",
+        "True when both masses lie in [plain_mass_low<Scalar>(), plain_mass_high<Scalar>()], "
+        "where tangential_velocity_change takes its plain form over one sum (false for +∞ and "
+        "NaN).");
   }
   {
     const GiNaC::possymbol change("velocity_change"), radius("radius");
