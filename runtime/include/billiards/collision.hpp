@@ -344,9 +344,17 @@ template <typename D1, typename D2, typename Scalar, std::size_t N, typename Ker
 /// neither overflow nor underflow, as with Eigen's stableNorm(), at the cost of norm() and no libm call
 /// where the exponent is in the normal range. For IEEE float and double whose largest component is
 /// normal and below the top two binades, both powers of two straight from its exponent field
-/// (ExponentField): the same factors, the same bits, without binary_exponent's branches.
+/// (ExponentField): the same factors, the same bits, without binary_exponent's branches. That path is
+/// always inlined: out of line, with the vector passed through memory, collide_with_friction took 1.05
+/// (double) to 1.1 (float) times as long. scaled_norm_by_exponent, the general path, is not.
 template <typename Derived>
-[[nodiscard]] typename Derived::Scalar scaled_norm(const Eigen::MatrixBase<Derived>& v) noexcept {
+[[nodiscard]] typename Derived::Scalar scaled_norm_by_exponent(const Eigen::MatrixBase<Derived>& v) noexcept {
+  const int exponent = largest_component_exponent(v);
+  return times_power_of_two(times_power_of_two(v, -exponent).norm(), exponent);
+}
+template <typename Derived>
+[[nodiscard, gnu::always_inline]] inline typename Derived::Scalar scaled_norm(
+    const Eigen::MatrixBase<Derived>& v) noexcept {
   using Scalar = typename Derived::Scalar;
   if constexpr (has_exponent_field<Scalar>) {
     using Field = ExponentField<Scalar>;
@@ -356,8 +364,7 @@ template <typename Derived>
              std::bit_cast<Scalar>(static_cast<typename Field::Bits>(field + Field::one));
     }
   }
-  const int exponent = largest_component_exponent(v);
-  return times_power_of_two(times_power_of_two(v, -exponent).norm(), exponent);
+  return scaled_norm_by_exponent(v);
 }
 
 /// |p × w|² in any dimension: the sum over i < j of (p_i w_j − p_j w_i)² (Lagrange's identity makes
