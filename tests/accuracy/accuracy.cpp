@@ -105,7 +105,8 @@ std::vector<Exact> exact_outputs(const billiards::derive::Kernel& kernel, const 
         continue;
       const ex condition = guard.condition.subs(values);
       if (!GiNaC::is_a<GiNaC::relational>(condition) || has_infinity)
-        throw std::logic_error("kernel " + kernel.name + ": a piecewise guard cannot be evaluated exactly");
+        throw std::logic_error("kernel " + kernel.name +
+                               ": a piecewise or overridden guard cannot be evaluated exactly");
       if (static_cast<bool>(GiNaC::ex_to<GiNaC::relational>(condition))) chosen = &guard;
     }
     infinite[step.name] = chosen != nullptr && names_infinity(chosen->alternative);

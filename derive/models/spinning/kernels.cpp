@@ -268,11 +268,8 @@ std::vector<Kernel> spin_kernels(const Cloth& cloth) {
         "first_small_mass_change", bound * s.m2 / (s.m1 * (1 + second_ratio)), {bound, s.m1, s.m2});
     const GiNaC::symbol light_second("scaled_second_small_mass_change"),
         light_second_exponent("second_small_mass_change_exponent");
-    std::vector<KernelStep> steps = {
-        {first_ratio, s.m1 / s.m2},
-        {second_ratio, s.m2 / s.m1},
-        {first, 1 / (1 + first_ratio)},
-        {second, 1 / (1 + second_ratio)},
+    // The bound min(−(1 + e) μ (v2 − v1)·n, 2|u_t|/7), shared by the full kernel and its plain form.
+    const std::vector<KernelStep> bound_steps = {
         {sticking, numeric(2, 7) * slip},
         // μ (v2 − v1)·n first: (1 + e) ∈ [1, 2] then cannot overflow a product the
         // result stays below, as (1 + e) μ could for a huge μ beside a tiny approach.
@@ -281,6 +278,11 @@ std::vector<Kernel> spin_kernels(const Cloth& cloth) {
         {bound,
          sticking,
          {{sliding < sticking, sliding, Kind::piecewise, "kernel.tangential_velocity_change"}}}};
+    std::vector<KernelStep> steps = {{first_ratio, s.m1 / s.m2},
+                                     {second_ratio, s.m2 / s.m1},
+                                     {first, 1 / (1 + first_ratio)},
+                                     {second, 1 / (1 + second_ratio)}};
+    steps.insert(steps.end(), bound_steps.begin(), bound_steps.end());
     steps.insert(steps.end(), light_first.steps.begin(), light_first.steps.end());
     const GiNaC::exmap& scaled = light_first.scaled;
     const GiNaC::exmap& exponent = light_first.exponent;
@@ -297,16 +299,11 @@ std::vector<Kernel> spin_kernels(const Cloth& cloth) {
     // Where both masses lie in the collision kernels' plain range the shares m2/(m1 + m2) and
     // m1/(m1 + m2) over one sum: no ratio, no scaling, and each share at least 2^−123 (float), a normal
     // number (beyond.plain_range.smallest_share of the paper's model), so the changes round three times
-    // where the ratio form rounds four. The bound's steps are the full kernel's.
+    // where the ratio form rounds four.
     const GiNaC::symbol total("total_mass"), first_share("first_share"), second_share("second_share");
     const std::vector<ex> plain_range = {plain_mass_low() <= s.m1, s.m1 <= plain_mass_high(),
                                          plain_mass_low() <= s.m2, s.m2 <= plain_mass_high()};
-    std::vector<KernelStep> plain_steps;
-    for (const KernelStep& step : steps) {
-      for (const GiNaC::symbol& kept : {sticking, coulomb, sliding, bound}) {
-        if (step.name == kept) plain_steps.push_back(step);
-      }
-    }
+    std::vector<KernelStep> plain_steps = bound_steps;
     plain_steps.push_back({total, s.m1 + s.m2});
     plain_steps.push_back({first_share, s.m2 / total});
     plain_steps.push_back({second_share, s.m1 / total});
