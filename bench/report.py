@@ -1,7 +1,10 @@
 #!/usr/bin/env python3
 """Turns the JSON of one billiards_bench run into bench/RESULTS.md and bench/throughput.svg.
 
-Usage: bench/report.py RESULTS_JSON [--command "how the JSON was made"]
+Usage: bench/report.py RESULTS_JSON [--command "how the JSON was made"] [--derive BIN] [--out-dir DIR]
+
+Both files are written atomically (tools/atomic_write.py), into bench/ unless --out-dir names another
+folder.
 
 Every figure is a ratio of two benchmarks measured in the same run (the machines are shared and
 noisy); absolute times are shown only beside them. With --benchmark_repetitions each figure is the
@@ -14,6 +17,8 @@ import os
 import sys
 
 HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.join(HERE, os.pardir, "tools"))
+from atomic_write import write_atomically  # noqa: E402
 
 
 def load(path):
@@ -261,8 +266,7 @@ def svg(runs, path):
         out.append(f'<line x1="{width - right + 10}" y1="{ly - 4}" x2="{width - right + 30}" y2="{ly - 4}" stroke="{colour}" stroke-width="2"{dash_attr}/>')
         out.append(f'<text x="{width - right + 35}" y="{ly}">{label}</text>')
     out.append("</svg>")
-    with open(path, "w", encoding="utf-8") as f:
-        f.write("\n".join(out) + "\n")
+    write_atomically(path, "\n".join(out) + "\n")
     return True
 
 
@@ -273,6 +277,7 @@ def main():
                         "--benchmark_format=json --benchmark_out=bench.json")
     parser.add_argument("--derive", help="billiards-derive to time (five runs, the median is reported)")
     parser.add_argument("--clean-build", help="what a clean build cost, measured by the caller (text)")
+    parser.add_argument("--out-dir", default=HERE, help="where RESULTS.md and throughput.svg go (default: bench/)")
     args = parser.parse_args()
     context, runs = load(args.json)
     derive_text = "(not measured in this run)"
@@ -285,7 +290,7 @@ def main():
                 subprocess.run([args.derive, "--out", out], check=True, stdout=subprocess.DEVNULL)
                 times.append(time.perf_counter() - start)
         derive_text = f"{sorted(times)[2]:.3f} s (median of 5 runs of `billiards-derive --out DIR`; goal: well under 2 s)"
-    svg_written = svg(runs, os.path.join(HERE, "throughput.svg"))
+    svg_written = svg(runs, os.path.join(args.out_dir, "throughput.svg"))
     caches = ", ".join(f"L{c['level']} {c['type']} {c['size'] // 1024} KiB" for c in context.get("caches", [])) \
         or "not reported by this machine"
     text = f"""# Benchmark results
@@ -375,8 +380,7 @@ the cost per event should not grow with N (the caches aside). One core; the all-
 
 {gas_events(runs)}
 """
-    with open(os.path.join(HERE, "RESULTS.md"), "w", encoding="utf-8") as f:
-        f.write(text)
+    write_atomically(os.path.join(args.out_dir, "RESULTS.md"), text)
     return 0
 
 

@@ -16,9 +16,10 @@ import argparse
 import html
 import os
 import re
-import shutil
 import sys
-import tempfile
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), os.pardir, "tools"))
+from atomic_write import copy_atomically, write_atomically  # noqa: E402
 
 MATHJAX_CONFIG = (
     'MathJax.Hub.Config({tex2jax: {inlineMath: [["\\\\(", "\\\\)"]], displayMath: [["\\\\[", "\\\\]"]], '
@@ -226,7 +227,7 @@ def main():
         body.append(f'<h2 id="{slug(name)}">{inline(name)}</h2>')
         body.append(blocks_to_html(section_lines))
         for path, caption in figures.get(name, []):
-            shutil.copyfile(path, os.path.join(out_dir, os.path.basename(path)))
+            copy_atomically(path, os.path.join(out_dir, os.path.basename(path)))
             body.append(
                 f'<figure><img src="{html.escape(os.path.basename(path))}" alt="{html.escape(caption)}">'
                 f"<figcaption>{inline(caption)}</figcaption></figure>"
@@ -239,16 +240,7 @@ def main():
         f"document.createElement('script'); s.src = '{SYSTEM_MATHJAX}'; document.head.appendChild(s);\"></script>\n"
         "</head>\n<body>\n" + "\n".join(body) + "\n</body>\n</html>\n"
     )
-    # Atomically: a uniquely named file in the target folder, then a rename over the page.
-    fd, temporary = tempfile.mkstemp(prefix=".audit_html.", dir=out_dir)
-    try:
-        with os.fdopen(fd, "w", encoding="utf-8") as f:
-            f.write(page)
-        os.chmod(temporary, 0o644)  # mkstemp's 0600 would hide the page from other readers
-        os.replace(temporary, args.out)
-    except BaseException:
-        os.unlink(temporary)
-        raise
+    write_atomically(args.out, page)
     return 0
 
 
