@@ -21,9 +21,32 @@ sys.path.insert(0, os.path.join(HERE, os.pardir, "tools"))
 from atomic_write import write_atomically  # noqa: E402
 
 
+def fail(argument, value, expected):
+    """Exits with status 2 and one line naming the argument, its value and what was expected."""
+    print(f"report.py: {argument} {value!r}: expected {expected}", file=sys.stderr)
+    sys.exit(2)
+
+
+TIME_UNITS = {"ns": 1, "us": 1e3, "ms": 1e6, "s": 1e9}
+
+
 def load(path):
-    with open(path, encoding="utf-8") as f:
-        data = json.load(f)
+    expected = "the JSON of a billiards_bench run (--benchmark_format=json)"
+    try:
+        with open(path, encoding="utf-8") as f:
+            data = json.load(f)
+    except OSError as error:
+        fail("RESULTS_JSON", path, f"a readable file ({error.strerror})")
+    except (UnicodeDecodeError, ValueError) as error:
+        fail("RESULTS_JSON", path, f"{expected}; not JSON ({error})")
+    if not isinstance(data, dict) or not isinstance(data.get("context"), dict) or \
+            not isinstance(data.get("benchmarks"), list):
+        fail("RESULTS_JSON", path, f"{expected}: an object with \"context\" and a \"benchmarks\" list")
+    for b in data["benchmarks"]:
+        if not isinstance(b, dict) or not isinstance(b.get("name"), str) or \
+                not isinstance(b.get("real_time"), (int, float)) or b.get("time_unit") not in TIME_UNITS:
+            fail("RESULTS_JSON", path, f"{expected}: each benchmark with a name, a real_time and a time_unit "
+                 f"({', '.join(TIME_UNITS)}); found {str(b)[:80]}")
     # One figure per benchmark: the median of its repetitions where the run repeated them
     # (--benchmark_repetitions), else its one measurement.
     # Every benchmark runs in real time (UseRealTime): Google Benchmark names it ".../real_time".
@@ -41,7 +64,7 @@ def load(path):
 
 
 def per_item_ns(b):
-    return b["real_time"] if b["time_unit"] == "ns" else b["real_time"] * {"us": 1e3, "ms": 1e6, "s": 1e9}[b["time_unit"]]
+    return b["real_time"] * TIME_UNITS[b["time_unit"]]
 
 
 def single_call_table(runs):
@@ -222,7 +245,8 @@ def gas_events(runs):
     return "\n".join(lines) + "\n\n" + "\n".join(f"- {n}" for n in notes)
 
 
-def svg(runs, path):
+def svg(runs):
+    """The throughput figure's SVG text, or None where the run has no batch benchmarks."""
     width, height, left, bottom, top, right = 720, 420, 70, 50, 20, 150
     series = []
     for scalar, colour in (("double", "#1f77b4"), ("float", "#2ca02c")):
@@ -231,7 +255,7 @@ def svg(runs, path):
         series.append((f"ceiling ({scalar})", colour, [(r[0], r[3]["bytes_per_second"]) for r in rows if r[3]], "6,4"))
     points = [pt for _, _, pts, _ in series for pt in pts]
     if not points:
-        return False
+        return None
     xs = [math.log10(p) for p, _ in points]
     ys = [v / 1e9 for _, v in points]
     x0, x1 = min(xs), max(xs)
@@ -266,8 +290,7 @@ def svg(runs, path):
         out.append(f'<line x1="{width - right + 10}" y1="{ly - 4}" x2="{width - right + 30}" y2="{ly - 4}" stroke="{colour}" stroke-width="2"{dash_attr}/>')
         out.append(f'<text x="{width - right + 35}" y="{ly}">{label}</text>')
     out.append("</svg>")
-    write_atomically(path, "\n".join(out) + "\n")
-    return True
+    return "\n".join(out) + "\n"
 
 
 def main():
@@ -279,7 +302,22 @@ def main():
     parser.add_argument("--clean-build", help="what a clean build cost, measured by the caller (text)")
     parser.add_argument("--out-dir", default=HERE, help="where RESULTS.md and throughput.svg go (default: bench/)")
     args = parser.parse_args()
+    if not os.path.isdir(args.out_dir):
+        fail("--out-dir", args.out_dir, "an existing folder")
     context, runs = load(args.json)
+    try:
+        figure, text = report(args, context, runs)
+    except (KeyError, TypeError, ValueError, ZeroDivisionError) as error:
+        fail("RESULTS_JSON", args.json, f"the JSON of a billiards_bench run; it lacks or garbles {error!r}")
+    # Both files are composed before either is written, and each is written atomically.
+    if figure is not None:
+        write_atomically(os.path.join(args.out_dir, "throughput.svg"), figure)
+    write_atomically(os.path.join(args.out_dir, "RESULTS.md"), text)
+    return 0
+
+
+def report(args, context, runs):
+    """The throughput figure (SVG text or None) and RESULTS.md's text."""
     derive_text = "(not measured in this run)"
     if args.derive:
         import subprocess, tempfile, time
@@ -290,7 +328,7 @@ def main():
                 subprocess.run([args.derive, "--out", out], check=True, stdout=subprocess.DEVNULL)
                 times.append(time.perf_counter() - start)
         derive_text = f"{sorted(times)[2]:.3f} s (median of 5 runs of `billiards-derive --out DIR`; goal: well under 2 s)"
-    svg_written = svg(runs, os.path.join(args.out_dir, "throughput.svg"))
+    figure = svg(runs)
     caches = ", ".join(f"L{c['level']} {c['type']} {c['size'] // 1024} KiB" for c in context.get("caches", [])) \
         or "not reported by this machine"
     text = f"""# Benchmark results
@@ -357,7 +395,7 @@ step's time a pair, and in brackets its ratio to the step before:
 
 {batch_steps(runs)}
 
-{"![throughput against N](throughput.svg)" if svg_written else ""}
+{"![throughput against N](throughput.svg)" if figure is not None else ""}
 
 ## The derivation
 
@@ -380,8 +418,7 @@ the cost per event should not grow with N (the caches aside). One core; the all-
 
 {gas_events(runs)}
 """
-    write_atomically(os.path.join(args.out_dir, "RESULTS.md"), text)
-    return 0
+    return figure, text
 
 
 if __name__ == "__main__":
