@@ -138,6 +138,44 @@ billiards::Collision<Eigen::Matrix<Scalar, 3, 1>> paper_formula_along_direction(
   return {c.v1 + (factor * c.m2 * relative) * c.d, c.v2 - (factor * c.m1 * relative) * c.d};
 }
 
+// The library's calls with their promises taken away, built from the same pieces (the generated
+// kernels, detail::difference_dot, detail::dot and detail::plus_multiple), so that bench/report.py can
+// say what the promises cost a call where a goal is not met. None of these is offered to users:
+// - Dropped::direction_scaling: collide_along_direction without scaling d (detail::collide_along): the
+//   kernel on d as given, mass-range test and −0 kept; it loses a heavy ball's subnormal change by up
+//   to |d|, and the same bits for every 2^k d;
+// - Dropped::every_promise: also the plain kernel straight away, without the mass-range test (wrong,
+//   even ∞ or NaN, for masses outside [plain_mass_low, plain_mass_high]), and the update as v + c n,
+//   one multiply-add, which turns an unchanged −0 into +0. (The range test alone, −0 kept, measured
+//   slower than the library's call: GCC's code for the plain kernel without the branch before it.)
+enum class Dropped { direction_scaling, every_promise };
+
+template <typename Scalar, Dropped dropped>
+[[gnu::always_inline]] inline billiards::Collision<Eigen::Matrix<Scalar, 3, 1>> restitution_without(
+    const Case<Scalar>& c) {
+  static_assert(dropped == Dropped::every_promise, "a restitution call has no direction to scale");
+  const auto change = billiards::kernels::plain_normal_velocity_change(
+      c.m1, c.m2, Scalar(0), billiards::detail::difference_dot(c.v1, c.v2, c.n), c.restitution);
+  return {c.v1 + change.first * c.n, c.v2 + change.second * c.n};
+}
+
+template <typename Scalar, Dropped dropped>
+[[gnu::always_inline]] inline billiards::Collision<Eigen::Matrix<Scalar, 3, 1>> direction_without(
+    const Case<Scalar>& c) {
+  namespace kernels = billiards::kernels;
+  namespace detail = billiards::detail;
+  const Scalar relative = detail::difference_dot(c.v1, c.v2, c.d), dd = detail::dot(c.d, c.d);
+  if constexpr (dropped == Dropped::direction_scaling) {
+    const auto change =
+        kernels::direction_velocity_change(c.m1, c.m2, Scalar(0), relative, dd, c.restitution);
+    return {detail::plus_multiple(c.v1, change.first, c.d), detail::plus_multiple(c.v2, change.second, c.d)};
+  } else {
+    const auto change =
+        kernels::plain_direction_velocity_change(c.m1, c.m2, Scalar(0), relative, dd, c.restitution);
+    return {c.v1 + change.first * c.d, c.v2 + change.second * c.d};
+  }
+}
+
 template <typename Scalar>
 using Spinning = billiards::Collision<billiards::SpinningBall<Scalar>>;
 
@@ -229,6 +267,14 @@ void generated_direction(benchmark::State& state) {
 template <typename Scalar>
 void hand_written_direction(benchmark::State& state) {
   one_collision_per_call<Scalar>(state, by_hand<paper_formula_along_direction<Scalar>>);
+}
+template <typename Scalar, Dropped dropped>
+void restitution_dropping(benchmark::State& state) {
+  one_collision_per_call<Scalar>(state, by_hand<restitution_without<Scalar, dropped>>);
+}
+template <typename Scalar, Dropped dropped>
+void direction_dropping(benchmark::State& state) {
+  one_collision_per_call<Scalar>(state, by_hand<direction_without<Scalar, dropped>>);
 }
 template <typename Scalar>
 void generated_friction(benchmark::State& state) {
@@ -586,6 +632,9 @@ void register_type(const std::string& type) {
       {"restitution_formula", hand_written_restitution<Scalar>},
       {"direction", generated_direction<Scalar>},
       {"direction_formula", hand_written_direction<Scalar>},
+      {"restitution_without_promises", restitution_dropping<Scalar, Dropped::every_promise>},
+      {"direction_unscaled", direction_dropping<Scalar, Dropped::direction_scaling>},
+      {"direction_without_promises", direction_dropping<Scalar, Dropped::every_promise>},
       {"friction", generated_friction<Scalar>},
       {"friction_formula", hand_written_friction<Scalar>},
       {"evolve", generated_evolve<Scalar>},

@@ -119,6 +119,29 @@ def other_calls_table(runs):
     return "\n".join(lines)
 
 
+def promise_steps(runs):
+    """Per call, the library's call with its promises taken away (Dropped in bench_collide.cpp),
+    beside the plain form by hand: each form's time and, in brackets, its ratio to the plain form."""
+    steps = {"restitution": ["restitution", None, "restitution_without_promises", "restitution_formula"],
+             "direction": ["direction", "direction_unscaled", "direction_without_promises", "direction_formula"]}
+    lines = ["| call | type | the library's call | d unscaled | no promise kept | the plain form by hand |",
+             "|---|---|---:|---:|---:|---:|"]
+    found = False
+    for call, names in steps.items():
+        for scalar in ("double", "float"):
+            row = [runs.get(f"collide/{name}/{scalar}") if name else None for name in names]
+            plain = row[-1]
+            if plain is None or row[0] is None:
+                continue
+            found = True
+            cells = [f"`{call}`", scalar]
+            for b in row[:-1]:
+                cells.append("–" if b is None else f"{per_item_ns(b):.2f} ({per_item_ns(b) / per_item_ns(plain):.2f}×)")
+            cells.append(f"{per_item_ns(plain):.2f}")
+            lines.append("| " + " | ".join(cells) + " |")
+    return "\n".join(lines) if found else "(not in this run)"
+
+
 def pairs_per_second(b):
     # Real time throughout: items over the real time of an iteration.
     return b["items_per_second"]
@@ -362,6 +385,22 @@ but the call lies on its dependency chain.
 ## The other calls against their plain forms (one per call, the same cases)
 
 {other_calls_table(runs)}
+
+### What the promises cost a call
+
+The restitution and direction calls' goals (≤ 1.2× their plain forms) are not met. Here each is rebuilt
+from the same generated kernels with its promises taken away, each form's time in ns and, in brackets,
+its ratio to the plain form by hand (none of these forms is offered to users):
+
+- d unscaled (`collide_along_direction` only): d taken as given, not scaled by a power of two first,
+  which keeps a heavy ball's subnormal change to its last digits and gives every 2^k d the same bits;
+- no promise kept: also the plain kernel straight away, without the mass-range test (wrong, even ∞ or
+  NaN, for a mass outside [plain_mass_low, plain_mass_high], an immovable +∞ included), and the
+  update as v + c n, one multiply-add, which turns an unchanged −0 into +0 (issue 12). What is left
+  against the plain form is the generated kernel's own form (two divisions by one sum, which give
+  equal masses their exact (1 + e)/2, issue 3) and the code the compiler makes of it.
+
+{promise_steps(runs)}
 
 ## The batch path against the plain formula's loop, a bandwidth ceiling and the division limit
 
