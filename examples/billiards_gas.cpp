@@ -8,7 +8,7 @@
 // Exit status: 0 on success; 2 on a bad command line (one line on stderr naming the argument, its value
 // and what was expected); 3 when the JSON file cannot be written; 4 when the run stops because the
 // balls' paths do not meet.
-#include "cli_checks.hpp"
+#include <billiards_support/cli_checks.hpp>
 #include "gas.hpp"
 
 #include <billiards_support/atomic_file.hpp>
@@ -68,12 +68,12 @@ int main(int argc, char** argv) {
       "billiards-gas"};
   Options options;
   std::string json_file;
-  const auto count = billiards_example::count_at_least;
+  const auto count = [](std::uint64_t smallest) { return billiards_support::count_at_least(smallest); };
   app.add_option("--dimension", options.dimension, "2 (disks) or 3 (spheres); default 3")->check(count(0));
   app.add_option("--balls", options.balls, "Number of balls N (default 1000)")->check(count(0));
   app.add_option("--packing-fraction", options.packing_fraction,
                  "η, the fraction of the volume the balls fill: π ρ σ²/4 (2-D), π ρ σ³/6 (3-D); default 0.3")
-      ->check(billiards_example::finite_number(true));
+      ->check(billiards_support::finite_number(true));
   app.add_option("--events", options.events, "Collisions measured (default 100000)")->check(count(1));
   app.add_option("--equilibrate", options.equilibrate, "Collisions run first, not measured (default 10000)")
       ->check(count(0));

@@ -10,7 +10,7 @@
 // 2 on a bad command line or setup (one line on stderr naming what and why); 3 when the SVG cannot be
 // written; 4 when the run stops because no ball–ball collision can happen (fewer than two balls, every
 // ball at rest, or K events in a row without one).
-#include "cli_checks.hpp"
+#include <billiards_support/cli_checks.hpp>
 #include "table.hpp"
 #include "table_io.hpp"
 
@@ -27,6 +27,7 @@
 
 int main(int argc, char** argv) {
   using namespace billiards_example;
+  using billiards_support::count_at_least, billiards_support::finite_number;
   CLI::App app{
       "An event-driven billiards table on billiards::runtime: runs C ball-ball collisions and reports "
       "the drift of the kinetic energy.",

@@ -21,7 +21,7 @@
 // to the largest finite number, with zeros (no slip, no friction), restitution 0 and 1, and equal masses
 // among them.
 //
-// Usage: billiards-accuracy [--samples N] [--limit ULP]
+// Usage: billiards-accuracy [--samples N (1 to 10^7, default 20000)] [--limit ULP]
 //   prints a Markdown table (kernel, type, samples, largest error in ULP, non-finite results) and
 //   exits 1 when an error exceeds --limit (default 4) or a valid input gives NaN or infinity.
 #include "core/named_constants.hpp"
@@ -33,6 +33,7 @@
 #include <billiards/spin_kernel_list.hpp>
 
 #include <CLI/CLI.hpp>
+#include <billiards_support/cli_checks.hpp>
 
 #include <algorithm>
 #include <array>
@@ -552,8 +553,11 @@ int main(int argc, char** argv) {
   double limit = 4;
   bool verbose = false;
   app.add_flag("--verbose", verbose, "Also print the inputs of each kernel's largest error");
-  app.add_option("--samples", samples, "Inputs per kernel and type")->check(CLI::PositiveNumber);
-  app.add_option("--limit", limit, "Largest error allowed, in scaled ULP")->check(CLI::PositiveNumber);
+  // At most 10^7 inputs a kernel and type (10^5 take minutes): any count ends, and fits a long.
+  app.add_option("--samples", samples, "Inputs per kernel and type (1 to 10^7)")
+      ->check(billiards_support::count_at_least(1, 10'000'000));
+  app.add_option("--limit", limit, "Largest error allowed, in scaled ULP")
+      ->check(billiards_support::finite_number(true));
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& help) {

@@ -1,5 +1,6 @@
-// The examples' command-line checks, one definition for every program: counts and numbers are checked
-// as text before conversion ("-1" must not wrap to 2^64 − 1; NaN and infinities are rejected by name).
+// The command-line checks of the programs (the examples, billiards-accuracy), one definition for every
+// program: counts and numbers are checked as text before conversion ("-1" must not wrap to 2^64 − 1;
+// NaN and infinities are rejected by name), and each error names the value and what was expected.
 #pragma once
 
 #include <CLI/CLI.hpp>
@@ -8,14 +9,16 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
+#include <limits>
 #include <string>
 
-namespace billiards_example {
+namespace billiards_support {
 
-/// A whole number of at least `smallest`, at most 2^64 − 1.
-inline CLI::Validator count_at_least(std::uint64_t smallest) {
+/// A whole number of at least `smallest` and at most `largest` (2^64 − 1 unless given).
+inline CLI::Validator count_at_least(std::uint64_t smallest,
+                                     std::uint64_t largest = std::numeric_limits<std::uint64_t>::max()) {
   return CLI::Validator(
-      [smallest](std::string& text) -> std::string {
+      [smallest, largest](std::string& text) -> std::string {
         std::uint64_t value = 0;
         const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
         const std::string quoted = "'" + text.substr(0, 40) + (text.size() > 40 ? "…'" : "'");
@@ -24,6 +27,7 @@ inline CLI::Validator count_at_least(std::uint64_t smallest) {
         }
         if (error == std::errc::result_out_of_range) return quoted + " is larger than 2^64 - 1";
         if (value < smallest) return quoted + " is less than " + std::to_string(smallest);
+        if (value > largest) return quoted + " is more than " + std::to_string(largest);
         return {};
       },
       "COUNT");
@@ -45,4 +49,4 @@ inline CLI::Validator finite_number(bool positive) {
       positive ? "NUMBER > 0" : "NUMBER >= 0");
 }
 
-}  // namespace billiards_example
+}  // namespace billiards_support
