@@ -333,9 +333,12 @@ def main():
     except (KeyError, TypeError, ValueError, ZeroDivisionError) as error:
         fail("RESULTS_JSON", args.json, f"the JSON of a billiards_bench run; it lacks or garbles {error!r}")
     # Both files are composed before either is written, and each is written atomically.
-    if figure is not None:
-        write_atomically(os.path.join(args.out_dir, "throughput.svg"), figure)
-    write_atomically(os.path.join(args.out_dir, "RESULTS.md"), text)
+    try:
+        if figure is not None:
+            write_atomically(os.path.join(args.out_dir, "throughput.svg"), figure)
+        write_atomically(os.path.join(args.out_dir, "RESULTS.md"), text)
+    except OSError as error:
+        fail("--out-dir", args.out_dir, f"a folder this user can write ({error.strerror})")
     return 0
 
 
@@ -348,7 +351,10 @@ def report(args, context, runs):
         for _ in range(5):
             with tempfile.TemporaryDirectory() as out:
                 start = time.perf_counter()
-                subprocess.run([args.derive, "--out", out], check=True, stdout=subprocess.DEVNULL)
+                try:
+                    subprocess.run([args.derive, "--out", out], check=True, stdout=subprocess.DEVNULL)
+                except (OSError, subprocess.CalledProcessError) as error:
+                    fail("--derive", args.derive, f"billiards-derive, a program that runs ({error})")
                 times.append(time.perf_counter() - start)
         derive_text = f"{sorted(times)[2]:.3f} s (median of 5 runs of `billiards-derive --out DIR`; goal: well under 2 s)"
     figure = svg(runs)
