@@ -22,6 +22,10 @@ const GiNaC::symbol& plain_mass_high() {
   return constant;
 }
 
+std::vector<GiNaC::ex> plain_mass_range(const GiNaC::ex& m1, const GiNaC::ex& m2) {
+  return {plain_mass_low() <= m1, m1 <= plain_mass_high(), plain_mass_low() <= m2, m2 <= plain_mass_high()};
+}
+
 const GiNaC::symbol& moderate_low() {
   static const GiNaC::symbol constant("moderate_low", "x_{\\text{low}}");
   return constant;

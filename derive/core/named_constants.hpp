@@ -17,6 +17,9 @@ const GiNaC::symbol& infinity();
 /// 2^61 in float): printed as plain_mass_low<Scalar>() and plain_mass_high<Scalar>().
 const GiNaC::symbol& plain_mass_low();
 const GiNaC::symbol& plain_mass_high();
+/// The conditions that both masses lie in that range: low ≤ m1 ≤ high and low ≤ m2 ≤ high, in that
+/// order (a fast path's domain and predicate conditions, in both models).
+std::vector<GiNaC::ex> plain_mass_range(const GiNaC::ex& m1, const GiNaC::ex& m2);
 
 /// The moderate range [2^−(E/4 − 2), 2^(E/4 − 2)] of Scalar, E = std::numeric_limits<Scalar>::max_exponent
 /// (2^−254 to 2^254 in double, 2^−30 to 2^30 in float): a product or quotient of four numbers in it, times

@@ -78,13 +78,6 @@ std::vector<KernelStep> change_steps(const ChangeNames& names, const MassRatios&
           {names.second_change, names.second_factor * names.second_multiplier}};
 }
 
-// The mass range of the fast path, as conditions on the masses.
-std::vector<ex> plain_mass_range() {
-  const Symbols& s = symbols();
-  return {plain_mass_low() <= s.m1, s.m1 <= plain_mass_high(), plain_mass_low() <= s.m2,
-          s.m2 <= plain_mass_high()};
-}
-
 // `full` preceded by its one-division form for masses in the plain range: the same speed steps (the
 // first `speed_steps` of `full`), then (1 + e) m2/(m1 + m2) and (1 + e) m1/(m1 + m2) over one sum
 // (beyond.plain_range.one_division_form), each times the speed `by`; `full` takes it first there.
@@ -112,7 +105,7 @@ std::vector<Kernel> with_fast_path(Kernel full, const PlainRange& plain, const M
       .in_claim_terms = full.in_claim_terms,
       .claims = {"beyond.plain_range.one_division_form", "beyond.plain_range.smallest_share"},
       .names = {{"total_mass", s.m1 + s.m2}, {"restitution_factor", 1 + e}},
-      .domain = plain_mass_range(),
+      .domain = plain_mass_range(s.m1, s.m2),
   };
   fast.steps.push_back({first_coefficient, plain.first_mass_form.subs(e == restitution)});
   fast.steps.push_back({second_coefficient, plain.second_mass_form.subs(e == restitution)});
@@ -123,7 +116,7 @@ std::vector<Kernel> with_fast_path(Kernel full, const PlainRange& plain, const M
       .brief =
           "True when both masses lie in [plain_mass_low<Scalar>(), plain_mass_high<Scalar>()], where the "
           "collision kernels take their plain one-division form (false for +∞ and NaN).",
-      .conditions = plain_mass_range(),
+      .conditions = plain_mass_range(s.m1, s.m2),
       .kernel = fast.name,
       .claim = "beyond.plain_range.one_division_form",
   };

@@ -301,8 +301,7 @@ std::vector<Kernel> spin_kernels(const Cloth& cloth) {
     // number (beyond.plain_range.smallest_share of the paper's model), so the changes round three times
     // where the ratio form rounds four.
     const GiNaC::symbol total("total_mass"), first_share("first_share"), second_share("second_share");
-    const std::vector<ex> plain_range = {plain_mass_low() <= s.m1, s.m1 <= plain_mass_high(),
-                                         plain_mass_low() <= s.m2, s.m2 <= plain_mass_high()};
+    const std::vector<ex> plain_range = plain_mass_range(s.m1, s.m2);
     std::vector<KernelStep> plain_steps = bound_steps;
     plain_steps.push_back({total, s.m1 + s.m2});
     plain_steps.push_back({first_share, s.m2 / total});
