@@ -256,6 +256,9 @@ std::optional<std::pair<ex, ex>> common_interval(const Kernel& kernel, const std
   return std::pair<ex, ex>{low, high};
 }
 
+// The function that holds a kernel's every step where it has a fast path: full_<name>.
+std::string full_form_name(const Kernel& kernel) { return "full_" + kernel.name; }
+
 // A fast path's predicate as a documented constexpr function: true where every condition holds. Where
 // the conditions put every parameter they read in one interval of positive finite constants, the host
 // code for IEEE float and double compares bits instead (bits_above: integer operations where the
@@ -320,20 +323,32 @@ std::string functions(const std::vector<Kernel>& kernels, const std::string& pai
       parameters.push_back("Scalar " + GiNaC::ex_to<GiNaC::symbol>(parameter).get_name());
     }
     const std::string result = kernel.outputs.size() == 1 ? "Scalar" : pair_result + "<Scalar>";
-    out << "\n"
-        << doc_comment(kernel.brief) << "///\n"
-        << doc_comment("Proven equal to the derived expression of the audit claim `" + kernel.equals +
-                       "` before it was printed" + (claims.empty() ? "" : "; also implements " + claims) +
-                       ".")
-        << "///\n"
-        << "/// Total ops: " << emitted.operation_count << "\n"
-        << "template <typename Scalar>\n"
-        << signature(std::string("BILLIARDS_HOST_DEVICE ") +
-                         (needs_runtime_math(kernel) ? "" : "constexpr ") + result + " " + kernel.name + "(",
-                     parameters, ") noexcept {")
-        << "\n";
-    for (const std::string& line : emitted.body) out << "  " << line << "\n";
-    out << "}\n";
+    const std::string proven =
+        doc_comment("Proven equal to the derived expression of the audit claim `" + kernel.equals +
+                    "` before it was printed" + (claims.empty() ? "" : "; also implements " + claims) + ".");
+    const auto function = [&](const std::string& brief, const std::string& name,
+                              const std::vector<std::string>& body) {
+      out << "\n"
+          << doc_comment(brief) << "///\n"
+          << proven << "///\n"
+          << "/// Total ops: " << emitted.operation_count << "\n"
+          << "template <typename Scalar>\n"
+          << signature(std::string("BILLIARDS_HOST_DEVICE ") +
+                           (needs_runtime_math(kernel) ? "" : "constexpr ") + result + " " + name + "(",
+                       parameters, ") noexcept {")
+          << "\n";
+      for (const std::string& line : body) out << "  " << line << "\n";
+      out << "}\n";
+    };
+    if (kernel.fast_path) {
+      const FastPath& path = *kernel.fast_path;
+      function("The full form of " + kernel.name + ", right for every valid input: " + kernel.name +
+                   " takes " + path.kernel + " where " + path.predicate + " holds and this elsewhere. " +
+                   "A function of its own, so that the compilers inline the test and " + path.kernel +
+                   " into each caller however long this form is; call " + kernel.name + ".",
+               full_form_name(kernel), emitted.full_body);
+    }
+    function(kernel.brief, kernel.name, emitted.body);
   }
   return out.str();
 }
@@ -373,23 +388,6 @@ EmittedKernel emit_kernel(const Kernel& kernel) {
   }
 
   EmittedKernel emitted;
-  if (kernel.fast_path) {
-    // Where the predicate holds, the faster kernel of the same claim, before any step is computed.
-    std::vector<std::string> arguments;
-    for (const ex& parameter : kernel.parameters) {
-      arguments.push_back(GiNaC::ex_to<GiNaC::symbol>(parameter).get_name());
-    }
-    const std::string test = "if (" + kernel.fast_path->predicate + "(" +
-                             joined(parameters_read(kernel, kernel.fast_path->conditions), ", ") + "))";
-    const std::string call = "return " + kernel.fast_path->kernel + "(";
-    std::string statement = call + joined(arguments, ", ") + ");";
-    // On a line of its own (indented by 4) when it does not fit beside the test, and its arguments
-    // wrapped under the first when it does not fit there either.
-    if (2 + test.size() + 1 + statement.size() > column_limit && 4 + statement.size() > column_limit) {
-      statement = wrapped_list("    " + call, arguments, ");").substr(4);
-    }
-    emitted.body.push_back(short_if(test, statement));
-  }
   std::vector<bool> placed(hoisted.size(), false);
   const auto define = [&](const std::string& name, const ex& expression) {
     const std::string code = print(expression, Notation::cpp);
@@ -441,6 +439,26 @@ EmittedKernel emit_kernel(const Kernel& kernel) {
     }
   } catch (const std::invalid_argument& error) {
     throw std::invalid_argument("kernel " + kernel.name + ": " + error.what());
+  }
+  if (kernel.fast_path) {
+    // Where the predicate holds, the faster kernel of the same claim, before any step is computed;
+    // elsewhere full_<name>, which holds every step.
+    std::vector<std::string> arguments;
+    for (const ex& parameter : kernel.parameters) {
+      arguments.push_back(GiNaC::ex_to<GiNaC::symbol>(parameter).get_name());
+    }
+    const std::string test = "if (" + kernel.fast_path->predicate + "(" +
+                             joined(parameters_read(kernel, kernel.fast_path->conditions), ", ") + "))";
+    const std::string call = "return " + kernel.fast_path->kernel + "(";
+    std::string statement = call + joined(arguments, ", ") + ");";
+    // On a line of its own (indented by 4) when it does not fit beside the test, and its arguments
+    // wrapped under the first when it does not fit there either.
+    if (2 + test.size() + 1 + statement.size() > column_limit && 4 + statement.size() > column_limit) {
+      statement = wrapped_list("    " + call, arguments, ");").substr(4);
+    }
+    emitted.full_body = std::move(emitted.body);
+    emitted.body = {short_if(test, statement),
+                    wrapped_list("  return " + full_form_name(kernel) + "(", arguments, ");").substr(2)};
   }
   return emitted;
 }

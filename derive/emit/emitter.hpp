@@ -14,8 +14,14 @@ namespace billiards::derive {
 
 /// A kernel printed as C++: its body lines and the number of arithmetic operations they perform.
 struct EmittedKernel {
-  std::vector<std::string> body;  ///< `const Scalar name = …;` lines, then the `return …;` line
-  int operation_count = 0;        ///< +, −, ×, ÷ and negations in the body
+  /// `const Scalar name = …;` lines, then the `return …;` line. For a kernel with a fast path: the
+  /// predicate's test returning the fast kernel, then `return full_<name>(…);`.
+  std::vector<std::string> body;
+  /// For a kernel with a fast path, the body of `full_<name>`: every step, for every valid input (a
+  /// function of its own, so that the compilers inline the test and the fast kernel into the caller
+  /// however long the full form is); empty otherwise.
+  std::vector<std::string> full_body;
+  int operation_count = 0;  ///< +, −, ×, ÷ and negations in the steps and outputs
 };
 
 /// Prints one kernel's body. Throws std::invalid_argument naming the kernel when an expression has no

@@ -5,7 +5,7 @@
 // was printed, and names the claims it implements. They take masses and dot products, so they serve vectors
 // of any dimension and need no Eigen.
 //
-// Fingerprint: fnv1a64:a5e1e1920ba95d34 (of this header and the audit)
+// Fingerprint: fnv1a64:8a6a769d86001e30 (of this header and the audit)
 #pragma once
 
 #include <bit>
@@ -164,9 +164,11 @@ BILLIARDS_HOST_DEVICE constexpr bool within_plain_mass_range(Scalar m1, Scalar m
          plain_mass_low<Scalar>() <= m2 && m2 <= plain_mass_high<Scalar>();
 }
 
-/// The paper's perfectly elastic collision in normal components: the changes x1·n − v1·n and x2·n
-/// − v2·n of the two balls' velocities along the unit contact normal n, from the masses and v1·n,
-/// v2·n. A mass may be +∞ (an immovable body), not both.
+/// The full form of elastic_normal_velocity_change, right for every valid input:
+/// elastic_normal_velocity_change takes plain_elastic_normal_velocity_change where
+/// within_plain_mass_range holds and this elsewhere. A function of its own, so that the compilers
+/// inline the test and plain_elastic_normal_velocity_change into each caller however long this form is;
+/// call elastic_normal_velocity_change.
 ///
 /// Proven equal to the derived expression of the audit claim `kernel.elastic_normal_velocity_change`
 /// before it was printed; also implements `result.x1_simplified_form`, `result.x2_by_symmetry`,
@@ -176,9 +178,8 @@ BILLIARDS_HOST_DEVICE constexpr bool within_plain_mass_range(Scalar m1, Scalar m
 ///
 /// Total ops: 17
 template <typename Scalar>
-BILLIARDS_HOST_DEVICE constexpr NormalVelocityChange<Scalar> elastic_normal_velocity_change(
+BILLIARDS_HOST_DEVICE constexpr NormalVelocityChange<Scalar> full_elastic_normal_velocity_change(
     Scalar m1, Scalar m2, Scalar v1n, Scalar v2n) noexcept {
-  if (within_plain_mass_range(m1, m2)) return plain_elastic_normal_velocity_change(m1, m2, v1n, v2n);
   const Scalar relative_normal_speed = v2n - v1n;
   const Scalar first_mass_ratio = m1 / m2;
   const Scalar second_mass_ratio = m2 / m1;
@@ -196,6 +197,24 @@ BILLIARDS_HOST_DEVICE constexpr NormalVelocityChange<Scalar> elastic_normal_velo
   if (second_impulse_coefficient < smallest_normal<Scalar>()) second_multiplier = m1;
   const Scalar second_change = second_factor * second_multiplier;
   return {first_change, -second_change};
+}
+
+/// The paper's perfectly elastic collision in normal components: the changes x1·n − v1·n and x2·n
+/// − v2·n of the two balls' velocities along the unit contact normal n, from the masses and v1·n,
+/// v2·n. A mass may be +∞ (an immovable body), not both.
+///
+/// Proven equal to the derived expression of the audit claim `kernel.elastic_normal_velocity_change`
+/// before it was printed; also implements `result.x1_simplified_form`, `result.x2_by_symmetry`,
+/// `kernel.impulse_coefficient_first`, `kernel.impulse_coefficient_second`,
+/// `beyond.immovable.mass_ratio_form`, `beyond.immovable.small_mass_form`,
+/// `beyond.plain_range.one_division_form`.
+///
+/// Total ops: 17
+template <typename Scalar>
+BILLIARDS_HOST_DEVICE constexpr NormalVelocityChange<Scalar> elastic_normal_velocity_change(
+    Scalar m1, Scalar m2, Scalar v1n, Scalar v2n) noexcept {
+  if (within_plain_mass_range(m1, m2)) return plain_elastic_normal_velocity_change(m1, m2, v1n, v2n);
+  return full_elastic_normal_velocity_change(m1, m2, v1n, v2n);
 }
 
 /// The same as normal_velocity_change for masses in [plain_mass_low, plain_mass_high]
@@ -221,8 +240,10 @@ BILLIARDS_HOST_DEVICE constexpr NormalVelocityChange<Scalar> plain_normal_veloci
   return {first_change, -second_change};
 }
 
-/// A collision with coefficient of restitution e (0 ≤ e ≤ 1; e = 1 is the paper's): the changes
-/// x1·n − v1·n and x2·n − v2·n along the unit contact normal n. A mass may be +∞.
+/// The full form of normal_velocity_change, right for every valid input: normal_velocity_change takes
+/// plain_normal_velocity_change where within_plain_mass_range holds and this elsewhere. A function of
+/// its own, so that the compilers inline the test and plain_normal_velocity_change into each caller
+/// however long this form is; call normal_velocity_change.
 ///
 /// Proven equal to the derived expression of the audit claim `kernel.normal_velocity_change` before it
 /// was printed; also implements `beyond.restitution.impulse_coefficients`,
@@ -231,9 +252,8 @@ BILLIARDS_HOST_DEVICE constexpr NormalVelocityChange<Scalar> plain_normal_veloci
 ///
 /// Total ops: 18
 template <typename Scalar>
-BILLIARDS_HOST_DEVICE constexpr NormalVelocityChange<Scalar> normal_velocity_change(
+BILLIARDS_HOST_DEVICE constexpr NormalVelocityChange<Scalar> full_normal_velocity_change(
     Scalar m1, Scalar m2, Scalar v1n, Scalar v2n, Scalar restitution) noexcept {
-  if (within_plain_mass_range(m1, m2)) return plain_normal_velocity_change(m1, m2, v1n, v2n, restitution);
   const Scalar relative_normal_speed = v2n - v1n;
   const Scalar first_mass_ratio = m1 / m2;
   const Scalar second_mass_ratio = m2 / m1;
@@ -252,6 +272,22 @@ BILLIARDS_HOST_DEVICE constexpr NormalVelocityChange<Scalar> normal_velocity_cha
   if (second_impulse_coefficient < smallest_normal<Scalar>()) second_multiplier = m1;
   const Scalar second_change = second_factor * second_multiplier;
   return {first_change, -second_change};
+}
+
+/// A collision with coefficient of restitution e (0 ≤ e ≤ 1; e = 1 is the paper's): the changes
+/// x1·n − v1·n and x2·n − v2·n along the unit contact normal n. A mass may be +∞.
+///
+/// Proven equal to the derived expression of the audit claim `kernel.normal_velocity_change` before it
+/// was printed; also implements `beyond.restitution.impulse_coefficients`,
+/// `beyond.immovable.mass_ratio_form`, `beyond.restitution.energy_loss`,
+/// `beyond.immovable.small_mass_form`, `beyond.plain_range.one_division_form`.
+///
+/// Total ops: 18
+template <typename Scalar>
+BILLIARDS_HOST_DEVICE constexpr NormalVelocityChange<Scalar> normal_velocity_change(
+    Scalar m1, Scalar m2, Scalar v1n, Scalar v2n, Scalar restitution) noexcept {
+  if (within_plain_mass_range(m1, m2)) return plain_normal_velocity_change(m1, m2, v1n, v2n, restitution);
+  return full_normal_velocity_change(m1, m2, v1n, v2n, restitution);
 }
 
 /// The same as direction_velocity_change for masses in [plain_mass_low, plain_mass_high]
@@ -277,8 +313,10 @@ BILLIARDS_HOST_DEVICE constexpr NormalVelocityChange<Scalar> plain_direction_vel
   return {first_change, -second_change};
 }
 
-/// The same along a direction d that need not be a unit vector: the multiples of d to add to v1 and v2,
-/// from the masses, v1·d, v2·d, d·d and e. d must not be zero.
+/// The full form of direction_velocity_change, right for every valid input: direction_velocity_change
+/// takes plain_direction_velocity_change where within_plain_mass_range holds and this elsewhere. A
+/// function of its own, so that the compilers inline the test and plain_direction_velocity_change into
+/// each caller however long this form is; call direction_velocity_change.
 ///
 /// Proven equal to the derived expression of the audit claim `kernel.direction_velocity_change` before
 /// it was printed; also implements `beyond.any_normal.direction_form`,
@@ -287,10 +325,8 @@ BILLIARDS_HOST_DEVICE constexpr NormalVelocityChange<Scalar> plain_direction_vel
 ///
 /// Total ops: 19
 template <typename Scalar>
-BILLIARDS_HOST_DEVICE constexpr NormalVelocityChange<Scalar> direction_velocity_change(
+BILLIARDS_HOST_DEVICE constexpr NormalVelocityChange<Scalar> full_direction_velocity_change(
     Scalar m1, Scalar m2, Scalar v1d, Scalar v2d, Scalar dd, Scalar restitution) noexcept {
-  if (within_plain_mass_range(m1, m2))
-    return plain_direction_velocity_change(m1, m2, v1d, v2d, dd, restitution);
   const Scalar direction_speed = (v2d - v1d) / dd;
   const Scalar first_mass_ratio = m1 / m2;
   const Scalar second_mass_ratio = m2 / m1;
@@ -309,6 +345,23 @@ BILLIARDS_HOST_DEVICE constexpr NormalVelocityChange<Scalar> direction_velocity_
   if (second_impulse_coefficient < smallest_normal<Scalar>()) second_multiplier = m1;
   const Scalar second_change = second_factor * second_multiplier;
   return {first_change, -second_change};
+}
+
+/// The same along a direction d that need not be a unit vector: the multiples of d to add to v1 and v2,
+/// from the masses, v1·d, v2·d, d·d and e. d must not be zero.
+///
+/// Proven equal to the derived expression of the audit claim `kernel.direction_velocity_change` before
+/// it was printed; also implements `beyond.any_normal.direction_form`,
+/// `beyond.any_normal.scale_invariant`, `beyond.immovable.mass_ratio_form`,
+/// `beyond.immovable.small_mass_form`, `beyond.plain_range.one_division_form`.
+///
+/// Total ops: 19
+template <typename Scalar>
+BILLIARDS_HOST_DEVICE constexpr NormalVelocityChange<Scalar> direction_velocity_change(
+    Scalar m1, Scalar m2, Scalar v1d, Scalar v2d, Scalar dd, Scalar restitution) noexcept {
+  if (within_plain_mass_range(m1, m2))
+    return plain_direction_velocity_change(m1, m2, v1d, v2d, dd, restitution);
+  return full_direction_velocity_change(m1, m2, v1d, v2d, dd, restitution);
 }
 
 /// The same as approaching_direction_velocity_change for masses in [plain_mass_low, plain_mass_high]
@@ -335,9 +388,11 @@ BILLIARDS_HOST_DEVICE constexpr NormalVelocityChange<Scalar> plain_approaching_d
   return {first_change, -second_change};
 }
 
-/// Like direction_velocity_change with d pointing from ball 1 to ball 2, but only for approaching balls
-/// ((v2 − v1)·d < 0); separating or resting contacts are left unchanged (zero change), so rounding
-/// can never make a separating pair collide again.
+/// The full form of approaching_direction_velocity_change, right for every valid input:
+/// approaching_direction_velocity_change takes plain_approaching_direction_velocity_change where
+/// within_plain_mass_range holds and this elsewhere. A function of its own, so that the compilers
+/// inline the test and plain_approaching_direction_velocity_change into each caller however long this
+/// form is; call approaching_direction_velocity_change.
 ///
 /// Proven equal to the derived expression of the audit claim
 /// `kernel.approaching_direction_velocity_change` before it was printed; also implements
@@ -347,10 +402,8 @@ BILLIARDS_HOST_DEVICE constexpr NormalVelocityChange<Scalar> plain_approaching_d
 ///
 /// Total ops: 21
 template <typename Scalar>
-BILLIARDS_HOST_DEVICE constexpr NormalVelocityChange<Scalar> approaching_direction_velocity_change(
+BILLIARDS_HOST_DEVICE constexpr NormalVelocityChange<Scalar> full_approaching_direction_velocity_change(
     Scalar m1, Scalar m2, Scalar v1d, Scalar v2d, Scalar dd, Scalar restitution) noexcept {
-  if (within_plain_mass_range(m1, m2))
-    return plain_approaching_direction_velocity_change(m1, m2, v1d, v2d, dd, restitution);
   const Scalar direction_speed = (v2d - v1d) / dd;
   const Scalar approach_speed = (direction_speed - absolute_value(direction_speed)) / Scalar(2);
   const Scalar first_mass_ratio = m1 / m2;
@@ -370,6 +423,25 @@ BILLIARDS_HOST_DEVICE constexpr NormalVelocityChange<Scalar> approaching_directi
   if (second_impulse_coefficient < smallest_normal<Scalar>()) second_multiplier = m1;
   const Scalar second_change = second_factor * second_multiplier;
   return {first_change, -second_change};
+}
+
+/// Like direction_velocity_change with d pointing from ball 1 to ball 2, but only for approaching balls
+/// ((v2 − v1)·d < 0); separating or resting contacts are left unchanged (zero change), so rounding
+/// can never make a separating pair collide again.
+///
+/// Proven equal to the derived expression of the audit claim
+/// `kernel.approaching_direction_velocity_change` before it was printed; also implements
+/// `beyond.approaching.kernel_form`, `beyond.approaching.resolve_only_approaching`,
+/// `beyond.any_normal.direction_form`, `beyond.immovable.mass_ratio_form`,
+/// `beyond.immovable.small_mass_form`, `beyond.plain_range.one_division_form`.
+///
+/// Total ops: 21
+template <typename Scalar>
+BILLIARDS_HOST_DEVICE constexpr NormalVelocityChange<Scalar> approaching_direction_velocity_change(
+    Scalar m1, Scalar m2, Scalar v1d, Scalar v2d, Scalar dd, Scalar restitution) noexcept {
+  if (within_plain_mass_range(m1, m2))
+    return plain_approaching_direction_velocity_change(m1, m2, v1d, v2d, dd, restitution);
+  return full_approaching_direction_velocity_change(m1, m2, v1d, v2d, dd, restitution);
 }
 
 /// A ball meeting an immovable cushion (the paper's limit m2 → ∞ with v2 = 0): the change x·n −

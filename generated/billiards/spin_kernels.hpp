@@ -5,7 +5,7 @@
 // verified claim of the derivation audit before it was printed, and names the claims it implements. They take
 // masses and dot products, so they serve vectors of any dimension and need no Eigen.
 //
-// Fingerprint: fnv1a64:ffac4916dbb9928a (of this header and the audit)
+// Fingerprint: fnv1a64:8fa749b4b6ea44d6 (of this header and the audit)
 #pragma once
 
 #include <bit>
@@ -294,11 +294,10 @@ BILLIARDS_HOST_DEVICE constexpr bool within_plain_mass_range(Scalar m1, Scalar m
          plain_mass_low<Scalar>() <= m2 && m2 <= plain_mass_high<Scalar>();
 }
 
-/// The changes j/m1 and j/m2 of the two balls' velocities along û_t (ball 1 +, ball 2 −) that the
-/// tangential impulse j = min(μ J_n, |u_t|/k) makes, as min(−(1 + e) μ (v2 − v1)·n, 2|u_t|/7)/(1
-/// + m1/m2) and /(1 + m2/m1): only the mass ratio enters, so no mass's size can overflow it; beyond the
-/// normal range of a fraction the heavy ball's change is the bound times m_light/m_heavy over 1 +
-/// m_light/m_heavy, formed on significands and scaled back once.
+/// The full form of tangential_velocity_change, right for every valid input: tangential_velocity_change
+/// takes plain_tangential_velocity_change where within_plain_mass_range holds and this elsewhere. A
+/// function of its own, so that the compilers inline the test and plain_tangential_velocity_change into
+/// each caller however long this form is; call tangential_velocity_change.
 ///
 /// Proven equal to the derived expression of the audit claim `kernel.tangential_velocity_change` before
 /// it was printed; also implements `kernel.tangential_velocity_change_sliding_condition`,
@@ -306,12 +305,9 @@ BILLIARDS_HOST_DEVICE constexpr bool within_plain_mass_range(Scalar m1, Scalar m
 ///
 /// Total ops: 37
 template <typename Scalar>
-BILLIARDS_HOST_DEVICE TangentialVelocityChange<Scalar> tangential_velocity_change(
+BILLIARDS_HOST_DEVICE TangentialVelocityChange<Scalar> full_tangential_velocity_change(
     Scalar m1, Scalar m2, Scalar restitution, Scalar friction, Scalar relative_normal_speed,
     Scalar tangential_slip) noexcept {
-  if (within_plain_mass_range(m1, m2))
-    return plain_tangential_velocity_change(m1, m2, restitution, friction, relative_normal_speed,
-                                            tangential_slip);
   const Scalar first_mass_ratio = m1 / m2;
   const Scalar second_mass_ratio = m2 / m1;
   const Scalar first_denominator = Scalar(1) + first_mass_ratio;
@@ -340,6 +336,28 @@ BILLIARDS_HOST_DEVICE TangentialVelocityChange<Scalar> tangential_velocity_chang
   if (second_fraction < smallest_normal<Scalar>())
     second = times_power_of_two(scaled_second_small_mass_change, second_small_mass_change_exponent);
   return {first, second};
+}
+
+/// The changes j/m1 and j/m2 of the two balls' velocities along û_t (ball 1 +, ball 2 −) that the
+/// tangential impulse j = min(μ J_n, |u_t|/k) makes, as min(−(1 + e) μ (v2 − v1)·n, 2|u_t|/7)/(1
+/// + m1/m2) and /(1 + m2/m1): only the mass ratio enters, so no mass's size can overflow it; beyond the
+/// normal range of a fraction the heavy ball's change is the bound times m_light/m_heavy over 1 +
+/// m_light/m_heavy, formed on significands and scaled back once.
+///
+/// Proven equal to the derived expression of the audit claim `kernel.tangential_velocity_change` before
+/// it was printed; also implements `kernel.tangential_velocity_change_sliding_condition`,
+/// `friction.sticking_impulse`, `friction.sliding_never_reverses`.
+///
+/// Total ops: 37
+template <typename Scalar>
+BILLIARDS_HOST_DEVICE TangentialVelocityChange<Scalar> tangential_velocity_change(
+    Scalar m1, Scalar m2, Scalar restitution, Scalar friction, Scalar relative_normal_speed,
+    Scalar tangential_slip) noexcept {
+  if (within_plain_mass_range(m1, m2))
+    return plain_tangential_velocity_change(m1, m2, restitution, friction, relative_normal_speed,
+                                            tangential_slip);
+  return full_tangential_velocity_change(m1, m2, restitution, friction, relative_normal_speed,
+                                         tangential_slip);
 }
 
 /// The spin change 5 Δv/(2R) along n × û_t of a ball of radius R whose velocity a tangential impulse
@@ -409,17 +427,17 @@ BILLIARDS_HOST_DEVICE constexpr bool slide_time_is_moderate(Scalar slip_speed, S
          moderate_low<Scalar>() <= gravity && gravity <= moderate_high<Scalar>();
 }
 
-/// The time t_s = 2 |u0|/(7 μ_s g) a ball slides on the cloth before it rolls, from its slip speed
-/// |u0|; +∞ without sliding friction.
+/// The full form of slide_time, right for every valid input: slide_time takes plain_slide_time where
+/// slide_time_is_moderate holds and this elsewhere. A function of its own, so that the compilers inline
+/// the test and plain_slide_time into each caller however long this form is; call slide_time.
 ///
 /// Proven equal to the derived expression of the audit claim `sliding.slide_time` before it was
 /// printed; also implements `sliding.frictionless_slides_on`.
 ///
 /// Total ops: 16
 template <typename Scalar>
-BILLIARDS_HOST_DEVICE Scalar slide_time(Scalar slip_speed, Scalar sliding_friction, Scalar gravity) noexcept {
-  if (slide_time_is_moderate(slip_speed, sliding_friction, gravity))
-    return plain_slide_time(slip_speed, sliding_friction, gravity);
+BILLIARDS_HOST_DEVICE Scalar full_slide_time(Scalar slip_speed, Scalar sliding_friction,
+                                             Scalar gravity) noexcept {
   const Scalar slip_speed_exponent = binary_exponent(slip_speed);
   const Scalar scaled_slip_speed = times_power_of_two(slip_speed, -slip_speed_exponent);
   const Scalar sliding_friction_exponent = binary_exponent(sliding_friction);
@@ -431,6 +449,20 @@ BILLIARDS_HOST_DEVICE Scalar slide_time(Scalar slip_speed, Scalar sliding_fricti
   Scalar duration = times_power_of_two(scaled_duration, duration_exponent);
   if (sliding_friction <= Scalar(0)) duration = infinity<Scalar>();
   return duration;
+}
+
+/// The time t_s = 2 |u0|/(7 μ_s g) a ball slides on the cloth before it rolls, from its slip speed
+/// |u0|; +∞ without sliding friction.
+///
+/// Proven equal to the derived expression of the audit claim `sliding.slide_time` before it was
+/// printed; also implements `sliding.frictionless_slides_on`.
+///
+/// Total ops: 16
+template <typename Scalar>
+BILLIARDS_HOST_DEVICE Scalar slide_time(Scalar slip_speed, Scalar sliding_friction, Scalar gravity) noexcept {
+  if (slide_time_is_moderate(slip_speed, sliding_friction, gravity))
+    return plain_slide_time(slip_speed, sliding_friction, gravity);
+  return full_slide_time(slip_speed, sliding_friction, gravity);
 }
 
 /// The same as roll_time where every input lies in [moderate_low, moderate_high]
@@ -469,17 +501,16 @@ BILLIARDS_HOST_DEVICE constexpr bool roll_time_is_moderate(Scalar speed, Scalar 
          moderate_low<Scalar>() <= gravity && gravity <= moderate_high<Scalar>();
 }
 
-/// The time t_r = |v0|/(μ_r g) a rolling ball takes to stop, from its speed |v0|; +∞ without rolling
-/// resistance.
+/// The full form of roll_time, right for every valid input: roll_time takes plain_roll_time where
+/// roll_time_is_moderate holds and this elsewhere. A function of its own, so that the compilers inline
+/// the test and plain_roll_time into each caller however long this form is; call roll_time.
 ///
 /// Proven equal to the derived expression of the audit claim `rolling.stop_time` before it was printed;
 /// also implements `rolling.frictionless_rolls_on`.
 ///
 /// Total ops: 15
 template <typename Scalar>
-BILLIARDS_HOST_DEVICE Scalar roll_time(Scalar speed, Scalar rolling_friction, Scalar gravity) noexcept {
-  if (roll_time_is_moderate(speed, rolling_friction, gravity))
-    return plain_roll_time(speed, rolling_friction, gravity);
+BILLIARDS_HOST_DEVICE Scalar full_roll_time(Scalar speed, Scalar rolling_friction, Scalar gravity) noexcept {
   const Scalar speed_exponent = binary_exponent(speed);
   const Scalar scaled_speed = times_power_of_two(speed, -speed_exponent);
   const Scalar rolling_friction_exponent = binary_exponent(rolling_friction);
@@ -491,6 +522,20 @@ BILLIARDS_HOST_DEVICE Scalar roll_time(Scalar speed, Scalar rolling_friction, Sc
   Scalar duration = times_power_of_two(scaled_duration, duration_exponent);
   if (rolling_friction <= Scalar(0)) duration = infinity<Scalar>();
   return duration;
+}
+
+/// The time t_r = |v0|/(μ_r g) a rolling ball takes to stop, from its speed |v0|; +∞ without rolling
+/// resistance.
+///
+/// Proven equal to the derived expression of the audit claim `rolling.stop_time` before it was printed;
+/// also implements `rolling.frictionless_rolls_on`.
+///
+/// Total ops: 15
+template <typename Scalar>
+BILLIARDS_HOST_DEVICE Scalar roll_time(Scalar speed, Scalar rolling_friction, Scalar gravity) noexcept {
+  if (roll_time_is_moderate(speed, rolling_friction, gravity))
+    return plain_roll_time(speed, rolling_friction, gravity);
+  return full_roll_time(speed, rolling_friction, gravity);
 }
 
 /// The same as spin_time where every input lies in [moderate_low, moderate_high]
@@ -532,18 +577,17 @@ BILLIARDS_HOST_DEVICE constexpr bool spin_time_is_moderate(Scalar spin_speed, Sc
          moderate_low<Scalar>() <= gravity && gravity <= moderate_high<Scalar>();
 }
 
-/// The time t_z = 2 R |ω_z|/(5 μ_sp g) until the spin about ẑ stops, from |ω_z| and the radius R;
-/// +∞ without spinning friction.
+/// The full form of spin_time, right for every valid input: spin_time takes plain_spin_time where
+/// spin_time_is_moderate holds and this elsewhere. A function of its own, so that the compilers inline
+/// the test and plain_spin_time into each caller however long this form is; call spin_time.
 ///
 /// Proven equal to the derived expression of the audit claim `spinning.stop_time` before it was
 /// printed; also implements `spinning.frictionless_spins_on`.
 ///
 /// Total ops: 21
 template <typename Scalar>
-BILLIARDS_HOST_DEVICE Scalar spin_time(Scalar spin_speed, Scalar radius, Scalar spinning_friction,
-                                       Scalar gravity) noexcept {
-  if (spin_time_is_moderate(spin_speed, radius, spinning_friction, gravity))
-    return plain_spin_time(spin_speed, radius, spinning_friction, gravity);
+BILLIARDS_HOST_DEVICE Scalar full_spin_time(Scalar spin_speed, Scalar radius, Scalar spinning_friction,
+                                            Scalar gravity) noexcept {
   const Scalar spin_speed_exponent = binary_exponent(spin_speed);
   const Scalar scaled_spin_speed = times_power_of_two(spin_speed, -spin_speed_exponent);
   const Scalar radius_exponent = binary_exponent(radius);
@@ -559,6 +603,21 @@ BILLIARDS_HOST_DEVICE Scalar spin_time(Scalar spin_speed, Scalar radius, Scalar 
   Scalar duration = times_power_of_two(scaled_duration, duration_exponent);
   if (spinning_friction <= Scalar(0)) duration = infinity<Scalar>();
   return duration;
+}
+
+/// The time t_z = 2 R |ω_z|/(5 μ_sp g) until the spin about ẑ stops, from |ω_z| and the radius R;
+/// +∞ without spinning friction.
+///
+/// Proven equal to the derived expression of the audit claim `spinning.stop_time` before it was
+/// printed; also implements `spinning.frictionless_spins_on`.
+///
+/// Total ops: 21
+template <typename Scalar>
+BILLIARDS_HOST_DEVICE Scalar spin_time(Scalar spin_speed, Scalar radius, Scalar spinning_friction,
+                                       Scalar gravity) noexcept {
+  if (spin_time_is_moderate(spin_speed, radius, spinning_friction, gravity))
+    return plain_spin_time(spin_speed, radius, spinning_friction, gravity);
+  return full_spin_time(spin_speed, radius, spinning_friction, gravity);
 }
 
 }  // namespace billiards::kernels::spin

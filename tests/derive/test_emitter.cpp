@@ -179,6 +179,29 @@ TEST_CASE("A fast path's predicate compares bits where its conditions are one in
                    "#endif\n"
                    "  return plain_mass_low<Scalar>() <= m1 && m1 <= plain_mass_high<Scalar>() &&\n"));
   }
+  SECTION("the kernel: the test and the fast kernel, then full_<name>, which holds every step") {
+    const std::string text = header();
+    // (The signatures are wrapped at the column limit.)
+    CHECK(contains(text, "NormalVelocityChange<Scalar> full_kernel(Scalar m1, Scalar m2, Scalar v1n,\n"));
+    CHECK(contains(text,
+                   "Scalar v2n) noexcept {\n"
+                   "  if (in_range(m1, m2)) return plain_kernel(m1, m2, v1n, v2n);\n"
+                   "  return full_full_kernel(m1, m2, v1n, v2n);\n"
+                   "}\n"));
+    CHECK(contains(text, "NormalVelocityChange<Scalar> full_full_kernel(Scalar m1, Scalar m2,\n"));
+    CHECK(contains(text,
+                   "Scalar v2n) noexcept {\n"
+                   "  const Scalar relative_normal_speed = v2n - v1n;\n"
+                   "  return {relative_normal_speed, -relative_normal_speed};\n"
+                   "}\n"));
+    // Printed before the kernel that calls it, and documented as the full form.
+    CHECK(text.find("full_full_kernel(Scalar m1") < text.find("full_kernel(Scalar m1"));
+    CHECK(contains(text,
+                   "/// The full form of full_kernel, right for every valid input: full_kernel takes "
+                   "plain_kernel"));
+    // The kernel without a fast path is printed whole, as before.
+    CHECK_FALSE(contains(text, "full_plain_kernel"));
+  }
   SECTION("anything else: the comparisons alone, and no bit helpers") {
     using Conditions = std::vector<ex>;
     const std::vector<std::pair<std::string, Conditions>> others = {
