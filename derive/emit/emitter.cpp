@@ -256,9 +256,6 @@ std::optional<std::pair<ex, ex>> common_interval(const Kernel& kernel, const std
   return std::pair<ex, ex>{low, high};
 }
 
-// The function that holds a kernel's every step where it has a fast path: full_<name>.
-std::string full_form_name(const Kernel& kernel) { return "full_" + kernel.name; }
-
 // A fast path's predicate as a documented constexpr function: true where every condition holds. Where
 // the conditions put every parameter they read in one interval of positive finite constants, the host
 // code for IEEE float and double compares bits instead (bits_above: integer operations where the

@@ -8,6 +8,8 @@
 
 namespace billiards::derive {
 
+std::string full_form_name(const Kernel& kernel) { return "full_" + kernel.name; }
+
 std::vector<std::string> cited_claims(const Kernel& kernel) {
   std::vector<std::string> ids;
   const auto cite = [&](const std::string& id) {

@@ -101,6 +101,10 @@ struct ScaledMonomial {
 ScaledMonomial scaled_monomial(const std::string& name, const GiNaC::ex& monomial,
                                const std::vector<GiNaC::ex>& parameters);
 
+/// The name of the function that holds every step of a kernel with a fast path, `full_<name>`: the kernel
+/// itself is printed as its range test, the fast kernel's call and a call of this one.
+std::string full_form_name(const Kernel& kernel);
+
 /// Every claim a kernel cites, in order and without repeats: `equals`, `claims`, the guards' claims, the
 /// fast path's claim.
 std::vector<std::string> cited_claims(const Kernel& kernel);

@@ -534,6 +534,21 @@ std::vector<KernelProblem> validate_kernels(const std::vector<Kernel>& kernels,
   std::vector<KernelProblem> problems;
   for (std::size_t i = 0; i < kernels.size(); ++i) {
     std::vector<KernelProblem> found = validate_kernel(kernels[i], claims);
+    for (std::size_t j = 0; j < kernels.size(); ++j) {
+      const Kernel &kernel = kernels[i], &other = kernels[j];
+      if (j < i && other.name == kernel.name) {
+        found.push_back({kernel.name, kernel.equals, "has the name of a kernel printed before it"});
+      }
+      if (j != i && other.fast_path && full_form_name(other) == kernel.name) {
+        found.push_back({kernel.name, kernel.equals,
+                         "has the name of the function that holds " + other.name + "'s full form"});
+      }
+      if (j != i && kernel.fast_path && full_form_name(kernel) == other.name) {
+        found.push_back({kernel.name, kernel.equals,
+                         "would print its full form as " + full_form_name(kernel) +
+                             ", which is the name of another kernel"});
+      }
+    }
     if (kernels[i].fast_path) {
       const std::vector<KernelProblem> path = fast_path_problems(kernels, i);
       found.insert(found.end(), path.begin(), path.end());

@@ -35,7 +35,10 @@ std::vector<KernelProblem> validate_kernel(const Kernel& kernel, const std::vect
 
 /// The problems of every kernel in `kernels`, in order, and of each fast path: it must take a kernel
 /// printed before it with the same parameters, claim and claim terms, whose domain is the path's
-/// conditions (relationals in the parameters and named constants; one predicate name, one set).
+/// conditions (relationals in the parameters and named constants; one predicate name, one set). The
+/// printed functions' names must be distinct: no kernel may share another's name or the name
+/// `full_<name>` of a kernel with a fast path (full_form_name), where the header would define one
+/// function twice.
 std::vector<KernelProblem> validate_kernels(const std::vector<Kernel>& kernels,
                                             const std::vector<Claim>& claims);
 

@@ -205,3 +205,37 @@ TEST_CASE("binary_exponent is exact on rationals and held on symbols", "[derive]
   CHECK(!GiNaC::is_a<GiNaC::numeric>(
       GiNaC::normal(resolve_powers_of_two(GiNaC::pow(2, k + 3) * GiNaC::pow(2, -other)))));
 }
+
+TEST_CASE("The printed functions' names are distinct", "[derive][validate]") {
+  const std::vector<Claim> claims = {verified("test.share", a * x / (a + b))};
+  Kernel plain = share_kernel();
+  plain.name = "plain_share";
+  const std::vector<ex> range = {plain_mass_low() <= a, a <= plain_mass_high(), plain_mass_low() <= b,
+                                 b <= plain_mass_high()};
+  plain.domain = range;
+  Kernel full = share_kernel();
+  full.fast_path = FastPath{.predicate = "share_in_range",
+                            .brief = "True in the range.",
+                            .conditions = range,
+                            .kernel = "plain_share",
+                            .claim = "test.share"};
+  REQUIRE(full_form_name(full) == "full_share");
+  SECTION("a plain kernel and the kernel that takes it: proven") {
+    CHECK(validate_kernels({plain, full}, claims).empty());
+  }
+  SECTION("a kernel named as another's full form, before it or after it") {
+    Kernel clash = share_kernel();
+    clash.name = "full_share";
+    for (const std::vector<Kernel>& kernels :
+         {std::vector<Kernel>{plain, full, clash}, std::vector<Kernel>{clash, plain, full}}) {
+      const auto problems = validate_kernels(kernels, claims);
+      CHECK(mentions(problems,
+                     "full_share test.share has the name of the function that holds share's full form"));
+      CHECK(mentions(problems, "share test.share would print its full form as full_share"));
+    }
+  }
+  SECTION("two kernels of one name") {
+    CHECK(mentions(validate_kernels({plain, full, plain}, claims),
+                   "plain_share test.share has the name of a kernel printed before it"));
+  }
+}
