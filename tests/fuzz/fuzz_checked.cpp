@@ -314,9 +314,15 @@ void exercise_spin(Shaper& shape) {
         billiards_fuzz::twice_energy(a.mass, a.radius, result.first.velocity, result.first.angular_velocity) +
         billiards_fuzz::twice_energy(b.mass, b.radius, result.second.velocity,
                                      result.second.angular_velocity);
+    const billiards_fuzz::Long underflow =
+        billiards_fuzz::subnormal_energy(a.mass, a.radius, a.velocity, a.angular_velocity,
+                                         result.first.velocity, result.first.angular_velocity) +
+        billiards_fuzz::subnormal_energy(b.mass, b.radius, b.velocity, b.angular_velocity,
+                                         result.second.velocity, result.second.angular_velocity);
     if (!broken &&
         !(after <= before * (1 + billiards_fuzz::tolerance * std::numeric_limits<Scalar>::epsilon()) +
-                       billiards_fuzz::Long(std::numeric_limits<Scalar>::denorm_min()) * (a.mass + b.mass)))
+                       billiards_fuzz::Long(std::numeric_limits<Scalar>::denorm_min()) * (a.mass + b.mass) +
+                       underflow))
       broken = "energy created";
     if (broken) {
       std::fprintf(stderr, "  m1 = %a m2 = %a e = %a mu = %a n = (%a, %a, %a)\n", double(a.mass),
@@ -375,7 +381,9 @@ void exercise_cloth(Shaper& shape) {
                                                                     later.angular_velocity);
     if (!broken &&
         !(after <= before * (1 + billiards_fuzz::tolerance * std::numeric_limits<Scalar>::epsilon()) +
-                       billiards_fuzz::Long(std::numeric_limits<Scalar>::denorm_min())))
+                       billiards_fuzz::Long(std::numeric_limits<Scalar>::denorm_min()) +
+                       billiards_fuzz::subnormal_energy(1, radius, ball.velocity, ball.angular_velocity,
+                                                        later.velocity, later.angular_velocity)))
       broken = "energy created";
     const billiards_fuzz::ExpectedCloth expected = billiards_fuzz::expected_on_cloth(ball, cloth, t);
     if (!broken && expected.known) {

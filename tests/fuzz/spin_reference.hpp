@@ -106,6 +106,22 @@ Long twice_energy(Long mass, Long radius, const Eigen::Matrix<Scalar, 3, 1>& v,
                  Long(0.4) * radius * radius * w.template cast<Long>().squaredNorm());
 }
 
+/// The most twice_energy() of one ball's results can gain from rounding below the normal range: each
+/// velocity and spin is known only to a few times the smallest subnormal δ there, and an error δ in ω
+/// carries (2/5) m R² (2|ω| + δ) δ of it — with R = 2^124 an ω_y of 2^−149 left unchanged (its change
+/// of 2^−154 underflowed) holds more energy than a velocity of 2e-10 (float; found by the fuzz
+/// bounded run).
+template <typename Scalar>
+Long subnormal_energy(Long mass, Long radius, const Eigen::Matrix<Scalar, 3, 1>& v_before,
+                      const Eigen::Matrix<Scalar, 3, 1>& w_before, const Eigen::Matrix<Scalar, 3, 1>& v_after,
+                      const Eigen::Matrix<Scalar, 3, 1>& w_after) {
+  const Long delta = 4 * Long(std::numeric_limits<Scalar>::denorm_min());
+  const auto size = [](const Eigen::Matrix<Scalar, 3, 1>& x) { return x.template cast<Long>().norm(); };
+  return mass * delta *
+         (size(v_before) + size(v_after) + delta +
+          Long(0.4) * radius * radius * (size(w_before) + size(w_after) + delta));
+}
+
 /// A ball on the cloth after t within one phase, by its closed form (sliding: v0 − μ_s g t û,
 /// ω_h0 + (5 μ_s g t/(2R)) ẑ × û; rolling: v0 − μ_r g t v̂ with ω_h = ẑ × v/R; the spin about ẑ
 /// decaying at 5 μ_sp g/(2R) to 0 in any phase), or nothing when the phase is not clear beyond
@@ -132,8 +148,12 @@ ExpectedCloth expected_on_cloth(const billiards::BallOnCloth<Scalar>& ball,
   const Long speed = horizontal.norm(), spin = std::hypot(w.x(), w.y()), slip_speed = slip.norm();
   // The runtime's rolling tolerance, 16 ε (|v| + R |ω_h|): clear of it by a factor of 4 either way.
   const Long rolling_tolerance = 16 * epsilon * (speed + R * spin);
-  const bool sliding = slip_speed > 4 * rolling_tolerance,
-             rolling = slip_speed < rolling_tolerance / 4 && speed > 0;
+  // Below the normal range the slip's terms round to multiples of the smallest subnormal whatever the
+  // tolerance (float: v = 2^−149 and R ω_x = −2^−149 (1 − 5e-5) round to a slip of exactly 0, rolling,
+  // where the exact slip of 7e-50 is sliding by the relative test; found by the fuzz bounded run).
+  const Long slip_rounding = 4 * Long(std::numeric_limits<Scalar>::denorm_min());
+  const bool sliding = slip_speed > 4 * rolling_tolerance + slip_rounding,
+             rolling = slip_speed + slip_rounding < rolling_tolerance / 4 && speed > 0;
   if (!sliding && !rolling) return expected;
   const Long mu = sliding ? Long(cloth.sliding_friction) : Long(cloth.rolling_friction);
   const Long end = mu > 0 ? (sliding ? 2 * slip_speed / (7 * mu * g) : speed / (mu * g))
