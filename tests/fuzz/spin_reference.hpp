@@ -109,8 +109,8 @@ Long twice_energy(Long mass, Long radius, const Eigen::Matrix<Scalar, 3, 1>& v,
 /// The most twice_energy() of one ball's results can gain from rounding below the normal range: each
 /// velocity and spin is known only to a few times the smallest subnormal δ there, and an error δ in ω
 /// carries (2/5) m R² (2|ω| + δ) δ of it — with R = 2^124 an ω_y of 2^−149 left unchanged (its change
-/// of 2^−154 underflowed) holds more energy than a velocity of 2e-10 (float; found by the fuzz
-/// bounded run).
+/// of 2^−154 underflowed) holds more energy than a velocity of 2e-10 (float; found by a fuzz run of
+/// 9 minutes).
 template <typename Scalar>
 Long subnormal_energy(Long mass, Long radius, const Eigen::Matrix<Scalar, 3, 1>& v_before,
                       const Eigen::Matrix<Scalar, 3, 1>& w_before, const Eigen::Matrix<Scalar, 3, 1>& v_after,
@@ -150,7 +150,7 @@ ExpectedCloth expected_on_cloth(const billiards::BallOnCloth<Scalar>& ball,
   const Long rolling_tolerance = 16 * epsilon * (speed + R * spin);
   // Below the normal range the slip's terms round to multiples of the smallest subnormal whatever the
   // tolerance (float: v = 2^−149 and R ω_x = −2^−149 (1 − 5e-5) round to a slip of exactly 0, rolling,
-  // where the exact slip of 7e-50 is sliding by the relative test; found by the fuzz bounded run).
+  // where the exact slip of 7e-50 is sliding by the relative test; found by a fuzz run of 9 minutes).
   const Long slip_rounding = 4 * Long(std::numeric_limits<Scalar>::denorm_min());
   const bool sliding = slip_speed > 4 * rolling_tolerance + slip_rounding,
              rolling = slip_speed + slip_rounding < rolling_tolerance / 4 && speed > 0;
