@@ -77,8 +77,12 @@ int derive_main(int argc, const char* const* argv, const std::vector<ModelEntry>
                  "Folder to write each model's audit (AUDIT.md, audit.json for the paper) and kernel headers "
                  "(billiards/kernels.hpp, billiards/reference_kernels.hpp) into (created if missing)")
       ->required()
-      ->type_name("DIR");
-  app.add_option("--model", only, "Run only this model (one of: " + names + ")")->type_name("NAME");
+      ->type_name("DIR")
+      ->check([](const std::string& value) {
+        return value.empty() ? std::string("the folder is empty; expected a folder's path") : std::string();
+      });
+  const CLI::Option* model_option =
+      app.add_option("--model", only, "Run only this model (one of: " + names + ")")->type_name("NAME");
   app.footer(
       "Exit status: 0 when every claim is verified or an assumption and every kernel is proven, 1 when a "
       "claim failed or a kernel is not proven (each is named on stderr; the audit is still written, the "
@@ -93,7 +97,7 @@ int derive_main(int argc, const char* const* argv, const std::vector<ModelEntry>
   }
   std::vector<const ModelEntry*> chosen;
   for (const ModelEntry& entry : models) {
-    if (only.empty() || entry.name == only) chosen.push_back(&entry);
+    if (model_option->count() == 0 || entry.name == only) chosen.push_back(&entry);
   }
   if (chosen.empty()) {
     std::cerr << "billiards-derive: --model: unknown model '" << only << "', expected one of: " << names
