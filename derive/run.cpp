@@ -6,6 +6,7 @@
 #include "emit/validate.hpp"
 
 #include <CLI/CLI.hpp>
+#include <billiards_support/cli_checks.hpp>
 
 #include <algorithm>
 #include <exception>
@@ -78,9 +79,7 @@ int derive_main(int argc, const char* const* argv, const std::vector<ModelEntry>
                  "(billiards/kernels.hpp, billiards/reference_kernels.hpp) into (created if missing)")
       ->required()
       ->type_name("DIR")
-      ->check([](const std::string& value) {
-        return value.empty() ? std::string("the folder is empty; expected a folder's path") : std::string();
-      });
+      ->check(billiards_support::path_given("a folder's path"));
   const CLI::Option* model_option =
       app.add_option("--model", only, "Run only this model (one of: " + names + ")")->type_name("NAME");
   app.footer(

@@ -78,7 +78,8 @@ int main(int argc, char** argv) {
   app.add_option("--equilibrate", options.equilibrate, "Collisions run first, not measured (default 10000)")
       ->check(count(0));
   app.add_option("--seed", options.seed, "Seed of the initial velocities (default 1)")->check(count(0));
-  app.add_option("--json", json_file, "Write the JSON object to FILE (default: standard output)");
+  app.add_option("--json", json_file, "Write the JSON object to FILE (default: standard output)")
+      ->check(billiards_support::path_given("a file's path"));
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& help) {

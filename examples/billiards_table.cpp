@@ -27,7 +27,7 @@
 
 int main(int argc, char** argv) {
   using namespace billiards_example;
-  using billiards_support::count_at_least, billiards_support::finite_number;
+  using billiards_support::count_at_least, billiards_support::finite_number, billiards_support::path_given;
   CLI::App app{
       "An event-driven billiards table on billiards::runtime: runs C ball-ball collisions and reports "
       "the drift of the kinetic energy.",
@@ -51,11 +51,13 @@ int main(int argc, char** argv) {
   app.add_option("--seed", seed, "Seed of the random placement (default 1)")->check(whole_number);
   app.add_option("--collisions", collisions, "Ball-ball collisions to run (default 1000000)")
       ->check(whole_number);
-  auto* setup_option = app.add_option("--setup", setup_file,
-                                      "Read the table and balls from FILE (format: examples/README.md)");
+  auto* setup_option =
+      app.add_option("--setup", setup_file, "Read the table and balls from FILE (format: examples/README.md)")
+          ->check(path_given("a setup file's path"));
   app.add_flag("--break", break_shot, "Rack 15 balls and strike the cue ball at the apex")
       ->excludes(setup_option);
-  app.add_option("--svg", svg_file, "Write the trajectories of the first --svg-events events to FILE");
+  app.add_option("--svg", svg_file, "Write the trajectories of the first --svg-events events to FILE")
+      ->check(path_given("a file's path"));
   app.add_option("--svg-events", svg_events, "Events drawn in the SVG (default 120)")->check(positive_count);
   app.add_option("--max-drift", max_drift,
                  "Exit 1 if the relative drift of the kinetic energy exceeds this (or is NaN)")

@@ -49,4 +49,15 @@ inline CLI::Validator finite_number(bool positive) {
       positive ? "NUMBER > 0" : "NUMBER >= 0");
 }
 
+/// A path given as a value: not empty. An empty value would otherwise read as the option not given
+/// (no SVG written, the random table run) or fail later with a message that names no option.
+/// `expected` says what the path names: "a file's path", "a folder's path".
+inline CLI::Validator path_given(const std::string& expected) {
+  return CLI::Validator(
+      [expected](std::string& text) -> std::string {
+        return text.empty() ? "the path is empty, expected " + expected : std::string();
+      },
+      "");
+}
+
 }  // namespace billiards_support
