@@ -3,6 +3,7 @@
 // simulation is in table.hpp, reading and drawing in table_io.hpp.
 #pragma once
 
+#include <billiards/checked.hpp>
 #include <billiards/collision.hpp>
 
 #include <Eigen/Core>
@@ -111,6 +112,15 @@ inline std::size_t validate(const Setup& setup) {
     std::ostringstream text;
     if (!ball.position.allFinite() || !ball.velocity.allFinite()) {
       text << "ball " << i << " has a position or velocity that is not finite";
+      fail(ball_origin(i), text.str());
+    }
+    // Beyond the checked calls' limit a collision's v2 − v1 and its dot products may overflow (head-on
+    // at 5e307 they did, and the run ended on a ball "off the table" at NaN).
+    if (const double limit = billiards::component_limit<double>();
+        ball.velocity.cwiseAbs().maxCoeff() > limit) {
+      text << "ball " << i << " has velocity (" << ball.velocity.x() << ", " << ball.velocity.y()
+           << "), expected components of magnitude at most " << limit
+           << " (billiards::component_limit, the checked calls' bound: within it no collision overflows)";
       fail(ball_origin(i), text.str());
     }
     const Vector& p = ball.position;

@@ -3,6 +3,7 @@
 #include "table.hpp"
 #include "table_io.hpp"
 
+#include <billiards/checked.hpp>
 #include <catch2/catch.hpp>
 
 #include <cmath>
@@ -120,6 +121,22 @@ TEST_CASE("Bad setups are rejected with a clear error", "[examples][table]") {
   }
   SECTION("more balls than fit") {
     CHECK_THROWS_WITH(random_setup(Setup{}, 100000, 1), Catch::Contains("balls is 100000: cannot place"));
+  }
+  SECTION("a velocity beyond the checked calls' limit; at it two balls head on exchange speeds") {
+    const double limit = billiards::component_limit<double>();
+    setup.balls = {{Vector(1, 0.5), Vector(limit, 0)}, {Vector(2, 0.5), Vector(-limit, 0)}};
+    validate(setup);
+    Simulation simulation(setup);
+    while (simulation.ball_collisions() < 1) simulation.step();
+    // Along d = p2 − p1 (not a power of two long) the exchange is exact to a few roundings.
+    CHECK(simulation.balls()[0].velocity.x() == Approx(-limit).epsilon(1e-15));
+    CHECK(simulation.balls()[1].velocity.x() == Approx(limit).epsilon(1e-15));
+    CHECK(std::fabs(simulation.balls()[0].velocity.y()) <= 1e-15 * limit);
+    setup.balls[1].velocity.x() = -std::nextafter(limit, 2 * limit);
+    CHECK_THROWS_WITH(validate(setup), Catch::Contains("ball 1 has velocity (") &&
+                                           Catch::Contains("expected components of magnitude at most"));
+    setup.balls[1].velocity = Vector(0, -5e307);  // head on at 5e307, v2 − v1 once overflowed to NaN
+    CHECK_THROWS_WITH(validate(setup), Catch::Contains("ball 1 has velocity (0, -5e+307)"));
   }
   SECTION("the simulation validates too") {
     setup.balls = {{Vector(3, 0.5), Vector(0, 0)}};
