@@ -142,7 +142,7 @@ int main(int argc, char** argv) {
 
   std::printf("billiards-table: %zu balls on a %g x %g table (radius %g)\n", setup.balls.size(), setup.width,
               setup.height, setup.radius);
-  std::printf("events: %llu (ball-ball collisions %llu, cushion %llu) over %.6g s of table time\n",
+  std::printf("events: %llu (ball-ball collisions %llu, cushion %llu) over %.6Lg s of table time\n",
               static_cast<unsigned long long>(simulation.events()),
               static_cast<unsigned long long>(simulation.ball_collisions()),
               static_cast<unsigned long long>(simulation.cushion_collisions()), simulation.time());

@@ -54,9 +54,21 @@ inline double smallest_radius(double width, double height) {
   return 16 * std::numeric_limits<double>::epsilon() * std::max(width, height) / 1e-9;
 }
 
+/// The distance of two centres, |a − b|. The square root of the squared distance where that square is
+/// a normal number (the fast path at every event), std::hypot elsewhere: on a table of 1e-300 m the
+/// square underflowed to 0, and two balls far apart read as lying on each other.
+inline double centre_distance(const Vector& a, const Vector& b) {
+  const Vector d = a - b;
+  const double square = d.squaredNorm();
+  if (square >= std::numeric_limits<double>::min() && square <= std::numeric_limits<double>::max()) {
+    return std::sqrt(square);
+  }
+  return std::hypot(d.x(), d.y());
+}
+
 /// How far balls i and j overlap: two radii minus the distance of their centres (negative when apart).
 inline double overlap(const Setup& setup, std::size_t i, std::size_t j) {
-  return 2 * setup.radius - (setup.balls[i].position - setup.balls[j].position).norm();
+  return 2 * setup.radius - centre_distance(setup.balls[i].position, setup.balls[j].position);
 }
 
 /// True when a ball centred at `p` is on the table: its centre at least a radius (less `slack`) from
@@ -191,8 +203,9 @@ inline Setup random_setup(Setup table, std::size_t count, std::uint64_t seed, do
   table.balls.clear();
   for (std::size_t failures = 0; table.balls.size() < count;) {
     const Vector p(x(random), y(random));
-    const bool free = std::all_of(table.balls.begin(), table.balls.end(),
-                                  [&](const Ball& other) { return (other.position - p).norm() >= 2 * r; });
+    const bool free = std::all_of(table.balls.begin(), table.balls.end(), [&](const Ball& other) {
+      return centre_distance(other.position, p) >= 2 * r;
+    });
     if (!free) {
       if (++failures > 100000) cannot_place("no free place found in 100000 tries");
       continue;

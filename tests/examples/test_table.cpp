@@ -9,6 +9,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <sstream>
 #include <string>
 
@@ -264,6 +265,69 @@ TEST_CASE("A ball crawling at 1e-300 hits the ball in its way", "[examples][tabl
   CHECK(event.time == Approx((0.5 - 2 * setup.radius) / 1e-300));
   CHECK(simulation.ball_collisions() == 1);
   CHECK(simulation.largest_overlap() <= Simulation::overlap_tolerance);
+}
+
+TEST_CASE("Tables far from metres play as the same table in metres", "[examples][table]") {
+  // Three balls on a 1 m table, and the same table scaled by 2^-1000 (about 1e-301 m) and by 2^1000
+  // at the same speeds: the events must be the same ones, in the same order, at times scaled by the
+  // same power of two. On the small table the squared distance of two centres underflowed to
+  // 0, and two balls far apart were taken as lying on each other after the first event.
+  Setup metres = empty_table();
+  metres.width = metres.height = 1;
+  metres.radius = 0.01;
+  metres.balls = {{Vector(0.02, 0.02), Vector(1, 1)},
+                  {Vector(0.8, 0.02), Vector(-1, 0.3)},
+                  {Vector(0.5, 0.5), Vector(-1, 0)}};
+  for (const int exponent : {-1000, 1000}) {
+    CAPTURE(exponent);
+    Setup scaled = metres;
+    scaled.width = scaled.height = std::ldexp(1.0, exponent);
+    scaled.radius = std::ldexp(metres.radius, exponent);
+    for (Ball& ball : scaled.balls) ball.position = std::ldexp(1.0, exponent) * ball.position;
+    Simulation reference(metres), simulation(scaled);
+    for (int k = 0; k < 300; ++k) {
+      const Event expected = reference.step(), event = simulation.step();
+      REQUIRE(event.kind == expected.kind);
+      REQUIRE(event.first == expected.first);
+      REQUIRE(event.second == expected.second);
+      CHECK(event.time == Approx(std::ldexp(expected.time, exponent)).epsilon(1e-9));  // the same speeds
+    }
+    CHECK(simulation.ball_collisions() == reference.ball_collisions());
+    CHECK(simulation.ball_collisions() > 10);
+    CHECK(simulation.largest_overlap() <= Simulation::overlap_tolerance);
+  }
+  SECTION("two balls far apart on a table of 1e-300 m do not overlap") {
+    Setup tiny = empty_table();
+    tiny.width = tiny.height = 1e-300;
+    tiny.radius = 1e-302;
+    tiny.balls = {{Vector(2e-302, 2e-302), Vector(0, 0)}, {Vector(5e-301, 5e-301), Vector(0, 0)}};
+    CHECK(overlap(tiny, 0, 1) == Approx(2e-302 - std::hypot(4.8e-301, 4.8e-301)).epsilon(1e-12));
+    CHECK(overlap(tiny, 0, 1) < 0);
+  }
+}
+
+TEST_CASE("Balls too slow for their table end the run with a reason, and time passes the largest double",
+          "[examples][table]") {
+  Setup setup = empty_table();
+  setup.width = setup.height = 1e300;
+  setup.radius = 1e298;
+  SECTION("at 1e-300 m/s no event falls within the largest finite time: not 'every ball is at rest'") {
+    setup.balls = {{Vector(2e298, 2e298), Vector(1e-300, 1e-300)},
+                   {Vector(5e299, 5e299), Vector(-1e-300, 0)}};
+    Simulation simulation(setup);
+    CHECK_THROWS_WITH(simulation.step(),
+                      Catch::Contains("too slow for the table") && !Catch::Contains("every ball is at rest"));
+  }
+  SECTION("at 1e-7 m/s the table time sums past 1.8e308 s in long double, not to infinity") {
+    setup.balls = {{Vector(2e298, 2e298), Vector(1e-7, 1.3e-7)},
+                   {Vector(8e299, 2e298), Vector(-1e-7, 3e-8)},
+                   {Vector(5e299, 5e299), Vector(-1e-7, 0)}};
+    Simulation simulation(setup);
+    const long double before = simulation.kinetic_energy();
+    while (simulation.time() <= std::numeric_limits<double>::max()) simulation.step();
+    CHECK(std::isfinite(simulation.time()));
+    CHECK(relative_drift(before, simulation.kinetic_energy()) <= 1e-12L);
+  }
 }
 
 TEST_CASE("Trajectories as SVG", "[examples][table]") {
