@@ -19,6 +19,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <new>
 #include <sstream>
 #include <string>
 
@@ -105,6 +106,12 @@ int main(int argc, char** argv) {
   } catch (const billiards_example::gas::NoCollisions& error) {
     std::cerr << "billiards-gas: " << error.what() << "\n";
     return 4;
+  } catch (const std::bad_alloc&) {
+    // The gas's arrays grow with --balls (at most 2^31): where the machine cannot hold them, say which
+    // argument asked for them, rather than abort on an uncaught std::bad_alloc.
+    std::cerr << "billiards-gas: --balls is " << options.balls
+              << ": not enough memory for the gas on this machine (std::bad_alloc), expected fewer balls\n";
+    return 2;
   }
   const std::string text = json(result);
   if (json_file.empty()) {
