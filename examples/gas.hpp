@@ -37,6 +37,7 @@
 #include <limits>
 #include <numbers>
 #include <random>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -105,6 +106,31 @@ inline double box_side(int dimension, std::size_t balls, double eta) {
   return std::pow(static_cast<double>(balls) * ball_volume(dimension) / eta, 1.0 / dimension);
 }
 
+/// The widest box, in diameters, whose positions round by at most 1e-9 of a diameter: 16 ε side ≤ 1e-9,
+/// about 2.8e5 (the table example's rule for its radius). The runs hold overlaps and gaps below 1e-9.
+inline double largest_box_side() { return 1e-9 / (16 * std::numeric_limits<double>::epsilon()); }
+
+/// The smallest packing fraction with a box no wider than largest_box_side(): N v/side^D.
+inline double smallest_packing_fraction(int dimension, std::size_t balls) {
+  return static_cast<double>(balls) * ball_volume(dimension) / std::pow(largest_box_side(), dimension);
+}
+
+/// Cells per side of the cell grid: one a diameter (the box's side rounded down), but in a dilute gas
+/// at most as many as keep the grid within max(2^24, 4 N) cells (and 2^31), so that its memory follows
+/// the balls, not the box (1000 disks at η = 1e-8, a box of 2.8e5 diameters, once asked for 7.9e10 cells and
+/// aborted). Wider cells only hold more balls each; the events are the same.
+inline int grid_cells_per_side(int dimension, std::size_t balls, double side) {
+  const double most =
+      std::min(std::ldexp(1.0, 31), std::max(std::ldexp(1.0, 24), 4.0 * static_cast<double>(balls)));
+  const double widest = std::floor(side);  // at most largest_box_side() (validate), so an int
+  const auto cells = [dimension](double k) { return std::pow(k, dimension); };  // exact: k^D < 2^53
+  double per_side = std::min(widest, std::floor(std::pow(most, 1.0 / dimension)));
+  // pow's root may miss by a bit either way: the largest k with k^D ≤ most, within the box.
+  while (per_side + 1 <= widest && cells(per_side + 1) <= most) ++per_side;
+  while (per_side > 3 && cells(per_side) > most) --per_side;
+  return static_cast<int>(per_side);
+}
+
 /// Lattice sites per side of the start: a square lattice of n² ≥ N sites, or an FCC lattice of 4 k³.
 inline std::size_t lattice_cells(int dimension, std::size_t balls) {
   std::size_t n = 1;
@@ -131,6 +157,14 @@ inline void validate(const Options& o) {
     throw std::invalid_argument("--packing-fraction is " + std::to_string(o.packing_fraction) +
                                 ", expected more than 0 and less than close packing, " +
                                 std::to_string(packing) + " in " + std::to_string(o.dimension) + "-D");
+  }
+  if (const double smallest = smallest_packing_fraction(o.dimension, o.balls);
+      o.packing_fraction < smallest) {
+    std::ostringstream text;
+    text << "--packing-fraction is " << o.packing_fraction << ", expected at least " << smallest << " for "
+         << o.balls << " balls in " << o.dimension << "-D: a box wider than " << largest_box_side()
+         << " diameters rounds positions by more than 1e-9 of a diameter";
+    throw std::invalid_argument(text.str());
   }
   const double side = box_side(o.dimension, o.balls, o.packing_fraction);
   if (side < 3) {
@@ -168,7 +202,7 @@ class Gas {
     if (options.dimension != D) throw std::invalid_argument("Gas<D>: --dimension differs from D");
     const std::size_t n = options.balls;
     side_ = box_side(D, n, options.packing_fraction);
-    cells_per_side_ = static_cast<int>(std::floor(side_));  // cells at least one diameter wide
+    cells_per_side_ = grid_cells_per_side(D, n, side_);  // cells at least one diameter wide
     cell_width_ = side_ / cells_per_side_;
     lay_out_cells();
     ball_.resize(n);

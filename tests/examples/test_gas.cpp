@@ -7,6 +7,8 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <limits>
+#include <numbers>
 #include <string>
 
 namespace gas = billiards_example::gas;
@@ -138,5 +140,26 @@ TEST_CASE("arguments the gas rejects, with what was expected", "[gas]") {
   rejects(options(3, 1000, 0, 1, 0), "--packing-fraction is 0");
   rejects(options(3, 10, 0.3, 1, 0), "too few for the box");
   rejects(options(3, 1000, 0.72, 1, 0), "too dense for a FCC lattice start");
+  // So dilute that positions in the box round by more than 1e-9 of a diameter (16 ε side): the side
+  // (N v/η)^(1/D) may be at most 1e-9/(16 ε) = 281 475 diameters.
+  rejects(options(3, 100, 1e-300, 1, 0), "--packing-fraction is 1e-300, expected at least 2.3479e-15");
+  rejects(options(2, 20, 1e-10, 1, 0), "expected at least 1.98262e-10 for 20 balls in 2-D");
+  const double side = 1e-9 / (16 * std::numeric_limits<double>::epsilon());
+  CHECK_NOTHROW(
+      gas::validate(options(3, 100, 100 * (std::numbers::pi / 6) / std::pow(side, 3) * 1.001, 1, 0)));
   CHECK_NOTHROW(gas::validate(options(3, 1000, 0.3, 1, 0)));
+}
+
+TEST_CASE("a dilute gas's cell grid follows the balls, not the box", "[gas]") {
+  // One cell a diameter while the grid stays within max(2^24, 4 N) cells: every run the README and
+  // the figures show keeps that grid; 1000 balls at η = 1e-12 (a box of 8e4 diameters, 5e14 cells
+  // of one diameter) get 256^3 = 2^24 cells of 314 diameters.
+  CHECK(gas::grid_cells_per_side(3, 1000, gas::box_side(3, 1000, 0.3)) == 12);
+  CHECK(gas::grid_cells_per_side(2, 400, gas::box_side(2, 400, 0.05)) == 79);
+  CHECK(gas::grid_cells_per_side(3, 1000, gas::box_side(3, 1000, 1e-12)) == 256);
+  CHECK(gas::grid_cells_per_side(2, 1000, gas::box_side(2, 1000, 1e-8)) == 4096);
+  CHECK(gas::grid_cells_per_side(3, std::size_t(1) << 31, gas::box_side(3, std::size_t(1) << 31, 0.3)) ==
+        1290);
+  const gas::Gas<3> dilute(options(3, 1000, 1e-12, 1, 0));
+  CHECK(dilute.cells_per_side() == 256);
 }
