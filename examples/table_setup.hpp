@@ -46,6 +46,18 @@ struct Setup {
   Origin origin;
 };
 
+/// The most balls a table takes: it predicts every pair at the start (N²/2 predictions, and random
+/// placement compares each new ball with every ball placed) and each event's balls against every ball,
+/// so 10^5 balls take about a minute and a half to start; beyond that the run would not visibly end
+/// (10^9 balls on a 10^6 m table passed every other check and placed balls for hours).
+inline constexpr std::size_t largest_ball_count = 100000;
+
+/// The error for a ball count beyond largest_ball_count.
+inline std::string too_many_balls(std::size_t count) {
+  return "balls is " + std::to_string(count) + ", expected at most " + std::to_string(largest_ball_count) +
+         " (the table predicts every pair of balls: N^2/2 predictions at the start)";
+}
+
 /// The smallest radius a run can resolve on a table of this size: 16 ε max(width, height) /
 /// overlap tolerance (1e-9 of a radius, see Simulation). Positions on the table round by about
 /// ε max(width, height); below this radius that rounding alone would exceed the overlap the run
@@ -119,6 +131,7 @@ inline std::size_t validate(const Setup& setup) {
     fail(radius_origin, text.str());
   }
   if (setup.balls.empty()) fail(origin.file, "no balls: expected at least one");
+  if (setup.balls.size() > largest_ball_count) fail(origin.file, too_many_balls(setup.balls.size()));
   for (std::size_t i = 0; i < setup.balls.size(); ++i) {
     const Ball& ball = setup.balls[i];
     std::ostringstream text;
@@ -190,6 +203,7 @@ inline Setup random_setup(Setup table, std::size_t count, std::uint64_t seed, do
          << table.width << " x " << table.height << " table (" << why << "), expected fewer";
     throw std::invalid_argument(text.str());
   };
+  if (count > largest_ball_count) throw std::invalid_argument(too_many_balls(count));
   const double coverage =
       static_cast<double>(count) * pi * r * r / ((table.width - 2 * r) * (table.height - 2 * r));
   if (!(table.width > 2 * r && table.height > 2 * r) || coverage > 0.5) {

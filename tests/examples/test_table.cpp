@@ -139,6 +139,21 @@ TEST_CASE("Bad setups are rejected with a clear error", "[examples][table]") {
     setup.balls[1].velocity = Vector(0, -5e307);  // head on at 5e307, v2 − v1 once overflowed to NaN
     CHECK_THROWS_WITH(validate(setup), Catch::Contains("ball 1 has velocity (0, -5e+307)"));
   }
+  SECTION("more balls than the table can start in reasonable time") {
+    Setup large = empty_table();
+    large.width = large.height = 1e6;
+    large.radius = 4;
+    CHECK_THROWS_WITH(random_setup(large, largest_ball_count + 1, 1),
+                      Catch::Contains("balls is 100001, expected at most 100000"));
+    for (std::size_t i = 0; i <= largest_ball_count; ++i) {
+      large.balls.push_back(
+          {Vector(10 + 10.0 * static_cast<double>(i % 1000), 10 + 10.0 * static_cast<double>(i / 1000)),
+           Vector(0, 0)});
+    }
+    CHECK_THROWS_WITH(validate(large), Catch::Contains("balls is 100001, expected at most 100000"));
+    large.balls.pop_back();
+    CHECK_NOTHROW(validate(large));
+  }
   SECTION("the simulation validates too") {
     setup.balls = {{Vector(3, 0.5), Vector(0, 0)}};
     CHECK_THROWS_AS(Simulation(setup), std::invalid_argument);
