@@ -7,6 +7,7 @@
 
 #include <CLI/CLI.hpp>
 #include <billiards_support/cli_checks.hpp>
+#include <billiards_support/standard_output.hpp>
 
 #include <algorithm>
 #include <exception>
@@ -108,6 +109,10 @@ int derive_main(int argc, const char* const* argv, const std::vector<ModelEntry>
     const int model_status = run_model(*entry, fs::path(out));
     if (model_status == exit_io) return exit_io;
     status = std::max(status, model_status);
+  }
+  if (!billiards_support::standard_output_written()) {
+    std::cerr << "billiards-derive: cannot write to standard output\n";
+    return exit_io;
   }
   return status;
 }

@@ -9,6 +9,7 @@
 // and what was expected); 3 when the JSON file cannot be written; 4 when the run stops because the
 // balls' paths do not meet.
 #include <billiards_support/cli_checks.hpp>
+#include <billiards_support/standard_output.hpp>
 #include "gas.hpp"
 
 #include <billiards_support/atomic_file.hpp>
@@ -116,6 +117,10 @@ int main(int argc, char** argv) {
   const std::string text = json(result);
   if (json_file.empty()) {
     std::cout << text;
+    if (!billiards_support::standard_output_written()) {
+      std::cerr << "billiards-gas: cannot write to standard output\n";
+      return 3;
+    }
     return 0;
   }
   try {

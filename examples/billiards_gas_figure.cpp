@@ -11,6 +11,7 @@
 #include "plot.hpp"
 
 #include <billiards_support/atomic_file.hpp>
+#include <billiards_support/standard_output.hpp>
 
 #include <CLI/CLI.hpp>
 
@@ -89,6 +90,10 @@ int main(int argc, char** argv) {
     std::printf("wrote %s\n", path.c_str());
   } catch (const std::runtime_error& error) {
     std::cerr << "billiards-gas-figure: " << error.what() << "\n";
+    return 3;
+  }
+  if (!billiards_support::standard_output_written()) {
+    std::cerr << "billiards-gas-figure: cannot write to standard output\n";
     return 3;
   }
   if (!agrees) {

@@ -14,6 +14,7 @@
 #include "spin_curves.hpp"
 
 #include <billiards_support/atomic_file.hpp>
+#include <billiards_support/standard_output.hpp>
 
 #include <CLI/CLI.hpp>
 
@@ -124,6 +125,10 @@ int main(int argc, char** argv) {
     std::printf("wrote %s\n", thirty_path.c_str());
   } catch (const std::runtime_error& error) {
     std::cerr << "billiards-spin-figures: " << error.what() << "\n";
+    return 3;
+  }
+  if (!billiards_support::standard_output_written()) {
+    std::cerr << "billiards-spin-figures: cannot write to standard output\n";
     return 3;
   }
   if (!agrees) {

@@ -11,6 +11,7 @@
 // written; 4 when the run stops because no ball–ball collision can happen (fewer than two balls, every
 // ball at rest, or K events in a row without one).
 #include <billiards_support/cli_checks.hpp>
+#include <billiards_support/standard_output.hpp>
 #include "table.hpp"
 #include "table_io.hpp"
 
@@ -163,6 +164,10 @@ int main(int argc, char** argv) {
       std::cerr << "billiards-table: " << error.what() << "\n";
       return 3;
     }
+  }
+  if (!billiards_support::standard_output_written()) {
+    std::cerr << "billiards-table: cannot write to standard output\n";
+    return 3;
   }
   if (max_drift && !(drift <= *max_drift)) {  // a NaN drift fails any bound
     std::cerr << "billiards-table: the relative drift " << drift << " exceeds --max-drift " << *max_drift

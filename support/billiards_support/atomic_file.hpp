@@ -2,7 +2,8 @@
 // (internal: not installed). The contents go to a temporary file created in the destination folder
 // with mkstemp (a unique name, O_CREAT | O_EXCL: it never opens an existing file or follows a link
 // planted there), are flushed to disk, and the file is renamed over the destination (rename replaces a
-// link at the destination itself, never what it points to). Every failure removes the temporary file;
+// link at the destination itself, never what it points to; a device, a FIFO or a socket there is
+// refused, never replaced). Every failure removes the temporary file;
 // so do SIGINT, SIGTERM and SIGHUP while one is open. A run killed outright (SIGKILL) leaves its
 // temporary behind: its name carries the writer's process id, and the next write to the same
 // destination removes the temporaries of processes that no longer exist.
@@ -96,6 +97,14 @@ inline void write_file_atomically(const std::filesystem::path& path, const std::
   if (path.filename().empty()) throw failure("expected a file name, not a folder", 0);
   std::error_code status_error;
   if (fs::is_directory(fs::status(path, status_error))) throw failure("it is a folder, expected a file", 0);
+  // rename would replace a device, a FIFO or a socket with the file (as root, `--svg /dev/full` once
+  // replaced the device): only a regular file, a link (replaced, as above) or a new name is written.
+  if (const fs::file_status existing = fs::symlink_status(path, status_error);
+      fs::exists(existing) && !fs::is_regular_file(existing) && !fs::is_symlink(existing)) {
+    throw failure(
+        "it is not a regular file (a device, a FIFO or a socket), expected a file to replace or a new name",
+        0);
+  }
   const fs::path folder = path.has_parent_path() ? path.parent_path() : fs::path(".");
   remove_stale_temporaries(path);
   detail::install_signal_cleanup();
