@@ -110,10 +110,7 @@ int derive_main(int argc, const char* const* argv, const std::vector<ModelEntry>
     if (model_status == exit_io) return exit_io;
     status = std::max(status, model_status);
   }
-  if (!billiards_support::standard_output_written()) {
-    std::cerr << "billiards-derive: cannot write to standard output\n";
-    return exit_io;
-  }
+  if (billiards_support::standard_output_failed("billiards-derive")) return exit_io;
   return status;
 }
 

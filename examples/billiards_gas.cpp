@@ -6,8 +6,8 @@
 //                 [--seed S] [--json FILE]
 //
 // Exit status: 0 on success; 2 on a bad command line (one line on stderr naming the argument, its value
-// and what was expected); 3 when the JSON file cannot be written; 4 when the run stops because the
-// balls' paths do not meet.
+// and what was expected, or --balls beyond the memory it can have); 3 when the JSON file or standard
+// output cannot be written; 4 when the run stops because the balls' paths do not meet.
 #include <billiards_support/cli_checks.hpp>
 #include <billiards_support/standard_output.hpp>
 #include "gas.hpp"
@@ -117,10 +117,7 @@ int main(int argc, char** argv) {
   const std::string text = json(result);
   if (json_file.empty()) {
     std::cout << text;
-    if (!billiards_support::standard_output_written()) {
-      std::cerr << "billiards-gas: cannot write to standard output\n";
-      return 3;
-    }
+    if (billiards_support::standard_output_failed("billiards-gas")) return 3;
     return 0;
   }
   try {

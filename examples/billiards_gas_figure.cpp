@@ -92,10 +92,7 @@ int main(int argc, char** argv) {
     std::cerr << "billiards-gas-figure: " << error.what() << "\n";
     return 3;
   }
-  if (!billiards_support::standard_output_written()) {
-    std::cerr << "billiards-gas-figure: cannot write to standard output\n";
-    return 3;
-  }
+  if (billiards_support::standard_output_failed("billiards-gas-figure")) return 3;
   if (!agrees) {
     std::cerr << "billiards-gas-figure: a run's Z is off its equation of state by more than 3 % + 5 errors\n";
     return 1;

@@ -127,10 +127,7 @@ int main(int argc, char** argv) {
     std::cerr << "billiards-spin-figures: " << error.what() << "\n";
     return 3;
   }
-  if (!billiards_support::standard_output_written()) {
-    std::cerr << "billiards-spin-figures: cannot write to standard output\n";
-    return 3;
-  }
+  if (billiards_support::standard_output_failed("billiards-spin-figures")) return 3;
   if (!agrees) {
     std::cerr << "billiards-spin-figures: the runtime differs from a closed form by more than " << allowed
               << " degrees\n";

@@ -7,9 +7,9 @@
 //                   [--max-events-without-collision K]
 //
 // Exit status: 0 on success; 1 when the drift exceeds --max-drift (or is NaN) or two balls overlapped;
-// 2 on a bad command line or setup (one line on stderr naming what and why); 3 when the SVG cannot be
-// written; 4 when the run stops because no ball–ball collision can happen (fewer than two balls, every
-// ball at rest, or K events in a row without one).
+// 2 on a bad command line or setup (one line on stderr naming what and why); 3 when the SVG or standard
+// output cannot be written; 4 when the run stops because no ball–ball collision can happen (fewer than
+// two balls, every ball at rest or too slow for the table, or K events in a row without one).
 #include <billiards_support/cli_checks.hpp>
 #include <billiards_support/standard_output.hpp>
 #include "table.hpp"
@@ -165,10 +165,7 @@ int main(int argc, char** argv) {
       return 3;
     }
   }
-  if (!billiards_support::standard_output_written()) {
-    std::cerr << "billiards-table: cannot write to standard output\n";
-    return 3;
-  }
+  if (billiards_support::standard_output_failed("billiards-table")) return 3;
   if (max_drift && !(drift <= *max_drift)) {  // a NaN drift fails any bound
     std::cerr << "billiards-table: the relative drift " << drift << " exceeds --max-drift " << *max_drift
               << "\n";

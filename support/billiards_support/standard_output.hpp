@@ -8,13 +8,20 @@
 
 namespace billiards_support {
 
-/// Flushes std::cout and stdout; false when either failed. On false the program should say
-/// "cannot write to standard output" on standard error and exit with its write-failure status.
+/// Flushes std::cout and stdout; false when either failed.
 inline bool standard_output_written() {
   std::cout.flush();
   const bool stream_ok = static_cast<bool>(std::cout);
   const bool file_ok = std::fflush(stdout) == 0 && std::ferror(stdout) == 0;
   return stream_ok && file_ok;
+}
+
+/// standard_output_written(), saying "PROGRAM: cannot write to standard output" on standard error when
+/// it is false; the caller then exits with its write-failure status.
+inline bool standard_output_failed(const char* program) {
+  if (standard_output_written()) return false;
+  std::cerr << program << ": cannot write to standard output\n";
+  return true;
 }
 
 }  // namespace billiards_support
