@@ -15,7 +15,7 @@
 #include <billiards/reference_kernels.hpp>
 #include <billiards/spin.hpp>
 
-#include "prefetch.hpp"
+#include <billiards/simulation/detail/prefetch.hpp>
 
 #include <benchmark/benchmark.h>
 
@@ -569,7 +569,7 @@ template <typename Pointer, std::size_t count>
 void prefetch_pairs(const Pointer (&arrays)[count], std::size_t begin, std::size_t end) {
   constexpr std::size_t per_line = 64 / sizeof(*arrays[0]);
   for (std::size_t i = begin; i < end; i += per_line) {
-    for (const Pointer array : arrays) billiards_example::prefetch(array + i);
+    for (const Pointer array : arrays) billiards::simulation::detail::prefetch(array + i);
   }
 }
 

@@ -3,8 +3,8 @@
 // two balls it changed against every other ball: O(N) per event, naive all-pairs prediction (see the
 // README for why). Overlap is checked for the event's balls only here (O(N)); the example program
 // checks every pair by default.
-#include "gas.hpp"
-#include "table.hpp"
+#include <billiards/simulation/gas.hpp>
+#include <billiards/simulation/table.hpp>
 
 #include <benchmark/benchmark.h>
 
@@ -15,31 +15,31 @@ namespace {
 
 void table_events(benchmark::State& state) {
   const auto balls = static_cast<std::size_t>(state.range(0));
-  billiards_example::Setup table;
+  billiards::simulation::TableSetup table;
   const double scale = std::sqrt(static_cast<double>(balls) / 16);
   table.width *= scale;
   table.height *= scale;
-  billiards_example::Simulation simulation(billiards_example::random_setup(table, balls, 1), false);
+  billiards::simulation::Table simulation(billiards::simulation::random_setup(table, balls, 1), false);
   for (int i = 0; i < 1000; ++i) simulation.step();  // past the start, where every ball is predicted afresh
   for (auto _ : state) {
-    const billiards_example::Event event = simulation.step();
+    const billiards::simulation::TableEvent event = simulation.step();
     benchmark::DoNotOptimize(event);
   }
   state.SetItemsProcessed(state.iterations());
   state.counters["balls"] = static_cast<double>(balls);
 }
 
-// The hard-sphere gas of examples/gas.hpp (issue 15) at a fixed packing fraction as N grows: each
+// The hard-sphere gas of billiards/simulation/gas.hpp at a fixed packing fraction as N grows: each
 // event predicts against the balls of the neighbouring cells only, so the cost per event should not
 // grow with N (the caches aside). Equilibrated for max(N, 20000) collisions before
 // the timing; each iteration runs 1000 collisions.
 template <int D>
 void gas_events(benchmark::State& state) {
-  billiards_example::gas::Options options;
+  billiards::simulation::gas::Options options;
   options.dimension = D;
   options.balls = static_cast<std::size_t>(state.range(0));
   options.packing_fraction = 0.3;
-  billiards_example::gas::Gas<D> gas(options);
+  billiards::simulation::Gas<D> gas(billiards::simulation::gas::lattice<D>(options));
   gas.run_collisions(std::max<std::uint64_t>(options.balls, 20000));
   constexpr std::uint64_t per_iteration = 1000;
   for (auto _ : state) gas.run_collisions(per_iteration);

@@ -1,4 +1,4 @@
-// billiards-gas: a hard-sphere gas, event-driven, on billiards::runtime (see gas.hpp): N balls of
+// billiards-gas: the hard-sphere gas of billiards::simulation (billiards/simulation/gas.hpp): N balls of
 // diameter 1 and mass 1 at kT = 1 in a periodic box; prints one JSON object with the compressibility
 // factor from the collision virial, the mean free time and the checks of energy, momentum and overlap.
 //
@@ -10,7 +10,7 @@
 // output cannot be written; 4 when the run stops because the balls' paths do not meet.
 #include <billiards_support/cli_checks.hpp>
 #include <billiards_support/standard_output.hpp>
-#include "gas.hpp"
+#include <billiards/simulation/gas.hpp>
 
 #include <billiards_support/atomic_file.hpp>
 
@@ -33,7 +33,7 @@ std::string json_number(double x) {
   return text;
 }
 
-std::string json(const billiards_example::gas::Result& r) {
+std::string json(const billiards::simulation::gas::Result& r) {
   std::ostringstream out;
   out << "{\n"
       << "  \"dimension\": " << r.dimension << ",\n"
@@ -48,7 +48,7 @@ std::string json(const billiards_example::gas::Result& r) {
       << "  \"compressibility_factor_from_collision_rate_error\": "
       << json_number(r.compressibility_factor_from_collision_rate_error) << ",\n"
       << "  \"equation_of_state\": "
-      << json_number(billiards_example::gas::equation_of_state(r.dimension, r.packing_fraction)) << ",\n"
+      << json_number(billiards::simulation::gas::equation_of_state(r.dimension, r.packing_fraction)) << ",\n"
       << "  \"mean_free_time\": " << json_number(r.mean_free_time) << ",\n"
       << "  \"temperature\": " << json_number(r.temperature) << ",\n"
       << "  \"largest_temperature_change\": " << json_number(r.largest_temperature_change) << ",\n"
@@ -64,7 +64,7 @@ std::string json(const billiards_example::gas::Result& r) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  using billiards_example::gas::Options;
+  using billiards::simulation::gas::Options;
   CLI::App app{
       "A hard-sphere gas, event-driven on billiards::runtime: prints Z = PV/(N kT) and its checks as JSON.",
       "billiards-gas"};
@@ -96,15 +96,15 @@ int main(int argc, char** argv) {
     return 2;
   }
   try {
-    billiards_example::gas::validate(options);
+    billiards::simulation::gas::validate(options);
   } catch (const std::invalid_argument& error) {
     std::cerr << "billiards-gas: " << error.what() << "\n";
     return 2;
   }
-  billiards_example::gas::Result result;
+  billiards::simulation::gas::Result result;
   try {
-    result = billiards_example::gas::run(options);
-  } catch (const billiards_example::gas::NoCollisions& error) {
+    result = billiards::simulation::gas::measure(options);
+  } catch (const billiards::simulation::NoCollisions& error) {
     std::cerr << "billiards-gas: " << error.what() << "\n";
     return 4;
   } catch (const std::bad_alloc&) {

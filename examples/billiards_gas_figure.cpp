@@ -7,7 +7,7 @@
 // Writes FOLDER/gas_equation_of_state.svg and prints each run's Z beside its equation of state. Exit
 // status: 0; 1 when a run's Z is farther from its equation of state than 3 % plus five standard
 // errors; 2 on a bad command line; 3 when the SVG cannot be written.
-#include "gas.hpp"
+#include <billiards/simulation/gas.hpp>
 #include "plot.hpp"
 
 #include <billiards_support/atomic_file.hpp>
@@ -24,6 +24,7 @@
 
 int main(int argc, char** argv) {
   using namespace billiards_example;
+  namespace gas = billiards::simulation::gas;
   CLI::App app{"Draws the hard-sphere gas's Z(eta) over its equations of state as SVG.",
                "billiards-gas-figure"};
   std::string out = ".";
@@ -65,7 +66,7 @@ int main(int argc, char** argv) {
     options.events = events;
     options.equilibrate = 50000;
     options.seed = 1;
-    const gas::Result r = gas::run(options);
+    const gas::Result r = gas::measure(options);
     const double expected = gas::equation_of_state(dimension, eta);
     const bool close = std::fabs(r.compressibility_factor - expected) <=
                        0.03 * expected + 5 * r.compressibility_factor_error;

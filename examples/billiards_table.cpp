@@ -1,4 +1,4 @@
-// billiards-table: an event-driven billiards table on billiards::runtime (see table.hpp), run for a
+// billiards-table: the event-driven table of billiards::simulation (billiards/simulation/table.hpp), run for a
 // number of ball–ball collisions; prints the relative drift of the kinetic energy and the events per
 // second, and can draw the trajectories as SVG.
 //
@@ -12,8 +12,9 @@
 // two balls, every ball at rest or too slow for the table, or K events in a row without one).
 #include <billiards_support/cli_checks.hpp>
 #include <billiards_support/standard_output.hpp>
-#include "table.hpp"
 #include "table_io.hpp"
+
+#include <billiards/simulation/table.hpp>
 
 #include <CLI/CLI.hpp>
 
@@ -27,14 +28,15 @@
 #include <string>
 
 int main(int argc, char** argv) {
-  using namespace billiards_example;
+  using namespace billiards::simulation;
+  using billiards_example::read_setup_file, billiards_example::Trajectories, billiards_support::write_file_atomically;
   using billiards_support::count_at_least, billiards_support::finite_number, billiards_support::path_given;
   CLI::App app{
       "An event-driven billiards table on billiards::runtime: runs C ball-ball collisions and reports "
       "the drift of the kinetic energy.",
       "billiards-table"};
   std::size_t balls = 16;
-  Setup table;
+  TableSetup table;
   std::uint64_t seed = 1;
   std::uint64_t collisions = 1000000;
   std::string setup_file, svg_file;
@@ -84,7 +86,7 @@ int main(int argc, char** argv) {
     return 2;
   }
 
-  Setup setup;
+  TableSetup setup;
   try {
     if (!setup_file.empty()) {
       setup = read_setup_file(setup_file);
@@ -105,14 +107,14 @@ int main(int argc, char** argv) {
     return 4;
   }
 
-  Simulation simulation(setup, check_every_pair);
+  Table simulation(setup, check_every_pair);
   Trajectories trajectories(setup);
   const long double initial_energy = simulation.kinetic_energy();
   const auto start = std::chrono::steady_clock::now();
   try {
     for (std::uint64_t quiet = 0; simulation.ball_collisions() < collisions;) {
       const std::uint64_t before = simulation.ball_collisions();
-      const Event event = simulation.step();
+      const TableEvent event = simulation.step();
       quiet = simulation.ball_collisions() == before ? quiet + 1 : 0;
       if (quiet >= max_quiet_events) {
         std::cerr << "billiards-table: stopped after " << quiet
@@ -150,7 +152,7 @@ int main(int argc, char** argv) {
   std::printf("kinetic energy: initial %.17Lg, final %.17Lg\n", initial_energy, final_energy);
   std::printf("relative drift of the kinetic energy: %.3e\n", drift);
   std::printf("largest overlap at an event: %.3e of a radius (allowed %.0e)\n", simulation.largest_overlap(),
-              Simulation::overlap_tolerance);
+              Table::overlap_tolerance);
   std::printf("events per second: %.4g (%.3f s)\n", static_cast<double>(simulation.events()) / seconds,
               seconds);
 

@@ -10,7 +10,7 @@
 // The cushions are the lines x = 0, x = width, y = 0, y = height.
 #pragma once
 
-#include "table.hpp"
+#include <billiards/simulation/table.hpp>
 
 #include <billiards_support/atomic_file.hpp>
 
@@ -29,6 +29,12 @@
 #include <vector>
 
 namespace billiards_example {
+
+using billiards::simulation::Ball;
+using billiards::simulation::TableEvent;
+using billiards::simulation::TableSetup;
+using billiards::simulation::TableVector;
+
 
 /// Limits on what a setup file may hold, so that a hostile file (/dev/zero, a endless stream) is
 /// rejected promptly instead of growing memory: a line of at most 4096 characters, at most 256 MiB in
@@ -64,8 +70,8 @@ inline double parse_number(const std::string& word, const std::string& where, co
 
 /// Parses a setup (the format above) and validates it. Throws std::invalid_argument naming
 /// `source:line`, the directive and what was expected; a file that cannot be read says why.
-inline Setup read_setup(std::istream& in, const std::string& source) {
-  Setup setup;
+inline TableSetup read_setup(std::istream& in, const std::string& source) {
+  TableSetup setup;
   setup.balls.clear();
   setup.origin.file = source + ": ";
   std::string line;
@@ -124,7 +130,7 @@ inline Setup read_setup(std::istream& in, const std::string& source) {
       setup.origin.mass = where;
     } else if (directive == "ball") {
       const auto v = numbers(4, "4 numbers: x y vx vy");
-      setup.balls.push_back({Vector(v[0], v[1]), Vector(v[2], v[3])});
+      setup.balls.push_back({TableVector(v[0], v[1]), TableVector(v[2], v[3])});
       setup.origin.balls.push_back(where);
     } else {
       throw std::invalid_argument(where + "unknown directive '" + excerpt(directive) +
@@ -137,7 +143,7 @@ inline Setup read_setup(std::istream& in, const std::string& source) {
 }
 
 /// Opens and reads a setup file: read_setup, with an error that says why a file cannot be opened.
-inline Setup read_setup_file(const std::string& path) {
+inline TableSetup read_setup_file(const std::string& path) {
   errno = 0;
   std::ifstream in(path, std::ios::binary);
   if (!in.is_open()) {
@@ -154,16 +160,16 @@ inline Setup read_setup_file(const std::string& path) {
 /// Each ball's path: its position at the start and at every event, and at the end.
 class Trajectories {
  public:
-  explicit Trajectories(const Setup& setup) : setup_(setup), paths_(setup.balls.size()) {
+  explicit Trajectories(const TableSetup& setup) : setup_(setup), paths_(setup.balls.size()) {
     for (std::size_t i = 0; i < setup.balls.size(); ++i) paths_[i].push_back(setup.balls[i].position);
   }
   /// Records the balls of `event` at their contact positions.
-  void record(const Event& event, const std::vector<Ball>& balls) {
+  void record(const TableEvent& event, const std::vector<Ball<2>>& balls) {
     paths_[event.first].push_back(balls[event.first].position);
-    if (event.kind == Event::Kind::ball) paths_[event.second].push_back(balls[event.second].position);
+    if (event.kind == TableEvent::Kind::ball) paths_[event.second].push_back(balls[event.second].position);
   }
   /// Ends every path at the balls' current positions.
-  void finish(const std::vector<Ball>& balls) {
+  void finish(const std::vector<Ball<2>>& balls) {
     for (std::size_t i = 0; i < balls.size(); ++i) paths_[i].push_back(balls[i].position);
     final_ = balls;
   }
@@ -210,9 +216,9 @@ class Trajectories {
   }
 
  private:
-  Setup setup_;
-  std::vector<std::vector<Vector>> paths_;
-  std::vector<Ball> final_;
+  TableSetup setup_;
+  std::vector<std::vector<TableVector>> paths_;
+  std::vector<Ball<2>> final_;
 };
 
 using billiards_support::write_file_atomically;

@@ -209,28 +209,29 @@ std::string audit_json(const Derivation& derivation) {
     entry["verdict"] = to_string(claim.verdict);
     entry["section"] = claim.section;
     entry["comparison"] = to_string(claim.comparison);
-    if (!claim.paper_tex.empty()) entry["paper_tex"] = claim.paper_tex;
+    // Every claim carries every field (docs/audit.schema.json): a text that does not apply is null, a
+    // list that is empty is [].
+    const auto text_or_null = [](const std::string& text) {
+      return text.empty() ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(text);
+    };
+    entry["paper_tex"] = text_or_null(claim.paper_tex);
     entry["paper_latex"] = paper_latex(claim);
     entry["derived_latex"] = derived_latex(claim);
     entry["residual"] = residual_text(claim, Notation::text);
-    if (!claim.failure.empty()) entry["failure"] = claim.failure;
+    entry["failure"] = text_or_null(claim.failure);
     entry["depends_on"] = claim.depends_on;
-    if (!claim.constraints.empty()) {
-      nlohmann::ordered_json constraints = nlohmann::ordered_json::array();
-      for (const Constraint& c : claim.constraints) {
-        constraints.push_back({{"words", c.words}, {"relation", print(c.relation, Notation::text)}});
-      }
-      entry["constraints"] = constraints;
+    nlohmann::ordered_json constraints = nlohmann::ordered_json::array();
+    for (const Constraint& c : claim.constraints) {
+      constraints.push_back({{"words", c.words}, {"relation", print(c.relation, Notation::text)}});
     }
-    if (!claim.cases.empty()) {
-      nlohmann::ordered_json cases = nlohmann::ordered_json::array();
-      for (const Case& c : claim.cases) {
-        cases.push_back(
-            {{"conditions", print(c.conditions, Notation::text)}, {"value", print(c.value, Notation::text)}});
-      }
-      entry["cases"] = cases;
+    entry["constraints"] = constraints;
+    nlohmann::ordered_json cases = nlohmann::ordered_json::array();
+    for (const Case& c : claim.cases) {
+      cases.push_back(
+          {{"conditions", print(c.conditions, Notation::text)}, {"value", print(c.value, Notation::text)}});
     }
-    if (!claim.note.empty()) entry["note"] = claim.note;
+    entry["cases"] = cases;
+    entry["note"] = text_or_null(claim.note);
     claims.push_back(std::move(entry));
   }
   nlohmann::ordered_json premises = nlohmann::ordered_json::array();
@@ -238,7 +239,7 @@ std::string audit_json(const Derivation& derivation) {
     premises.push_back({{"id", premise.id}, {"statement", premise.statement}});
   }
   nlohmann::ordered_json audit;
-  audit["schema"] = 1;
+  audit["schema"] = 2;
   audit["ginac"] = ginac_version();
   audit["model"] = derivation.model.name;
   audit["source"] = derivation.model.citation;

@@ -17,7 +17,9 @@ if(STEP STREQUAL "install")
   foreach(f IN ITEMS share/cmake/billiards/billiardsConfig.cmake share/cmake/billiards/billiardsConfigVersion.cmake
                      share/cmake/billiards/billiardsTargets.cmake share/pkgconfig/billiards.pc
                      include/billiards/collision.hpp include/billiards/kernels.hpp include/billiards/version.hpp
-                     include/billiards/spin.hpp include/billiards/cloth.hpp include/billiards/spin_kernels.hpp)
+                     include/billiards/spin.hpp include/billiards/cloth.hpp include/billiards/spin_kernels.hpp
+                     include/billiards/simulation/table.hpp include/billiards/simulation/gas.hpp
+                     include/billiards/simulation/event_calendar.hpp)
     if(NOT EXISTS ${prefix}/${f})
       message(FATAL_ERROR "cmake --install did not write ${f}")
     endif()
@@ -59,6 +61,7 @@ elseif(STEP STREQUAL "examples")
       -DCMAKE_BUILD_TYPE=Release -DCMAKE_PREFIX_PATH=${prefix})
   run(${CMAKE_COMMAND} --build ${SCRATCH}/examples)
   run(${SCRATCH}/examples/billiards-table --collisions 1000 --max-drift 1e-12)
+  run(${SCRATCH}/examples/billiards-gas --balls 100 --events 1000 --equilibrate 0)
   run(${SCRATCH}/examples/billiards-spin-figures --out ${SCRATCH}/examples)
 else()
   message(FATAL_ERROR "unknown STEP '${STEP}'")

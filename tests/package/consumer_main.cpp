@@ -1,7 +1,10 @@
 // A user's program, written from the README: collide two balls and bounce one off a cushion; throw an
-// object ball with a stun shot and let a stun shot roll on the cloth.
+// object ball with a stun shot and let a stun shot roll on the cloth; play a table and a gas of its own
+// with the simulation library.
 #include <billiards/cloth.hpp>
 #include <billiards/collision.hpp>
+#include <billiards/simulation/gas.hpp>
+#include <billiards/simulation/table.hpp>
 #include <billiards/spin.hpp>
 
 #include <Eigen/Core>
@@ -35,6 +38,24 @@ int main() {
       billiards::evolve(ball, cloth, billiards::transition_time(ball, cloth));
   ok = ok && billiards::motion(later, cloth) == billiards::Motion::rolling &&
        std::fabs(later.velocity.x() - 10.0 / 7) < 1e-12;
+  // The table: equal balls head on exchange their velocities at the first event, after the gap of
+  // 1 − 2r = 0.75 has closed at 2 m/s.
+  billiards::simulation::TableSetup setup;
+  setup.width = 4;
+  setup.height = 2;
+  setup.radius = 0.125;
+  setup.balls = {{{1, 1}, {1, 0}}, {{2, 1}, {-1, 0}}};
+  billiards::simulation::Table table(setup);
+  double first_time = -1;
+  table.run_events(1, [&](const billiards::simulation::TableEvent& event) { first_time = event.time; });
+  ok = ok && std::fabs(first_time - 0.375) < 1e-14 && table.balls()[0].velocity.x() == -1 &&
+       table.balls()[1].velocity.x() == 1;
+  // The gas: two disks in a periodic box of 10 meet across it.
+  billiards::simulation::GasSetup<2> disks;
+  disks.side = 10;
+  disks.balls = {{{2, 5}, {1, 0}}, {{6, 5}, {-1, 0}}};
+  billiards::simulation::Gas<2> gas(disks);
+  ok = ok && gas.run_until(1.0) == 0 && gas.run_collisions(1) == 1 && std::fabs(gas.time() - 1.5) < 1e-14;
   std::printf("billiards %s: %s\n", BILLIARDS_VERSION, ok ? "the paper's answers" : "WRONG");
   return ok ? 0 : 1;
 }

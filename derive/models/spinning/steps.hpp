@@ -104,9 +104,33 @@ Friction the_friction(Recorder& record, const Contact& contact, const Impulse& i
 
 void the_throw(Recorder& record, const Contact& contact, const Friction& friction);
 
+// ---- The cloth: one step per phase (cloth_sliding.cpp, cloth_rolling.cpp, cloth_spinning.cpp) -------
+
+/// ∫₀ᵗ f dτ for each component, f in τ (GiNaC integrates the polynomial).
+Vec integrate(const Vec& f, const GiNaC::symbol& tau, const ex& t);
+/// f with τ = t.
+Vec at_time(const Vec& f, const GiNaC::symbol& tau, const ex& t);
+
+/// A ball on the cloth at t = 0, which every phase starts from: its velocity, horizontal spin and centre (at
+/// height R), the integration variable and the moment of inertia of a solid sphere.
+struct ClothStart {
+  Vec v0, w0, r0;
+  GiNaC::symbol tau;
+  ex inertia;
+  /// ½ m v² + ½ I ω².
+  ex kinetic_energy(const Vec& v, const Vec& w) const;
+};
+ClothStart cloth_start();
+
+/// Each phase's claims; returns the time the phase ends.
+ex sliding_on_the_cloth(Recorder& record, const ClothStart& start);
+ex rolling_on_the_cloth(Recorder& record, const ClothStart& start);
+ex spinning_on_the_cloth(Recorder& record, const ClothStart& start);
+
 struct Cloth {
   ex slide_time, roll_time, spin_time;  ///< derived
 };
+/// The three phases in the audit's order.
 Cloth the_cloth(Recorder& record);
 
 // ---- The kernels ----------------------------------------------------------------------------------

@@ -1,4 +1,4 @@
-// An allocator for the large arrays of an event-driven simulation (examples/gas.hpp): aligned to cache
+// An allocator for the large arrays of an event-driven simulation (billiards/simulation/gas.hpp): aligned to cache
 // lines, and from 2 MiB up on huge-page boundaries with the kernel asked to back them with huge pages.
 #pragma once
 
@@ -11,7 +11,7 @@
 #include <sys/mman.h>
 #endif
 
-namespace billiards_example {
+namespace billiards::simulation::detail {
 
 /// std::allocator's interface. Arrays below 2 MiB are aligned to 64 bytes (a large std::vector's data
 /// otherwise sit 16 bytes past a cache line). From 2 MiB up they are aligned to 2 MiB and, on Linux,
@@ -61,4 +61,4 @@ struct LargeArray {
 template <typename T>
 using Array = std::vector<T, LargeArray<T>>;
 
-}  // namespace billiards_example
+}  // namespace billiards::simulation::detail

@@ -18,8 +18,8 @@
 // the year. Any width gives the right order; the width decides only the speed.
 #pragma once
 
-#include "large_array.hpp"
-#include "prefetch.hpp"
+#include <billiards/simulation/detail/large_array.hpp>
+#include <billiards/simulation/detail/prefetch.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -30,7 +30,7 @@
 #include <stdexcept>
 #include <vector>
 
-namespace billiards_example {
+namespace billiards::simulation {
 
 class EventCalendar {
  public:
@@ -93,7 +93,7 @@ class EventCalendar {
         item.time = time;
         ++item.version;
         item.bucket = waiting;
-        prefetch(&head_[bucket_index(*b)]);
+        detail::prefetch(&head_[bucket_index(*b)]);
         if (waiting_count_ == waiting_size) file_waiting();
         waiting_[(waiting_first_ + waiting_count_++) % waiting_size] = i;
         return;
@@ -123,14 +123,14 @@ class EventCalendar {
     const std::uint32_t beyond = head_[bucket_index(current_ + buckets + 1)];
     if (beyond != none) {
       const std::uint32_t second = item_[beyond].next;
-      if (second != none) prefetch(&item_[second]);
+      if (second != none) detail::prefetch(&item_[second]);
     }
     const std::uint32_t further = head_[bucket_index(current_ + buckets + 2)];
-    if (further != none) prefetch(&item_[further]);
+    if (further != none) detail::prefetch(&item_[further]);
   }
 
   /// Asks memory for item i's record (a hint, as are the two below: nothing changes).
-  void prefetch_record(std::uint32_t i) const { prefetch(&item_[i]); }
+  void prefetch_record(std::uint32_t i) const { detail::prefetch(&item_[i]); }
 
   /// Asks memory for what taking item i out of its list writes: the neighbour before it or the list's
   /// head, and the neighbour after it. Reads item i's record, which should be in the caches already
@@ -139,18 +139,18 @@ class EventCalendar {
     const Item& item = item_[i];
     if (item.bucket == front || item.bucket == waiting) return;  // in no list
     if (item.previous != none)
-      prefetch(&item_[item.previous]);
+      detail::prefetch(&item_[item.previous]);
     else if (item.bucket != overflow_list)
-      prefetch(&head_[item.bucket]);
-    if (item.next != none) prefetch(&item_[item.next]);
+      detail::prefetch(&head_[item.bucket]);
+    if (item.next != none) detail::prefetch(&item_[item.next]);
   }
 
   /// Asks memory for what update(i, time) reads first: item i's record and, where `time` falls in a
   /// later bucket of this year, that bucket's head. Reads nothing of item i.
   void prefetch_update(std::uint32_t i, double time) const {
-    prefetch(&item_[i]);
+    detail::prefetch(&item_[i]);
     if (const std::optional<std::int64_t> b = bucket_this_year(time); b && *b > current_)
-      prefetch(&head_[bucket_index(*b)]);
+      detail::prefetch(&head_[bucket_index(*b)]);
   }
 
   /// The item with the earliest time (any one of equal times); none when every time is +∞.
@@ -188,7 +188,7 @@ class EventCalendar {
   // A bucket's width in mean spacings of the times. Two, with as many buckets as items (the same year
   // as one spacing and twice the buckets): half the ring's heads to miss in memory, and more of the
   // re-filed times land in the front bucket, whose heap costs no miss. Measured against one (the median
-  // of alternating spans in one process of examples/gas.hpp, over several runs): 2-D gases of 10^5 and
+  // of alternating spans in one process of the gas, over several runs): 2-D gases of 10^5 and
   // 10^6 balls 3–6 % and 1–5 % faster, 1024 even, 3-D 1–2 % faster; four was no better, eight slower.
   static constexpr double spacings_a_bucket = 2;
   struct Item {
@@ -306,8 +306,8 @@ class EventCalendar {
   std::size_t waiting_first_ = 0, waiting_count_ = 0;
 
   std::vector<double> ahead_;
-  Array<std::uint32_t> head_;
-  Array<Item> item_;
+  detail::Array<std::uint32_t> head_;
+  detail::Array<Item> item_;
   std::vector<Entry> front_;
   std::uint32_t overflow_ = none;
   std::size_t mask_ = 0, in_ring_ = 0;
@@ -316,4 +316,4 @@ class EventCalendar {
   double width_ = 1;
 };
 
-}  // namespace billiards_example
+}  // namespace billiards::simulation

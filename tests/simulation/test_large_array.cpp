@@ -1,6 +1,6 @@
-// examples/large_array.hpp: the alignment it promises on either side of 2 MiB, memory that holds what is
+// billiards/simulation/detail/large_array.hpp: the alignment it promises on either side of 2 MiB, memory that holds what is
 // written, and a clear error for a size no address space holds.
-#include "large_array.hpp"
+#include <billiards/simulation/detail/large_array.hpp>
 
 #include <catch2/catch.hpp>
 
@@ -8,8 +8,8 @@
 #include <limits>
 #include <new>
 
-using billiards_example::Array;
-using billiards_example::LargeArray;
+using billiards::simulation::detail::Array;
+using billiards::simulation::detail::LargeArray;
 
 TEST_CASE("large arrays are aligned to cache lines, and from 2 MiB up to huge pages") {
   for (const std::size_t n : {std::size_t{1}, std::size_t{1000}, (std::size_t{1} << 18) - 1,

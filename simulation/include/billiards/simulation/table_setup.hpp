@@ -1,6 +1,7 @@
-// The table of the event-driven example: balls, the table's size, validation of a setup (no overlap,
-// every ball on the table) and the two setups the example knows (random balls, the break). The
-// simulation is in table.hpp, reading and drawing in table_io.hpp.
+/// \file
+/// The event-driven table's setup: the balls, the table's size, the validation of a setup (no overlap,
+/// every ball on the table) and two setups made in code (balls at random, the break). The engine is in
+/// billiards/simulation/table.hpp.
 #pragma once
 
 #include <billiards/checked.hpp>
@@ -19,31 +20,35 @@
 #include <unordered_map>
 #include <vector>
 
-namespace billiards_example {
+namespace billiards::simulation {
 
-using Vector = Eigen::Vector2d;
-
+/// A ball of a simulation: its centre and its velocity, in D dimensions.
+template <int D>
 struct Ball {
-  Vector position;
-  Vector velocity;
+  Eigen::Matrix<double, D, 1> position = Eigen::Matrix<double, D, 1>::Zero();  ///< the centre
+  Eigen::Matrix<double, D, 1> velocity = Eigen::Matrix<double, D, 1>::Zero();  ///< the velocity
 };
+
+/// A point or a velocity on the table.
+using TableVector = Eigen::Vector2d;
 
 /// Where a setup's values were read, for messages: "FILE:LINE: " prefixes (empty for a setup built in
 /// code, or for a value left at its default).
-struct Origin {
+struct SetupOrigin {
   std::string file;                 ///< "FILE: ", for what has no line of its own
   std::string table, radius, mass;  ///< the line of each directive
   std::vector<std::string> balls;   ///< the line of each ball
 };
 
-/// A table and the balls on it. All balls have the same radius and mass.
-struct Setup {
+/// A table and the balls on it: the cushions are the lines x = 0, x = width, y = 0 and y = height.
+/// All balls have the same radius and mass.
+struct TableSetup {
   double width = 2.54;       ///< metres, the playing area of a 9-ft table
   double height = 1.27;      ///< metres
   double radius = 0.028575;  ///< metres (57.15 mm balls)
   double mass = 0.17;        ///< kilograms
-  std::vector<Ball> balls;
-  Origin origin;
+  std::vector<Ball<2>> balls;  ///< the balls' centres and velocities
+  SetupOrigin origin;          ///< where the values were read (for messages; empty when built in code)
 };
 
 /// The most balls a table takes: it predicts every pair at the start (N²/2 predictions, and random
@@ -59,7 +64,7 @@ inline std::string too_many_balls(std::size_t count) {
 }
 
 /// The smallest radius a run can resolve on a table of this size: 16 ε max(width, height) /
-/// overlap tolerance (1e-9 of a radius, see Simulation). Positions on the table round by about
+/// overlap tolerance (1e-9 of a radius, see Table). Positions on the table round by about
 /// ε max(width, height); below this radius that rounding alone would exceed the overlap the run
 /// allows. 9.0e-6 m for the default 2.54 × 1.27 m table.
 inline double smallest_radius(double width, double height) {
@@ -69,8 +74,8 @@ inline double smallest_radius(double width, double height) {
 /// The distance of two centres, |a − b|. The square root of the squared distance where that square is
 /// a normal number (the fast path at every event), std::hypot elsewhere: on a table of 1e-300 m the
 /// square underflowed to 0, and two balls far apart read as lying on each other.
-inline double centre_distance(const Vector& a, const Vector& b) {
-  const Vector d = a - b;
+inline double centre_distance(const TableVector& a, const TableVector& b) {
+  const TableVector d = a - b;
   const double square = d.squaredNorm();
   if (square >= std::numeric_limits<double>::min() && square <= std::numeric_limits<double>::max()) {
     return std::sqrt(square);
@@ -79,13 +84,13 @@ inline double centre_distance(const Vector& a, const Vector& b) {
 }
 
 /// How far balls i and j overlap: two radii minus the distance of their centres (negative when apart).
-inline double overlap(const Setup& setup, std::size_t i, std::size_t j) {
+inline double overlap(const TableSetup& setup, std::size_t i, std::size_t j) {
   return 2 * setup.radius - centre_distance(setup.balls[i].position, setup.balls[j].position);
 }
 
 /// True when a ball centred at `p` is on the table: its centre at least a radius (less `slack`) from
 /// every cushion.
-inline bool on_table(const Setup& setup, const Vector& p, double slack = 0) {
+inline bool on_table(const TableSetup& setup, const TableVector& p, double slack = 0) {
   const double low = setup.radius - slack;
   return p.x() >= low && p.x() <= setup.width - low && p.y() >= low && p.y() <= setup.height - low;
 }
@@ -94,8 +99,8 @@ inline bool on_table(const Setup& setup, const Vector& p, double slack = 0) {
 /// read from a file), the ball, the value and what was expected. Throws std::invalid_argument.
 /// O(N) expected time: the overlap check hashes the balls into cells of one diameter. Returns how many
 /// pairs of balls it compared (a handful per ball; the tests hold it to that).
-inline std::size_t validate(const Setup& setup) {
-  const Origin& origin = setup.origin;
+inline std::size_t validate(const TableSetup& setup) {
+  const SetupOrigin& origin = setup.origin;
   const auto ball_origin = [&](std::size_t i) {
     return i < origin.balls.size() ? origin.balls[i] : origin.file;
   };
@@ -133,7 +138,7 @@ inline std::size_t validate(const Setup& setup) {
   if (setup.balls.empty()) fail(origin.file, "no balls: expected at least one");
   if (setup.balls.size() > largest_ball_count) fail(origin.file, too_many_balls(setup.balls.size()));
   for (std::size_t i = 0; i < setup.balls.size(); ++i) {
-    const Ball& ball = setup.balls[i];
+    const Ball<2>& ball = setup.balls[i];
     std::ostringstream text;
     if (!ball.position.allFinite() || !ball.velocity.allFinite()) {
       text << "ball " << i << " has a position or velocity that is not finite";
@@ -148,7 +153,7 @@ inline std::size_t validate(const Setup& setup) {
            << " (billiards::component_limit, the checked calls' bound: within it no collision overflows)";
       fail(ball_origin(i), text.str());
     }
-    const Vector& p = ball.position;
+    const TableVector& p = ball.position;
     if (!on_table(setup, p)) {
       text << "ball " << i << " at (" << p.x() << ", " << p.y() << ") is outside the table: expected its "
            << "centre within [" << r << ", " << setup.width - r << "] x [" << r << ", " << setup.height - r
@@ -168,7 +173,7 @@ inline std::size_t validate(const Setup& setup) {
   std::size_t compared = 0;
   cells.reserve(setup.balls.size());
   for (std::size_t i = 0; i < setup.balls.size(); ++i) {
-    const Vector& p = setup.balls[i].position;
+    const TableVector& p = setup.balls[i].position;
     const auto cx = static_cast<std::int64_t>(std::floor(p.x() / cell)),
                cy = static_cast<std::int64_t>(std::floor(p.y() / cell));
     for (std::int64_t dx = -1; dx <= 1; ++dx) {
@@ -194,7 +199,7 @@ inline std::size_t validate(const Setup& setup) {
 /// `count` balls at random, non-overlapping positions with speeds in [0.5, 1.5] × `speed` in random
 /// directions. Random placement jams at about 55 % of the area covered (random sequential adsorption),
 /// so more than half is rejected at once. Throws std::invalid_argument when they do not fit.
-inline Setup random_setup(Setup table, std::size_t count, std::uint64_t seed, double speed = 1.0) {
+inline TableSetup random_setup(TableSetup table, std::size_t count, std::uint64_t seed, double speed = 1.0) {
   constexpr double pi = 3.14159265358979323846;
   const double r = table.radius;
   const auto cannot_place = [&](const std::string& why) {
@@ -216,8 +221,8 @@ inline Setup random_setup(Setup table, std::size_t count, std::uint64_t seed, do
       magnitude(0.5 * speed, 1.5 * speed);
   table.balls.clear();
   for (std::size_t failures = 0; table.balls.size() < count;) {
-    const Vector p(x(random), y(random));
-    const bool free = std::all_of(table.balls.begin(), table.balls.end(), [&](const Ball& other) {
+    const TableVector p(x(random), y(random));
+    const bool free = std::all_of(table.balls.begin(), table.balls.end(), [&](const Ball<2>& other) {
       return centre_distance(other.position, p) >= 2 * r;
     });
     if (!free) {
@@ -226,25 +231,25 @@ inline Setup random_setup(Setup table, std::size_t count, std::uint64_t seed, do
     }
     failures = 0;
     const double a = angle(random), s = magnitude(random);
-    table.balls.push_back({p, Vector(s * std::cos(a), s * std::sin(a))});
+    table.balls.push_back({p, TableVector(s * std::cos(a), s * std::sin(a))});
   }
   return table;
 }
 
 /// The break: fifteen balls racked in a triangle (a gap of 1e-4 radii between neighbours) at the foot
 /// spot, and the cue ball struck from the head string straight at the apex ball at `speed`.
-inline Setup break_setup(Setup table, double speed = 8.0) {
+inline TableSetup break_setup(TableSetup table, double speed = 8.0) {
   const double r = table.radius, spacing = 2 * r * (1 + 1e-4);
-  const Vector apex(0.75 * table.width, 0.5 * table.height);
+  const TableVector apex(0.75 * table.width, 0.5 * table.height);
   table.balls.clear();
-  table.balls.push_back({Vector(0.25 * table.width, 0.5 * table.height), Vector(speed, 0)});  // the cue ball
+  table.balls.push_back({TableVector(0.25 * table.width, 0.5 * table.height), TableVector(speed, 0)});  // the cue ball
   for (int row = 0; row < 5; ++row) {
     for (int k = 0; k <= row; ++k) {
-      const Vector p = apex + Vector(row * spacing * std::sqrt(3.0) / 2, (k - row / 2.0) * spacing);
-      table.balls.push_back({p, Vector(0, 0)});
+      const TableVector p = apex + TableVector(row * spacing * std::sqrt(3.0) / 2, (k - row / 2.0) * spacing);
+      table.balls.push_back({p, TableVector(0, 0)});
     }
   }
   return table;
 }
 
-}  // namespace billiards_example
+}  // namespace billiards::simulation

@@ -1,14 +1,14 @@
-// An event-driven billiards table on billiards::runtime: N equal balls on a rectangular table with
-// cushions. No time stepping: the simulation jumps from one contact to the next, the earliest
-// ball–ball contact (billiards::time_of_impact, the emitted kernel of audit claims
-// beyond.time_of_impact.*) or ball–cushion contact, and resolves it exactly there —
-// billiards::collide_if_approaching for two balls (so rounding can never make a separating pair
-// collide again) and billiards::collide with an infinite mass for a cushion (the immovable-body form).
-// No velocity is ever corrected.
-//
-// Cost: each event re-predicts the one or two balls it changed against every other ball, O(N) per
-// event (naive all-pairs prediction), plus O(log E) for the event queue and O(N) to move every ball
-// to the event's time. See README "An event-driven table".
+/// \file
+/// An event-driven billiards table on billiards::runtime: N equal balls on a rectangular table with
+/// cushions. No time stepping: the table jumps from one contact to the next, the earliest ball–ball
+/// contact (billiards::time_of_impact, the emitted kernel of audit claims beyond.time_of_impact.*) or
+/// ball–cushion contact, and resolves it exactly there — billiards::collide_if_approaching for two
+/// balls (so rounding can never make a separating pair collide again) and billiards::collide with an
+/// infinite mass for a cushion (the immovable-body form). No velocity is ever corrected.
+///
+/// Cost: each event re-predicts the one or two balls it changed against every other ball, O(N) per
+/// event (all-pairs prediction), plus O(log E) for the event queue and O(N) to move every ball to the
+/// event's time (docs/simulations.md).
 #pragma once
 
 #include "table_setup.hpp"
@@ -25,29 +25,35 @@
 #include <string>
 #include <vector>
 
-namespace billiards_example {
+namespace billiards::simulation {
 
-/// Thrown by Simulation::step when no event can ever happen again (every ball at rest).
+/// Thrown by Table::step when no event can ever happen again (every ball at rest, or too slow for any
+/// event to fall within the largest finite time).
 class NoEvent : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;
 };
 
-/// What an event was.
-struct Event {
-  enum class Kind { ball, cushion } kind = Kind::ball;
-  double time = 0;
-  std::size_t first = 0;   ///< a ball
+/// What an event of the table was.
+struct TableEvent {
+  /// A contact of two balls, or of a ball and a cushion.
+  enum class Kind { ball, cushion };
+  Kind kind = Kind::ball;  ///< what the ball met
+  double time = 0;         ///< the table time of the event, in seconds since the start
+  std::size_t first = 0;   ///< a ball (its index in the setup)
   std::size_t second = 0;  ///< the other ball, or the cushion: 0 left, 1 right, 2 bottom, 3 top
   bool resolved = false;   ///< velocities changed (an approaching contact)
 };
 
-class Simulation {
+/// The event-driven table: built from a TableSetup, run event by event (step), for a number of events
+/// (run_events) or until a time (run_until), each event reported to an optional callback.
+class Table {
  public:
-  /// Validates `setup` (std::invalid_argument on a bad one) and predicts every ball's first event.
-  /// `check_every_pair`: after each event, check every pair of balls for overlap (O(N²) per event);
-  /// otherwise only the balls of the event against all others (O(N)).
-  explicit Simulation(Setup setup, bool check_every_pair = true)
+  /// Validates `setup` (std::invalid_argument on a bad one, naming the ball, the value and what was
+  /// expected) and predicts every ball's first event. `check_every_pair`: after each event, check every
+  /// pair of balls for overlap (O(N²) per event); otherwise only the balls of the event against all
+  /// others (O(N)).
+  explicit Table(TableSetup setup, bool check_every_pair = true)
       : setup_(std::move(setup)),
         check_every_pair_(check_every_pair),
         collisions_(setup_.balls.size(), 0),
@@ -62,25 +68,92 @@ class Simulation {
   /// Moves every ball to the next event and resolves it. Throws std::logic_error if, after it, two
   /// balls overlap by more than overlap_tolerance of a radius or a ball has left the table, and
   /// NoEvent when no event can happen any more.
-  Event step() {
-    for (;;) {
-      if (queue_.empty()) throw NoEvent(no_event_reason());
+  TableEvent step() {
+    if (!next_event_is_due()) throw NoEvent(no_event_reason());
+    return resolve_next();
+  }
+
+  /// Runs at most `count` events, calling `on_event(const TableEvent&)` after each (the balls then at
+  /// the event's time), and returns how many ran: fewer than `count` only when no event can happen
+  /// any more (see NoEvent). Throws std::logic_error as step() does.
+  template <typename OnEvent>
+  std::uint64_t run_events(std::uint64_t count, OnEvent&& on_event) {
+    std::uint64_t done = 0;
+    for (; done < count && next_event_is_due(); ++done) on_event(resolve_next());
+    return done;
+  }
+  /// Runs at most `count` events; see the overload with a callback.
+  std::uint64_t run_events(std::uint64_t count) {
+    return run_events(count, [](const TableEvent&) {});
+  }
+
+  /// Runs every event up to table time `until` (seconds since the start), calling
+  /// `on_event(const TableEvent&)` after each, then moves every ball on to `until`; returns how many
+  /// events ran. Throws std::invalid_argument when `until` is NaN or earlier than time(), and
+  /// std::logic_error as step() does.
+  template <typename OnEvent>
+  std::uint64_t run_until(long double until, OnEvent&& on_event) {
+    if (!(until >= elapsed_)) {
+      std::ostringstream text;
+      text << "billiards::simulation::Table::run_until: until is " << until << ", expected a time at or after "
+           << elapsed_ << " s (the table's time now)";
+      throw std::invalid_argument(text.str());
+    }
+    std::uint64_t done = 0;
+    while (next_event_is_due() && elapsed_ + static_cast<long double>(queue_.front().time) <= until) {
+      on_event(resolve_next());
+      ++done;
+    }
+    // No event before `until`: every ball moves freely to it (at most the largest finite step at once).
+    while (elapsed_ < until) {
+      const long double left = until - elapsed_;
+      const double step = left > std::numeric_limits<double>::max() ? std::numeric_limits<double>::max()
+                                                                      : static_cast<double>(left);
+      advance_by(step);
+      if (step == 0) {
+        elapsed_ = until;
+        break;
+      }
+    }
+    return done;
+  }
+  /// Runs every event up to table time `until`; see the overload with a callback.
+  std::uint64_t run_until(long double until) {
+    return run_until(until, [](const TableEvent&) {});
+  }
+
+ private:
+  // Drops superseded predictions from the top of the queue; true when a valid one is left there.
+  bool next_event_is_due() {
+    while (!queue_.empty()) {
+      const Prediction& top = queue_.front();
+      if (top.serial == predictions_[top.ball] &&
+          !(top.partner_is_ball && top.partner_collisions != collisions_[top.partner])) {
+        return true;
+      }
+      std::pop_heap(queue_.begin(), queue_.end(), std::greater<>());
+      const Prediction stale = queue_.back();
+      queue_.pop_back();
+      // The partner moved differently since: predict this ball again (a superseded one has a newer).
+      if (stale.serial == predictions_[stale.ball]) predict(stale.ball);
+    }
+    return false;
+  }
+
+  // Resolves the prediction at the top of the queue (valid: next_event_is_due()).
+  TableEvent resolve_next() {
+    {
       std::pop_heap(queue_.begin(), queue_.end(), std::greater<>());
       const Prediction next = queue_.back();
       queue_.pop_back();
-      if (next.serial != predictions_[next.ball]) continue;  // superseded by a later prediction
-      if (next.partner_is_ball && next.partner_collisions != collisions_[next.partner]) {
-        predict(next.ball);  // the partner moved differently since: predict this ball again
-        continue;
-      }
       advance_by(next.time);
-      Event event;
+      TableEvent event;
       event.time = static_cast<double>(elapsed_);
       event.first = next.ball;
       event.second = next.partner;
       if (next.partner_is_ball) {
-        Ball& a = setup_.balls[next.ball];
-        Ball& b = setup_.balls[next.partner];
+        Ball<2>& a = setup_.balls[next.ball];
+        Ball<2>& b = setup_.balls[next.partner];
         const auto [x1, x2] = billiards::collide_if_approaching(setup_.mass, a.position, a.velocity,
                                                                 setup_.mass, b.position, b.velocity);
         event.resolved = x1 != a.velocity || x2 != b.velocity;
@@ -88,12 +161,12 @@ class Simulation {
         b.velocity = x2;
         if (event.resolved) ++ball_collisions_;
       } else {
-        event.kind = Event::Kind::cushion;
-        Ball& a = setup_.balls[next.ball];
-        const Vector n = cushion_normal(next.partner);
+        event.kind = TableEvent::Kind::cushion;
+        Ball<2>& a = setup_.balls[next.ball];
+        const TableVector n = cushion_normal(next.partner);
         const double wall = std::numeric_limits<double>::infinity();
         if (a.velocity.dot(n) < 0) {  // approaching the cushion
-          a.velocity = billiards::collide(setup_.mass, a.velocity, wall, Vector::Zero().eval(), n).first;
+          a.velocity = billiards::collide(setup_.mass, a.velocity, wall, TableVector::Zero().eval(), n).first;
           event.resolved = true;
           ++cushion_collisions_;
         }
@@ -110,11 +183,14 @@ class Simulation {
     }
   }
 
+ public:
   /// Table time since the start, summed in long double: slow balls on a large table pass the largest
   /// double (a table of 1e300 m crossed at 1e-7 m/s reached "inf s" in 20 000 events).
   long double time() const { return elapsed_; }
-  const Setup& setup() const { return setup_; }
-  const std::vector<Ball>& balls() const { return setup_.balls; }
+  /// The setup, its balls at the table's time now.
+  const TableSetup& setup() const { return setup_; }
+  /// The balls at the table's time now: centres and velocities.
+  const std::vector<Ball<2>>& balls() const { return setup_.balls; }
   /// Events processed, including contacts that were already separating (nothing to resolve).
   std::uint64_t events() const { return events_; }
   /// Ball–ball contacts resolved (the balls approached and their velocities changed).
@@ -127,7 +203,7 @@ class Simulation {
   /// Σ ½ m v², summed in long double so that the sum adds no rounding of its own to the drift.
   long double kinetic_energy() const {
     long double sum = 0;
-    for (const Ball& ball : setup_.balls)
+    for (const Ball<2>& ball : setup_.balls)
       sum += 0.5L * setup_.mass * ball.velocity.cast<long double>().squaredNorm();
     return sum;
   }
@@ -143,18 +219,18 @@ class Simulation {
     bool operator>(const Prediction& other) const { return time > other.time; }
   };
 
-  static Vector cushion_normal(std::size_t cushion) {
+  static TableVector cushion_normal(std::size_t cushion) {
     switch (cushion) {
-      case 0: return Vector(1, 0);    // left cushion, pointing into the table
-      case 1: return Vector(-1, 0);   // right
-      case 2: return Vector(0, 1);    // bottom
-      default: return Vector(0, -1);  // top
+      case 0: return TableVector(1, 0);    // left cushion, pointing into the table
+      case 1: return TableVector(-1, 0);   // right
+      case 2: return TableVector(0, 1);    // bottom
+      default: return TableVector(0, -1);  // top
     }
   }
 
   // The ball's earliest event from now: against every other ball and the four cushions.
   void predict(std::size_t i) {
-    const Ball& ball = setup_.balls[i];
+    const Ball<2>& ball = setup_.balls[i];
     const double r = setup_.radius;
     Prediction best{std::numeric_limits<double>::infinity(), i, 0, false, ++predictions_[i], 0};
     const auto consider = [&](double dt, std::size_t partner, bool is_ball) {
@@ -167,7 +243,7 @@ class Simulation {
     };
     for (std::size_t j = 0; j < setup_.balls.size(); ++j) {
       if (j == i) continue;
-      const Ball& other = setup_.balls[j];
+      const Ball<2>& other = setup_.balls[j];
       consider(billiards::time_of_impact(ball.position, ball.velocity, other.position, other.velocity, 2 * r),
                j, true);
     }
@@ -190,7 +266,7 @@ class Simulation {
   // round by more than a ball moves in 1e-9 of a radius. Subtracting one number from every key keeps
   // the heap ordered.
   void advance_by(double dt) {
-    for (Ball& ball : setup_.balls) ball.position += dt * ball.velocity;
+    for (Ball<2>& ball : setup_.balls) ball.position += dt * ball.velocity;
     for (Prediction& prediction : queue_) prediction.time = std::max(0.0, prediction.time - dt);
     elapsed_ += dt;
   }
@@ -199,7 +275,7 @@ class Simulation {
   // largest finite time (1e-300 m/s on a table of 1e300 m), which the predictions take as never.
   std::string no_event_reason() const {
     const bool at_rest = std::all_of(setup_.balls.begin(), setup_.balls.end(),
-                                     [](const Ball& ball) { return ball.velocity.isZero(0); });
+                                     [](const Ball<2>& ball) { return ball.velocity.isZero(0); });
     if (at_rest) return "no event will ever happen: every ball is at rest";
     std::ostringstream text;
     text << "no event will ever happen: every moving ball's next cushion or ball lies further away than "
@@ -208,7 +284,7 @@ class Simulation {
   }
 
   // No two balls overlap by more than overlap_tolerance of a radius, and every ball is on the table.
-  void check(const Event& event) {
+  void check(const TableEvent& event) {
     const double r = setup_.radius, allowed = overlap_tolerance * r;
     const std::size_t count = setup_.balls.size();
     const auto check_pair = [&](std::size_t i, std::size_t j) {
@@ -223,12 +299,12 @@ class Simulation {
       }
     };
     for (std::size_t i = 0; i < count; ++i) {
-      const bool involved = i == event.first || (event.kind == Event::Kind::ball && i == event.second);
+      const bool involved = i == event.first || (event.kind == TableEvent::Kind::ball && i == event.second);
       if (!check_every_pair_ && !involved) continue;
       for (std::size_t j = 0; j < count; ++j) {
         if (j != i && (check_every_pair_ ? j > i : true)) check_pair(i, j);
       }
-      const Vector& p = setup_.balls[i].position;
+      const TableVector& p = setup_.balls[i].position;
       if (!on_table(setup_, p, allowed)) {
         std::ostringstream text;
         text << "ball " << i << " left the table at t = " << time() << ": (" << p.x() << ", " << p.y() << ")";
@@ -237,7 +313,7 @@ class Simulation {
     }
   }
 
-  Setup setup_;
+  TableSetup setup_;
   bool check_every_pair_;
   long double elapsed_ = 0;
   std::vector<std::uint64_t> collisions_;   ///< per ball: how often its velocity was resolved
@@ -249,4 +325,4 @@ class Simulation {
   double largest_overlap_ = 0;
 };
 
-}  // namespace billiards_example
+}  // namespace billiards::simulation

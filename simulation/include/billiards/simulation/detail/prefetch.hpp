@@ -1,7 +1,7 @@
 // A memory prefetch the optimiser keeps.
 #pragma once
 
-namespace billiards_example {
+namespace billiards::simulation::detail {
 
 /// Asks memory for the cache line at `p` (a hint: GCC's and clang's __builtin_prefetch; nothing elsewhere). GCC deletes
 /// a loop whose only effect is a prefetch — a hint is no side effect, and such a loop may be assumed
@@ -15,4 +15,4 @@ inline void prefetch([[maybe_unused]] const void* p) {
 #endif
 }
 
-}  // namespace billiards_example
+}  // namespace billiards::simulation::detail

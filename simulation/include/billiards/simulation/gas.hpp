@@ -1,29 +1,31 @@
-// A hard-sphere gas, event-driven, on billiards::runtime: N balls of diameter σ = 1 and mass m = 1 in
-// a periodic square (2-D) or cubic (3-D) box, started from a square or FCC lattice with random
-// velocities (total momentum zero, kT = 1), run collision by collision with no time step.
-//
-// Each ball keeps its position at its own last update (positions are brought forward only when a
-// ball takes part in an event). The box is divided into a grid of cells at least one diameter wide,
-// numbered tile by tile (tiles of 4^D cells, so that neighbouring cells lie near one another in memory);
-// each ball's next event is the earlier of its next cell crossing and its earliest predicted
-// collision with a ball in its own or a neighbouring cell (billiards::time_of_impact on the nearest
-// periodic image), so a prediction costs the same whatever N. After a cell crossing only the cells that
-// have just come around the ball are searched, the earliest collision found before kept beside them
-// (3^(D−1) cells, not 3^D). The balls' next events sit in an event
-// calendar (event_calendar.hpp: a calendar queue, O(1) a step on average). Collisions are numbered; a
-// collision event records the number of the last collision before its prediction: when the partner has
-// collided since, the event is stale and the ball is predicted again. Collisions are resolved by
-// billiards::collide_if_approaching on the nearest images.
-//
-// Measured over the span after the equilibration: the collision virial Σ r_ij·Δp_i (r_ij = r_i − r_j at
-// contact, Δp_i ball i's change of momentum), which gives Z = PV/(N kT) = 1 + Σ r_ij·Δp_i/(d N kT t),
-// and the collision count, which gives the mean free time τ = t N/(2 C) and, through the identity
-// Z − 1 = σ √(π m/kT)/(2 d τ), a second estimate of Z from the collision rate alone.
+/// \file
+/// A hard-sphere gas, event-driven, on billiards::runtime: N equal balls of diameter σ and mass m in a
+/// periodic square (2-D) or cubic (3-D) box, from a configuration of the caller's (GasSetup) or a square
+/// or FCC lattice with random velocities (gas::lattice), run collision by collision with no time step.
+///
+/// Each ball keeps its position at its own last update (positions are brought forward only when a
+/// ball takes part in an event). The box is divided into a grid of cells at least one diameter wide,
+/// numbered tile by tile (tiles of 4^D cells, so that neighbouring cells lie near one another in
+/// memory); each ball's next event is the earlier of its next cell crossing and its earliest predicted
+/// collision with a ball in its own or a neighbouring cell (billiards::time_of_impact on the nearest
+/// periodic image), so a prediction costs the same whatever N. After a cell crossing only the cells that
+/// have just come around the ball are searched, the earliest collision found before kept beside them
+/// (3^(D−1) cells, not 3^D). The balls' next events sit in an event calendar (event_calendar.hpp: a
+/// calendar queue, O(1) a step on average). Collisions are numbered; a collision event records the
+/// number of the last collision before its prediction: when the partner has collided since, the event
+/// is stale and the ball is predicted again. Collisions are resolved by
+/// billiards::collide_if_approaching on the nearest images.
+///
+/// Measured over a span (Gas::reset_measurements to now): the collision virial Σ r_ij·Δp_i (r_ij =
+/// r_i − r_j at contact, Δp_i ball i's change of momentum), which gives Z = PV/(N kT) = 1 + Σ r_ij·Δp_i/(d
+/// N kT t), and the collision count, which gives the mean free time τ = t N/(2 C) and, through the
+/// identity Z − 1 = σ √(π m/kT)/(2 d τ), a second estimate of Z from the collision rate alone.
 #pragma once
 
-#include "event_calendar.hpp"
-#include "large_array.hpp"
-#include "prefetch.hpp"
+#include <billiards/simulation/detail/large_array.hpp>
+#include <billiards/simulation/detail/prefetch.hpp>
+#include <billiards/simulation/event_calendar.hpp>
+#include <billiards/simulation/table_setup.hpp>
 
 #include <billiards/collision.hpp>
 
@@ -40,34 +42,40 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 #include <vector>
 
-namespace billiards_example::gas {
+namespace billiards::simulation {
 
-/// What to run: the command line of billiards-gas.
+/// Everything about the gas that is not the engine: the lattice start and its options, the
+/// measurement of the equation of state, the equations of state themselves.
+namespace gas {
+
+/// A lattice start and a measurement of its equation of state (the command line of billiards-gas),
+/// in units of σ = m = kT = 1.
 struct Options {
-  int dimension = 3;
-  std::size_t balls = 1000;
-  double packing_fraction = 0.3;
+  int dimension = 3;                  ///< 2 (disks) or 3 (spheres)
+  std::size_t balls = 1000;           ///< N
+  double packing_fraction = 0.3;      ///< η: π ρ σ²/4 in 2-D, π ρ σ³/6 in 3-D
   std::uint64_t events = 100000;      ///< collisions measured
   std::uint64_t equilibrate = 10000;  ///< collisions run first, not measured
-  std::uint64_t seed = 1;
+  std::uint64_t seed = 1;             ///< the seed of the random velocities
   /// Stop (throw NoCollisions) after this many events in a row without a collision; 0: 10^6 + 100 N.
   std::uint64_t max_events_without_collision = 0;
 };
 
-/// What a run measured (units σ = m = kT = 1).
+/// What gas::measure measured (units σ = m = kT = 1).
 struct Result {
-  int dimension = 0;
-  std::size_t balls = 0;
-  double packing_fraction = 0;
+  int dimension = 0;             ///< 2 or 3
+  std::size_t balls = 0;         ///< N
+  double packing_fraction = 0;   ///< η
   std::uint64_t collisions = 0;  ///< over the measured span
-  std::uint64_t cell_crossings = 0;
+  std::uint64_t cell_crossings = 0;  ///< over the measured span
   double time = 0;  ///< the measured span, in simulation time
   double compressibility_factor = 0, compressibility_factor_error = 0;  ///< Z from the virial
   /// Z from the collision rate, 1 + σ √(π m/kT)/(2 d τ), and its error.
   double compressibility_factor_from_collision_rate = 0, compressibility_factor_from_collision_rate_error = 0;
-  double mean_free_time = 0;
+  double mean_free_time = 0;              ///< τ = t N/(2 C)
   double temperature = 0;                 ///< kT at the end, Σ m v²/(d N)
   double largest_temperature_change = 0;  ///< |kT − kT0|/kT0, the largest over the blocks' ends
   double momentum = 0;                    ///< |Σ m v| at the end
@@ -186,132 +194,209 @@ inline void validate(const Options& o) {
   }
 }
 
+}  // namespace gas
+
+/// A gas of N equal balls in a periodic box: the caller's configuration, or gas::lattice's.
+template <int D>
+struct GasSetup {
+  double side = 0;        ///< the box's side: a square (2-D) or a cube (3-D), periodic along every axis
+  double radius = 0.5;    ///< every ball's radius (σ = 2 radius, the diameter)
+  double mass = 1;        ///< every ball's mass
+  std::vector<Ball<D>> balls;  ///< centres (anywhere: taken into [0, side) along each axis) and velocities
+};
+
+/// One collision of the gas, as Gas reports it to a callback.
+struct GasCollision {
+  double time = 0;         ///< the gas's time of the collision
+  std::size_t first = 0;   ///< a ball (its index in the setup)
+  std::size_t second = 0;  ///< the other ball
+};
+
 /// Thrown when a run goes on without collisions (the balls' paths never meet).
 struct NoCollisions : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-/// A d-dimensional hard-sphere gas.
+/// What a Gas measured over a span: from its start (or Gas::reset_measurements) to now.
+struct GasMeasurement {
+  double time = 0;               ///< the span's length, in the gas's time
+  std::uint64_t collisions = 0;  ///< collisions resolved in it
+  std::uint64_t cell_crossings = 0;  ///< cell crossings in it (the engine's own events)
+  double virial = 0;             ///< Σ r_ij·Δp_i over its collisions
+  double temperature = 0;        ///< kT at the span's start, Σ m v²/(d N)
+  /// Z = PV/(N kT) from the collision virial, 1 + Σ r_ij·Δp_i/(d N kT t); 1 for an empty span.
+  double compressibility_factor = 1;
+  /// Z from the collision rate, 1 + σ √(π m/kT)/(2 d τ); 1 without collisions.
+  double compressibility_factor_from_collision_rate = 1;
+  double mean_free_time = 0;     ///< τ = t N/(2 C); +∞ without collisions
+};
+
+/// Throws std::invalid_argument, naming the argument, its value and what was expected, where `setup` is
+/// not a gas the engine can run: fewer than 2 balls or more than 2^31, a radius, mass or side that is not
+/// positive and finite, a box narrower than 3 diameters or wider than gas::largest_box_side() diameters,
+/// a position or velocity that is not finite, a velocity component beyond billiards::component_limit, or
+/// two balls closer than a diameter (less 1e-9 of one) on their nearest images.
+template <int D>
+void validate(const GasSetup<D>& setup);
+
+/// A D-dimensional hard-sphere gas: built from a GasSetup, run for a number of collisions
+/// (run_collisions) or until a time (run_until), each collision reported to an optional callback.
 template <int D>
 class Gas {
  public:
+  /// A position or a velocity.
   using Vector = Eigen::Matrix<double, D, 1>;
 
-  explicit Gas(const Options& options) : options_(options) {
-    validate(options);
-    if (options.dimension != D) throw std::invalid_argument("Gas<D>: --dimension differs from D");
-    const std::size_t n = options.balls;
-    side_ = box_side(D, n, options.packing_fraction);
-    cells_per_side_ = grid_cells_per_side(D, n, side_);  // cells at least one diameter wide
+  /// Validates `setup` (see validate(const GasSetup<D>&)) and predicts every ball's first event. A run
+  /// stops with NoCollisions after `max_events_without_collision` events in a row without a collision
+  /// (0: 10^6 + 100 N), so that balls whose paths never meet cannot run forever.
+  explicit Gas(const GasSetup<D>& setup, std::uint64_t max_events_without_collision = 0)
+      : radius_(setup.radius), diameter_(2 * setup.radius), mass_(setup.mass), side_(setup.side) {
+    validate(setup);
+    const std::size_t n = setup.balls.size();
+    quiet_limit_ = max_events_without_collision != 0 ? max_events_without_collision
+                                                     : 1000000 + 100 * static_cast<std::uint64_t>(n);
+    // Cells at least one diameter wide.
+    cells_per_side_ = gas::grid_cells_per_side(D, n, side_ / diameter_);
     cell_width_ = side_ / cells_per_side_;
     lay_out_cells();
     ball_.resize(n);
     own_.resize(n);
-    place_on_lattice();
-    draw_velocities();
+    identity_.resize(n);
     for (std::size_t i = 0; i < n; ++i) {
+      ball_[i].position = setup.balls[i].position;
+      ball_[i].velocity = setup.balls[i].velocity;
+      identity_[i] = static_cast<std::uint32_t>(i);
       for (int k = 0; k < D; ++k) {
-        own_[i].coordinates[k] =
-            std::min(cells_per_side_ - 1, static_cast<int>(ball_[i].position[k] / cell_width_));
+        double& x = ball_[i].position[k];
+        x -= side_ * std::floor(x / side_);  // into [0, side): a position inside is kept bit for bit
+        if (!(x < side_)) x = 0;             // −1e-20 rounds to side itself
+        own_[i].coordinates[k] = std::min(cells_per_side_ - 1, static_cast<int>(x / cell_width_));
       }
       own_[i].cell = static_cast<std::uint32_t>(cell_index(own_[i].coordinates));
       insert(i);
     }
+    check_no_overlap();
     for (std::size_t i = 0; i < n; ++i) predict_in_full(i);
     calendar_.defer_filings(n >= look_ahead_from);
     refile();
-    initial_temperature_ = temperature();
+    reset_measurements();
   }
 
-  /// Runs the equilibration and the measured span and returns what was measured.
-  Result run() {
-    advance(options_.equilibrate, false);
+  /// Runs `count` more collisions, calling `on_collision(const GasCollision&)` after each, and returns
+  /// the number run (`count`). Throws NoCollisions after too many events in a row without a collision
+  /// (see the constructor).
+  template <typename OnCollision>
+  std::uint64_t run_collisions(std::uint64_t count, OnCollision&& on_collision) {
+    return advance(count, infinity, on_collision);
+  }
+  /// Runs `count` more collisions; see the overload with a callback.
+  std::uint64_t run_collisions(std::uint64_t count) { return advance(count, infinity, ignore_collision); }
+
+  /// Runs every collision up to the gas's time `until`, calling `on_collision(const GasCollision&)`
+  /// after each, and makes `until` the time now; returns the number of collisions run. Throws
+  /// std::invalid_argument when `until` is NaN, infinite or earlier than time().
+  template <typename OnCollision>
+  std::uint64_t run_until(double until, OnCollision&& on_collision) {
+    if (!(until >= now_) || !std::isfinite(until)) {
+      std::ostringstream text;
+      text << "billiards::simulation::Gas::run_until: until is " << until
+           << ", expected a finite time at or after " << now_ << " (the gas's time now)";
+      throw std::invalid_argument(text.str());
+    }
+    const std::uint64_t done = advance(std::numeric_limits<std::uint64_t>::max(), until, on_collision);
+    now_ = until;
+    return done;
+  }
+  /// Runs every collision up to the gas's time `until`; see the overload with a callback.
+  std::uint64_t run_until(double until) { return run_until(until, ignore_collision); }
+
+  /// Starts a new span of measurement at the time now (see measured()).
+  void reset_measurements() {
+    span_start_ = now_;
+    span_collisions_ = collisions_;
+    span_crossings_ = crossings_;
     virial_ = 0;
-    const double start = now_;
-    const std::uint64_t crossings_before = crossings_;
-    constexpr int blocks = 10;
-    std::vector<double> block_virial, block_time;
-    std::vector<std::uint64_t> block_collisions;
-    const auto wall_start = std::chrono::steady_clock::now();
-    std::uint64_t done = 0;
-    for (int b = 0; b < blocks; ++b) {
-      const std::uint64_t target = options_.events * static_cast<std::uint64_t>(b + 1) / blocks;
-      const double block_start = now_;
-      virial_ = 0;
-      advance(target - done, true);
-      block_collisions.push_back(target - done);
-      done = target;
-      block_virial.push_back(virial_);
-      block_time.push_back(now_ - block_start);
-      largest_temperature_change_ =
-          std::max(largest_temperature_change_,
-                   std::fabs(temperature() - initial_temperature_) / initial_temperature_);
-    }
-    const double seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
-    Result r;
-    r.dimension = D;
-    r.balls = options_.balls;
-    r.packing_fraction = options_.packing_fraction;
-    r.collisions = done;
-    r.cell_crossings = crossings_ - crossings_before;
-    r.time = now_ - start;
-    r.temperature = temperature();
-    r.largest_temperature_change = largest_temperature_change_;
-    r.momentum = momentum().norm();
-    r.largest_overlap = largest_overlap_;
-    r.largest_gap = largest_gap_;
-    r.events_per_second = seconds > 0 ? static_cast<double>(done) / seconds : 0;
-    const double n = static_cast<double>(options_.balls), kT = initial_temperature_;
-    double total_virial = 0;
-    for (double w : block_virial) total_virial += w;
-    r.compressibility_factor = r.time > 0 ? 1 + total_virial / (D * n * kT * r.time) : 1;
-    r.mean_free_time =
-        done > 0 ? r.time * n / (2 * static_cast<double>(done)) : std::numeric_limits<double>::infinity();
-    const auto from_rate = [&](double time, double collisions) {
-      const double tau = time * n / (2 * collisions);
-      return 1 + std::sqrt(std::numbers::pi / kT) / (2 * D * tau);
-    };
-    r.compressibility_factor_from_collision_rate =
-        done > 0 ? from_rate(r.time, static_cast<double>(done)) : 1;
-    // Errors from the scatter of the blocks' estimates: the standard error of their mean.
-    std::vector<double> z_blocks, rate_blocks;
-    for (int b = 0; b < blocks; ++b) {
-      if (block_time[static_cast<std::size_t>(b)] <= 0 || block_collisions[static_cast<std::size_t>(b)] == 0)
-        continue;
-      z_blocks.push_back(1 + block_virial[static_cast<std::size_t>(b)] /
-                                 (D * n * kT * block_time[static_cast<std::size_t>(b)]));
-      rate_blocks.push_back(from_rate(block_time[static_cast<std::size_t>(b)],
-                                      static_cast<double>(block_collisions[static_cast<std::size_t>(b)])));
-    }
-    r.compressibility_factor_error = standard_error(z_blocks);
-    r.compressibility_factor_from_collision_rate_error = standard_error(rate_blocks);
-    return r;
+    span_temperature_ = temperature();
   }
 
-  /// Runs `count` more collisions without measuring them (the benchmark's step).
-  void run_collisions(std::uint64_t count) { advance(count, false); }
+  /// What was measured from the construction, or the last reset_measurements(), to now.
+  GasMeasurement measured() const {
+    GasMeasurement m;
+    const double n = static_cast<double>(ball_.size()), kT = span_temperature_;
+    m.time = now_ - span_start_;
+    m.collisions = collisions_ - span_collisions_;
+    m.cell_crossings = crossings_ - span_crossings_;
+    m.virial = mass_ * virial_;
+    m.temperature = kT;
+    if (m.time > 0 && kT > 0) m.compressibility_factor = 1 + m.virial / (D * n * kT * m.time);
+    m.mean_free_time = m.collisions > 0 ? m.time * n / (2 * static_cast<double>(m.collisions))
+                                        : std::numeric_limits<double>::infinity();
+    if (m.collisions > 0 && kT > 0) {
+      m.compressibility_factor_from_collision_rate =
+          1 + diameter_ * std::sqrt(std::numbers::pi * mass_ / kT) / (2 * D * m.mean_free_time);
+    }
+    return m;
+  }
 
-  /// kT = Σ m v²/(d N), long double sums.
+  /// kT = Σ m v²/(d N), summed in long double.
   double temperature() const {
     long double sum = 0;
     for (const Ball& b : ball_) sum += static_cast<long double>(b.velocity.squaredNorm());
-    return static_cast<double>(sum / (D * static_cast<long double>(ball_.size())));
+    return static_cast<double>(mass_ * sum / (D * static_cast<long double>(ball_.size())));
   }
+  /// Σ m v, summed in long double.
   Vector momentum() const {
     Eigen::Matrix<long double, D, 1> sum = Eigen::Matrix<long double, D, 1>::Zero();
     for (const Ball& b : ball_) sum += b.velocity.template cast<long double>();
-    return sum.template cast<double>();
+    return (static_cast<long double>(mass_) * sum).template cast<double>();
   }
+  /// The number of balls, N.
+  std::size_t size() const { return ball_.size(); }
+  /// The box's side.
   double side() const { return side_; }
+  /// Every ball's radius.
+  double radius() const { return radius_; }
+  /// Every ball's mass.
+  double mass() const { return mass_; }
+  /// The gas's time now (0 at the construction).
+  double time() const { return now_; }
+  /// Collisions resolved since the construction.
+  std::uint64_t collisions() const { return collisions_; }
+  /// Cell crossings since the construction (the engine's own events, not reported to callbacks).
+  std::uint64_t cell_crossings() const { return crossings_; }
+  /// The largest overlap at any collision since the construction, in diameters.
+  double largest_overlap() const { return largest_overlap_; }
+  /// How far beyond touching the centres were at any collision since the construction, in diameters
+  /// (a collision taken when it is not due, from a stale prediction, would show here).
+  double largest_gap() const { return largest_gap_; }
+  /// The cells per side of the cell grid.
   int cells_per_side() const { return cells_per_side_; }
-  /// Every ball brought to the current time (for checks): their positions in [0, side).
-  std::vector<Vector> positions_now() const {
+
+  /// Every ball's position now, in the setup's order, each coordinate in [0, side).
+  std::vector<Vector> positions() const {
     std::vector<Vector> out(ball_.size());
     for (std::size_t i = 0; i < out.size(); ++i) {
-      out[i] = ball_[i].position + ball_[i].velocity * (now_ - ball_[i].updated);
-      for (int k = 0; k < D; ++k) out[i][k] -= side_ * std::floor(out[i][k] / side_);
+      Vector& p = out[identity_[i]];
+      p = ball_[i].position + ball_[i].velocity * (now_ - ball_[i].updated);
+      for (int k = 0; k < D; ++k) {
+        p[k] -= side_ * std::floor(p[k] / side_);
+        if (!(p[k] < side_)) p[k] = 0;
+      }
     }
+    return out;
+  }
+  /// Every ball's velocity, in the setup's order.
+  std::vector<Vector> velocities() const {
+    std::vector<Vector> out(ball_.size());
+    for (std::size_t i = 0; i < out.size(); ++i) out[identity_[i]] = ball_[i].velocity;
+    return out;
+  }
+  /// The state now as a setup (positions in [0, side)): a gas built from it runs on from here.
+  GasSetup<D> setup() const {
+    GasSetup<D> out{side_, radius_, mass_, std::vector<simulation::Ball<D>>(ball_.size())};
+    const std::vector<Vector> p = positions(), v = velocities();
+    for (std::size_t i = 0; i < p.size(); ++i) out.balls[i] = {p[i], v[i]};
     return out;
   }
   /// The displacement b − a to the nearest periodic image.
@@ -336,54 +421,29 @@ class Gas {
 
   static constexpr double infinity = std::numeric_limits<double>::infinity();
 
-  static double standard_error(const std::vector<double>& x) {
-    if (x.size() < 2) return 0;
-    double mean = 0;
-    for (double v : x) mean += v;
-    mean /= static_cast<double>(x.size());
-    double squares = 0;
-    for (double v : x) squares += (v - mean) * (v - mean);
-    return std::sqrt(squares / static_cast<double>(x.size() - 1) / static_cast<double>(x.size()));
-  }
+  // A callback that does nothing: a run without one compiles to the loop it was before.
+  static void ignore_collision(const GasCollision&) {}
 
-  void place_on_lattice() {
-    const std::size_t n = lattice_cells(D, options_.balls);
-    const double spacing = side_ / static_cast<double>(n);
-    std::size_t placed = 0;
-    if constexpr (D == 2) {
-      for (std::size_t i = 0; i < n && placed < options_.balls; ++i) {
-        for (std::size_t j = 0; j < n && placed < options_.balls; ++j) {
-          ball_[placed++].position =
-              Vector((static_cast<double>(i) + 0.5) * spacing, (static_cast<double>(j) + 0.5) * spacing);
-        }
-      }
-    } else {
-      const double basis[4][3] = {
-          {0.25, 0.25, 0.25}, {0.75, 0.75, 0.25}, {0.75, 0.25, 0.75}, {0.25, 0.75, 0.75}};
-      for (std::size_t i = 0; i < n && placed < options_.balls; ++i) {
-        for (std::size_t j = 0; j < n && placed < options_.balls; ++j) {
-          for (std::size_t k = 0; k < n && placed < options_.balls; ++k) {
-            for (int b = 0; b < 4 && placed < options_.balls; ++b) {
-              ball_[placed++].position = Vector((static_cast<double>(i) + basis[b][0]) * spacing,
-                                                (static_cast<double>(j) + basis[b][1]) * spacing,
-                                                (static_cast<double>(k) + basis[b][2]) * spacing);
-            }
+  // No two balls closer than a diameter (less 1e-9 of one) on their nearest images: each ball against
+  // the balls of the 3^D cells around its own, which hold every ball within a diameter of it.
+  void check_no_overlap() const {
+    const double closest = diameter_ * (1 - 1e-9);
+    for (std::size_t i = 0; i < ball_.size(); ++i) {
+      Gathered around;
+      gather(own_[i].coordinates, all_axes, 0, around);
+      for (int n = 0; n < around.cells; ++n) {
+        for (std::uint32_t j = around.first[n]; j != none; j = ball_[j].next) {
+          if (j <= i) continue;
+          const double distance = nearest_image(ball_[i].position, ball_[j].position).norm();
+          if (distance < closest) {
+            std::ostringstream text;
+            text << "balls " << i << " and " << j << " overlap: their centres are " << distance
+                 << " apart on their nearest images, expected at least a diameter (" << diameter_ << ")";
+            throw std::invalid_argument(text.str());
           }
         }
       }
     }
-  }
-
-  void draw_velocities() {
-    std::mt19937_64 random(options_.seed);
-    std::normal_distribution<double> gaussian;
-    for (Ball& b : ball_) {
-      for (int k = 0; k < D; ++k) b.velocity[k] = gaussian(random);
-    }
-    const Vector mean = momentum() / static_cast<double>(ball_.size());
-    for (Ball& b : ball_) b.velocity -= mean;
-    const double scale = 1 / std::sqrt(temperature());
-    for (Ball& b : ball_) b.velocity *= scale;
   }
 
   // The cells' numbering, in tiles of tile^D cells: tile after tile, the first axis fastest, and
@@ -516,7 +576,7 @@ class Gas {
   // it along `axis`) and their lists' first balls. The cells, their heads and their first balls are
   // asked of memory all at once before any is read: beyond the caches the misses then overlap instead
   // of following one another.
-  void gather(const Cell& centre, int axis, int step, Gathered& gathered) {
+  void gather(const Cell& centre, int axis, int step, Gathered& gathered) const {
     constexpr int around = D == 2 ? 9 : 27;
     std::uint32_t* first = gathered.first;
     int cells = 0;
@@ -540,7 +600,7 @@ class Gas {
       }
       std::size_t cell[around];
       const auto add = [&](std::size_t index) {
-        prefetch(&head_[index]);
+        detail::prefetch(&head_[index]);
         cell[cells++] = index;
       };
       // The first axis fastest (cell_index's order within a tile; where ties between equal times are
@@ -555,7 +615,7 @@ class Gas {
       }
       for (int n = 0; n < cells; ++n) {
         first[n] = head_[cell[n]];
-        if (first[n] != none) prefetch(&ball_[first[n]]);
+        if (first[n] != none) detail::prefetch(&ball_[first[n]]);
       }
     }
     gathered.cells = cells;
@@ -576,7 +636,7 @@ class Gas {
         // A pair moving apart never meets (time_of_impact would say +∞): skip the call.
         if (p.dot(ball_[j].velocity - ball_[i].velocity) >= 0) continue;
         const double t =
-            billiards::time_of_impact(Vector::Zero().eval(), ball_[i].velocity, p, ball_[j].velocity, 1.0);
+            billiards::time_of_impact(Vector::Zero().eval(), ball_[i].velocity, p, ball_[j].velocity, diameter_);
         if (now_ + t < own.collision_time) {
           own.collision_time = now_ + t;
           own.partner = j;
@@ -594,11 +654,11 @@ class Gas {
   void prefetch_next_events() {
     calendar_.look_ahead(2, [this](std::uint32_t k, int ahead) {
       if (ahead > 1) {
-        prefetch(&own_[k]);
-        prefetch(&ball_[k]);
+        detail::prefetch(&own_[k]);
+        detail::prefetch(&ball_[k]);
       } else if (const Own& own = own_[k]; !own.crossing_first()) {
-        prefetch(&own_[own.partner]);
-        prefetch(&ball_[own.partner]);
+        detail::prefetch(&own_[own.partner]);
+        detail::prefetch(&ball_[own.partner]);
         calendar_.prefetch_record(own.partner);
         if constexpr (D == 2) {  // the 5 × 5 cells around ball k hold both balls' neighbourhoods
           const int low[D] = {own.coordinates[0] - 2, own.coordinates[1] - 2};
@@ -607,8 +667,8 @@ class Gas {
         }
       } else if constexpr (D == 2) {  // a crossing (in 3-D neither prefetch below measured faster)
         const Ball& ball = ball_[k];  // its neighbours in its cell's list, which its removal writes
-        if (ball.previous != none) prefetch(&ball_[ball.previous]);
-        if (ball.next != none) prefetch(&ball_[ball.next]);
+        if (ball.previous != none) detail::prefetch(&ball_[ball.previous]);
+        if (ball.next != none) detail::prefetch(&ball_[ball.next]);
         int low[D] = {own.coordinates[0] - 1, own.coordinates[1] - 1};  // the cells that come around it
         int high[D] = {own.coordinates[0] + 1, own.coordinates[1] + 1};
         low[own.axis] = high[own.axis] = own.coordinates[own.axis] + 2 * own.step;
@@ -627,7 +687,7 @@ class Gas {
       std::size_t index = 0;
       for (int a = 0; a < D; ++a)
         index += axis_offset_[a][wrapped((corner >> a & 1) != 0 ? high[a] : low[a])];
-      prefetch(&head_[index]);
+      detail::prefetch(&head_[index]);
     }
   }
 
@@ -665,16 +725,19 @@ class Gas {
       if (placed_[start]) continue;
       const Ball first_ball = ball_[start];
       const Own first_own = own_[start];
+      const std::uint32_t first_identity = identity_[start];
       for (std::size_t k = start;;) {
         placed_[k] = true;
         const std::size_t from = order[k];
         if (from == start) {
           ball_[k] = first_ball;
           own_[k] = first_own;
+          identity_[k] = first_identity;
           break;
         }
         ball_[k] = ball_[from];
         own_[k] = own_[from];
+        identity_[k] = identity_[from];
         k = from;
       }
     }
@@ -686,12 +749,12 @@ class Gas {
     refile();
   }
 
-  // Runs events until `collisions` more collisions; accumulates the virial where `measure`.
-  void advance(std::uint64_t collisions, bool measure) {
-    if (ball_.size() >= look_ahead_from)
-      advance_beyond_caches(collisions, measure);
-    else
-      run_events<false>(collisions, measure);
+  // Runs events until `collisions` more collisions or until the next event lies beyond `until`, calling
+  // `on_collision` after each collision; returns the collisions run.
+  template <typename OnCollision>
+  std::uint64_t advance(std::uint64_t collisions, double until, OnCollision& on_collision) {
+    if (ball_.size() >= look_ahead_from) return advance_beyond_caches(collisions, until, on_collision);
+    return run_events<false>(collisions, until, on_collision);
   }
 
   // Beyond the caches, each event gathers the cells its predictions will search at its start, before
@@ -702,22 +765,25 @@ class Gas {
   // calls inlined (flatten), kept out of the loop of smaller gases, whose code stays as it was. 10^6
   // disks 17 % more collisions a second (9 % of it the flattening), 10^6 spheres 10 %, 10^5 disks 13 %,
   // 1024 balls even (alternating separate processes on one core).
-  [[gnu::noinline, gnu::flatten]] void advance_beyond_caches(std::uint64_t collisions, bool measure) {
-    run_events<true>(collisions, measure);
+  template <typename OnCollision>
+  [[gnu::noinline, gnu::flatten]] std::uint64_t advance_beyond_caches(std::uint64_t collisions, double until,
+                                                                      OnCollision& on_collision) {
+    return run_events<true>(collisions, until, on_collision);
   }
 
-  template <bool beyond_caches>
-  void run_events(std::uint64_t collisions, bool measure) {
-    const std::uint64_t quiet_limit = options_.max_events_without_collision != 0
-                                          ? options_.max_events_without_collision
-                                          : 1000000 + 100 * static_cast<std::uint64_t>(options_.balls);
-    std::uint64_t quiet = 0;
-    for (std::uint64_t done = 0; done < collisions;) {
+  template <bool beyond_caches, typename OnCollision>
+  std::uint64_t run_events(std::uint64_t collisions, double until, OnCollision& on_collision) {
+    std::uint64_t quiet = 0, done = 0;
+    while (done < collisions) {
       const std::uint32_t earliest = calendar_.earliest();
-      if (earliest == EventCalendar::none) throw NoCollisions("no ball has a next event");
+      if (earliest == EventCalendar::none) {
+        if (until < infinity) break;  // no event ever: the run reaches `until` all the same
+        throw NoCollisions("no ball has a next event");
+      }
       const std::size_t i = earliest;
-      if constexpr (beyond_caches) prefetch_next_events();
       Own& own = own_[i];
+      if (own.event_time() > until) break;
+      if constexpr (beyond_caches) prefetch_next_events();
       now_ = own.event_time();
       if (own.crossing_first()) {  // a cell crossing
         Gathered gathered;
@@ -752,8 +818,8 @@ class Gas {
         bring_to_now(j);
         const Vector image = ball_[i].position + nearest_image(ball_[i].position, ball_[j].position);
         const double distance = (image - ball_[i].position).norm();
-        largest_overlap_ = std::max(largest_overlap_, 1 - distance);
-        largest_gap_ = std::max(largest_gap_, distance - 1);
+        largest_overlap_ = std::max(largest_overlap_, (diameter_ - distance) / diameter_);
+        largest_gap_ = std::max(largest_gap_, (distance - diameter_) / diameter_);
         const auto [vi, vj] = billiards::collide_if_approaching(1.0, ball_[i].position, ball_[i].velocity,
                                                                 1.0, image, ball_[j].velocity);
         const Vector impulse = vi - ball_[i].velocity;
@@ -771,9 +837,11 @@ class Gas {
         calendar_.update(static_cast<std::uint32_t>(i), own_[i].event_time());
         calendar_.update(static_cast<std::uint32_t>(j), own_[j].event_time());
         if (changed) {
-          if (measure) virial_ += (ball_[i].position - image).dot(impulse);
+          virial_ += (ball_[i].position - image).dot(impulse);
           ++done;
+          ++collisions_;
           quiet = 0;
+          on_collision(GasCollision{now_, identity_[i], identity_[j]});
           // Every N collisions: the calendar's width fitted to the times again, and for large gases
           // the balls renumbered by cell.
           if (++since_refile_ >= ball_.size()) {
@@ -785,15 +853,17 @@ class Gas {
           }
         }
       }
-      if (++quiet > quiet_limit) {
-        throw NoCollisions("stopped after " + std::to_string(quiet_limit) +
+      if (++quiet > quiet_limit_) {
+        throw NoCollisions("stopped after " + std::to_string(quiet_limit_) +
                            " events in a row without a collision: the balls' paths do not meet");
       }
     }
+    return done;
   }
 
-  Options options_;
+  double radius_ = 0.5, diameter_ = 1, mass_ = 1;
   double side_ = 0, cell_width_ = 0, now_ = 0;
+  std::uint64_t quiet_limit_ = 0;
   int cells_per_side_ = 0;
   // What a prediction reads of each neighbour, in one place, one cache line (a disk's record is 64 bytes
   // without the alignment too: Eigen aligns a 2-vector to 16 bytes, so its velocity starts at byte 32):
@@ -804,8 +874,8 @@ class Gas {
     Vector velocity = Vector::Zero();
     std::uint32_t next = none, previous = none;
   };
-  Array<Ball> ball_;
-  Array<std::uint32_t> head_;                  ///< each cell's first ball (a tile's heads share cache lines)
+  detail::Array<Ball> ball_;
+  detail::Array<std::uint32_t> head_;                  ///< each cell's first ball (a tile's heads share cache lines)
   static constexpr std::size_t tile = 4;       ///< cells a tile has along each axis
   std::vector<std::uint32_t> axis_offset_[D];  ///< cell_index's term for each axis and coordinate
   // What an event reads of its own ball, in one place (one cache line): its next crossing, its earliest
@@ -823,27 +893,194 @@ class Gas {
     double event_time() const { return std::min(crossing_time, collision_time); }
     bool crossing_first() const { return !(collision_time < crossing_time); }
   };
-  Array<Own> own_;
+  detail::Array<Own> own_;
   // Kept between passes of reorder() and refile(), so that they touch no fresh memory.
   std::vector<std::uint32_t> order_, renumbered_;
   std::vector<bool> placed_;
   std::vector<double> event_times_;
   EventCalendar calendar_;
-  std::uint64_t crossings_ = 0, since_refile_ = 0;
+  detail::Array<std::uint32_t> identity_;  ///< each ball's index in the setup (the balls are renumbered by cell)
+  std::uint64_t crossings_ = 0, since_refile_ = 0, collisions_ = 0;
   std::uint64_t collision_number_ = 0;               ///< collisions resolved so far, every event's included
   static constexpr std::size_t reorder_from = 4096;  ///< fewer balls stay in the caches anyway
   /// From here the balls lie beyond the caches and the look ahead pays (10^4 disks: 2 % slower with it,
   /// 10^5: 12–16 % faster; at 1024 it costs 10 %).
   static constexpr std::size_t look_ahead_from = std::size_t{1} << 15;
-  double virial_ = 0, largest_overlap_ = 0, largest_gap_ = 0, initial_temperature_ = 1,
-         largest_temperature_change_ = 0;
+  // Σ r_ij·Δv_i over the span's collisions (times the mass, the virial), and where the span began.
+  double virial_ = 0, span_start_ = 0, span_temperature_ = 0;
+  std::uint64_t span_collisions_ = 0, span_crossings_ = 0;
+  double largest_overlap_ = 0, largest_gap_ = 0;
 };
 
-/// Validates `options`, runs the gas of its dimension and returns what it measured.
-inline Result run(const Options& options) {
-  validate(options);
-  if (options.dimension == 2) return Gas<2>(options).run();
-  return Gas<3>(options).run();
+/// Validates a gas's setup; see the declaration above.
+template <int D>
+void validate(const GasSetup<D>& setup) {
+  const auto fail = [](const std::string& text) { throw std::invalid_argument("gas setup: " + text); };
+  const auto positive = [&](const char* name, double value) {
+    if (!(value > 0) || !std::isfinite(value)) {
+      std::ostringstream text;
+      text << name << " is " << value << ", expected a positive finite number";
+      fail(text.str());
+    }
+  };
+  const std::size_t n = setup.balls.size();
+  if (n < 2 || n > (std::size_t{1} << 31)) {
+    fail("balls holds " + std::to_string(n) + " balls, expected from 2 to 2^31");
+  }
+  positive("radius", setup.radius);
+  positive("mass", setup.mass);
+  positive("side", setup.side);
+  const double diameters = setup.side / (2 * setup.radius);
+  if (!(diameters >= 3) || !(diameters <= gas::largest_box_side())) {
+    std::ostringstream text;
+    text << "side is " << setup.side << ", " << diameters << " diameters, expected from 3 diameters (the cell "
+         << "grid's neighbours distinct) to " << gas::largest_box_side()
+         << " (wider boxes round positions by more than 1e-9 of a diameter)";
+    fail(text.str());
+  }
+  const double limit = billiards::component_limit<double>();
+  for (std::size_t i = 0; i < n; ++i) {
+    const Ball<D>& ball = setup.balls[i];
+    std::ostringstream text;
+    if (!ball.position.allFinite()) {
+      text << "balls[" << i << "].position is not finite, expected finite coordinates";
+      fail(text.str());
+    }
+    if (!ball.velocity.allFinite() || ball.velocity.cwiseAbs().maxCoeff() > limit) {
+      text << "balls[" << i << "].velocity has a component of " << ball.velocity.cwiseAbs().maxCoeff()
+           << ", expected finite components of magnitude at most " << limit << " (billiards::component_limit)";
+      fail(text.str());
+    }
+  }
 }
 
-}  // namespace billiards_example::gas
+namespace gas {
+
+/// The lattice start of `options` (validated: std::invalid_argument naming the option): N balls of
+/// diameter 1 and mass 1 on a square (2-D) or FCC (3-D) lattice filling the box of packing fraction η,
+/// with Gaussian velocities of total momentum zero, rescaled to kT = 1.
+template <int D>
+GasSetup<D> lattice(const Options& options) {
+  validate(options);
+  if (options.dimension != D) {
+    throw std::invalid_argument("--dimension is " + std::to_string(options.dimension) + ", expected " +
+                                std::to_string(D) + " for gas::lattice<" + std::to_string(D) + ">");
+  }
+  using Vector = Eigen::Matrix<double, D, 1>;
+  GasSetup<D> setup;
+  setup.side = box_side(D, options.balls, options.packing_fraction);
+  setup.balls.resize(options.balls);
+  const std::size_t n = lattice_cells(D, options.balls);
+  const double spacing = setup.side / static_cast<double>(n);
+  std::size_t placed = 0;
+  if constexpr (D == 2) {
+    for (std::size_t i = 0; i < n && placed < options.balls; ++i) {
+      for (std::size_t j = 0; j < n && placed < options.balls; ++j) {
+        setup.balls[placed++].position =
+            Vector((static_cast<double>(i) + 0.5) * spacing, (static_cast<double>(j) + 0.5) * spacing);
+      }
+    }
+  } else {
+    const double basis[4][3] = {{0.25, 0.25, 0.25}, {0.75, 0.75, 0.25}, {0.75, 0.25, 0.75}, {0.25, 0.75, 0.75}};
+    for (std::size_t i = 0; i < n && placed < options.balls; ++i) {
+      for (std::size_t j = 0; j < n && placed < options.balls; ++j) {
+        for (std::size_t k = 0; k < n && placed < options.balls; ++k) {
+          for (int b = 0; b < 4 && placed < options.balls; ++b) {
+            setup.balls[placed++].position = Vector((static_cast<double>(i) + basis[b][0]) * spacing,
+                                                    (static_cast<double>(j) + basis[b][1]) * spacing,
+                                                    (static_cast<double>(k) + basis[b][2]) * spacing);
+          }
+        }
+      }
+    }
+  }
+  std::mt19937_64 random(options.seed);
+  std::normal_distribution<double> gaussian;
+  for (Ball<D>& b : setup.balls) {
+    for (int k = 0; k < D; ++k) b.velocity[k] = gaussian(random);
+  }
+  Eigen::Matrix<long double, D, 1> momentum = Eigen::Matrix<long double, D, 1>::Zero();
+  for (const Ball<D>& b : setup.balls) momentum += b.velocity.template cast<long double>();
+  const Vector mean = momentum.template cast<double>() / static_cast<double>(options.balls);
+  for (Ball<D>& b : setup.balls) b.velocity -= mean;
+  long double squares = 0;
+  for (const Ball<D>& b : setup.balls) squares += static_cast<long double>(b.velocity.squaredNorm());
+  const double scale =
+      1 / std::sqrt(static_cast<double>(squares / (D * static_cast<long double>(options.balls))));
+  for (Ball<D>& b : setup.balls) b.velocity *= scale;
+  return setup;
+}
+
+/// The standard error of the mean of `x` (0 for fewer than two values).
+inline double standard_error(const std::vector<double>& x) {
+  if (x.size() < 2) return 0;
+  double mean = 0;
+  for (double v : x) mean += v;
+  mean /= static_cast<double>(x.size());
+  double squares = 0;
+  for (double v : x) squares += (v - mean) * (v - mean);
+  return std::sqrt(squares / static_cast<double>(x.size() - 1) / static_cast<double>(x.size()));
+}
+
+/// Runs `options.equilibrate` collisions of `gas` unmeasured, then `options.events` measured in ten
+/// blocks, and returns what was measured, with errors from the scatter of the blocks.
+template <int D>
+Result measure(Gas<D>& gas, const Options& options) {
+  gas.run_collisions(options.equilibrate);
+  constexpr int blocks = 10;
+  const double kT = gas.temperature(), n = static_cast<double>(gas.size());
+  Result r;
+  r.dimension = D;
+  r.balls = gas.size();
+  r.packing_fraction = options.packing_fraction;
+  std::vector<double> z_blocks, rate_blocks;
+  double total_virial = 0;
+  const auto wall_start = std::chrono::steady_clock::now();
+  std::uint64_t done = 0;
+  for (int b = 0; b < blocks; ++b) {
+    const std::uint64_t target = options.events * static_cast<std::uint64_t>(b + 1) / blocks;
+    gas.reset_measurements();
+    gas.run_collisions(target - done);
+    done = target;
+    const GasMeasurement block = gas.measured();
+    total_virial += block.virial;
+    r.time += block.time;
+    r.cell_crossings += block.cell_crossings;
+    r.largest_temperature_change =
+        std::max(r.largest_temperature_change, std::fabs(gas.temperature() - kT) / kT);
+    if (block.time > 0 && block.collisions > 0) {
+      z_blocks.push_back(block.compressibility_factor);
+      rate_blocks.push_back(block.compressibility_factor_from_collision_rate);
+    }
+  }
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
+  r.collisions = done;
+  r.temperature = gas.temperature();
+  r.momentum = gas.momentum().norm();
+  r.largest_overlap = gas.largest_overlap();
+  r.largest_gap = gas.largest_gap();
+  r.events_per_second = seconds > 0 ? static_cast<double>(done) / seconds : 0;
+  r.compressibility_factor = r.time > 0 ? 1 + total_virial / (D * n * kT * r.time) : 1;
+  r.mean_free_time =
+      done > 0 ? r.time * n / (2 * static_cast<double>(done)) : std::numeric_limits<double>::infinity();
+  r.compressibility_factor_from_collision_rate =
+      done > 0 ? 1 + 2 * gas.radius() * std::sqrt(std::numbers::pi * gas.mass() / kT) / (2 * D * r.mean_free_time)
+               : 1;
+  r.compressibility_factor_error = standard_error(z_blocks);
+  r.compressibility_factor_from_collision_rate_error = standard_error(rate_blocks);
+  return r;
+}
+
+/// Validates `options`, runs the lattice gas of its dimension and returns what it measured.
+inline Result measure(const Options& options) {
+  validate(options);
+  if (options.dimension == 2) {
+    Gas<2> gas(lattice<2>(options), options.max_events_without_collision);
+    return measure(gas, options);
+  }
+  Gas<3> gas(lattice<3>(options), options.max_events_without_collision);
+  return measure(gas, options);
+}
+
+}  // namespace gas
+}  // namespace billiards::simulation

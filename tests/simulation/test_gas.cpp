@@ -1,8 +1,8 @@
-// The hard-sphere gas of examples/gas.hpp against results no one here wrote: the equations of state
+// The hard-sphere gas of billiards/simulation/gas.hpp against results no one here wrote: the equations of state
 // of Henderson (disks) and Carnahan and Starling (spheres), the virial series at low density, the
 // identity that ties the virial to the collision rate; conservation of energy and momentum; no overlap,
 // checked over every pair at the end; every collision taken at contact; and the arguments it rejects.
-#include "gas.hpp"
+#include <billiards/simulation/gas.hpp>
 
 #include <catch2/catch.hpp>
 
@@ -11,7 +11,8 @@
 #include <numbers>
 #include <string>
 
-namespace gas = billiards_example::gas;
+namespace gas = billiards::simulation::gas;
+using billiards::simulation::Gas;
 
 namespace {
 
@@ -57,7 +58,7 @@ void check_conservation(const gas::Result& r) {
 
 TEST_CASE("spheres follow Carnahan-Starling from dilute to dense fluid", "[gas]") {
   for (const double eta : {0.1, 0.3, 0.45}) {
-    const gas::Result r = gas::run(options(3, 500, eta, 150000, 50000));
+    const gas::Result r = gas::measure(options(3, 500, eta, 150000, 50000));
     check_z(r, gas::carnahan_starling(eta), 0.01);
     check_identity(r);
     check_conservation(r);
@@ -66,7 +67,7 @@ TEST_CASE("spheres follow Carnahan-Starling from dilute to dense fluid", "[gas]"
 
 TEST_CASE("disks follow Henderson's equation of state up to the dense fluid", "[gas]") {
   for (const double eta : {0.1, 0.4, 0.6}) {
-    const gas::Result r = gas::run(options(2, 400, eta, 150000, 50000));
+    const gas::Result r = gas::measure(options(2, 400, eta, 150000, 50000));
     check_z(r, gas::henderson(eta), 0.015);
     check_identity(r);
     check_conservation(r);
@@ -76,15 +77,15 @@ TEST_CASE("disks follow Henderson's equation of state up to the dense fluid", "[
 TEST_CASE("at low density Z follows the virial series", "[gas]") {
   // Spheres: B2..B5 in powers of η, 4, 10, 18.365, 28.224; disks: 2, 3.1280, 4.2579.
   const double eta = 0.05;
-  const gas::Result spheres = gas::run(options(3, 500, eta, 100000, 20000));
+  const gas::Result spheres = gas::measure(options(3, 500, eta, 100000, 20000));
   check_z(spheres, 1 + 4 * eta + 10 * eta * eta + 18.365 * std::pow(eta, 3) + 28.224 * std::pow(eta, 4),
           0.005);
-  const gas::Result disks = gas::run(options(2, 400, eta, 100000, 20000));
+  const gas::Result disks = gas::measure(options(2, 400, eta, 100000, 20000));
   check_z(disks, 1 + 2 * eta + 3.128 * eta * eta + 4.2579 * std::pow(eta, 3), 0.005);
 }
 
 TEST_CASE("a million collisions keep the energy, the momentum and the spheres apart", "[gas]") {
-  const gas::Result r = gas::run(options(3, 1000, 0.3, 1000000, 10000));
+  const gas::Result r = gas::measure(options(3, 1000, 0.3, 1000000, 10000));
   CHECK(r.collisions == 1000000);
   check_conservation(r);
 }
@@ -93,7 +94,7 @@ TEST_CASE("a gas beyond the caches, where each event prefetches the next ones, k
   // 40000 disks: above the 2^15 balls from which the gas looks ahead in its calendar (and above the
   // 4096 from which it renumbers the balls by cell), so these paths run here and under the sanitizers.
   for (const int dimension : {2, 3}) {
-    const gas::Result r = gas::run(options(dimension, 40000, 0.3, 120000, 40000));
+    const gas::Result r = gas::measure(options(dimension, 40000, 0.3, 120000, 40000));
     INFO(dimension << "-D");
     CHECK(r.collisions == 120000);
     check_conservation(r);
@@ -105,8 +106,8 @@ TEST_CASE("no pair overlaps at the end: no collision was missed", "[gas]") {
   for (const int dimension : {2, 3}) {
     const auto check = [&](auto gas_of_dimension) {
       auto& g = gas_of_dimension;
-      (void)g.run();
-      const auto positions = g.positions_now();
+      (void)gas::measure(g, options(dimension, 300, dimension == 2 ? 0.5 : 0.4, 20000, 1000));
+      const auto positions = g.positions();
       double closest = g.side();
       for (std::size_t i = 0; i < positions.size(); ++i) {
         for (std::size_t j = i + 1; j < positions.size(); ++j) {
@@ -117,9 +118,9 @@ TEST_CASE("no pair overlaps at the end: no collision was missed", "[gas]") {
       CHECK(closest > 1 - 1e-9);
     };
     if (dimension == 2)
-      check(gas::Gas<2>(options(2, 300, 0.5, 20000, 1000)));
+      check(Gas<2>(gas::lattice<2>(options(2, 300, 0.5, 20000, 1000))));
     else
-      check(gas::Gas<3>(options(3, 300, 0.4, 20000, 1000)));
+      check(Gas<3>(gas::lattice<3>(options(3, 300, 0.4, 20000, 1000))));
   }
 }
 
@@ -160,6 +161,6 @@ TEST_CASE("a dilute gas's cell grid follows the balls, not the box", "[gas]") {
   CHECK(gas::grid_cells_per_side(2, 1000, gas::box_side(2, 1000, 1e-8)) == 4096);
   CHECK(gas::grid_cells_per_side(3, std::size_t(1) << 31, gas::box_side(3, std::size_t(1) << 31, 0.3)) ==
         1290);
-  const gas::Gas<3> dilute(options(3, 1000, 1e-12, 1, 0));
+  const Gas<3> dilute(gas::lattice<3>(options(3, 1000, 1e-12, 1, 0)));
   CHECK(dilute.cells_per_side() == 256);
 }
