@@ -179,7 +179,7 @@ template <typename Scalar, Dropped dropped>
 template <typename Scalar>
 using Spinning = billiards::Collision<billiards::SpinningBall<Scalar>>;
 
-// Friction, by hand as the issue prints it: J_n = (1 + e) m1 m2/(m1 + m2) |s|, k = (7/2)(1/m1 + 1/m2),
+// Friction, by hand as it is usually written: J_n = (1 + e) m1 m2/(m1 + m2) |s|, k = (7/2)(1/m1 + 1/m2),
 // j = min(μ J_n, |u_t|/k), J = J_n n − j û_t on ball 2, Δω = (5 j/(2 m R)) (n × û_t).
 template <typename Scalar>
 Spinning<Scalar> friction_formula(const Case<Scalar>& c) {

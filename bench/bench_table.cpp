@@ -1,7 +1,7 @@
-// Events per second of the event-driven table in examples/ as the number of balls grows, at a
-// constant density (the area per ball of 16 balls on a 9-ft table). Each event re-predicts the one or
-// two balls it changed against every other ball: O(N) per event, naive all-pairs prediction (see the
-// README for why). Overlap is checked for the event's balls only here (O(N)); the example program
+// Events per second of the event-driven table of billiards::simulation as the number of balls grows, at
+// a constant density (the area per ball of 16 balls on a 9-ft table). Each event re-predicts the one or
+// two balls it changed against every other ball: O(N) per event, all-pairs prediction (see
+// docs/simulations.md for why). Overlap is checked for the event's balls only here (O(N)); the program
 // checks every pair by default.
 #include <billiards/simulation/gas.hpp>
 #include <billiards/simulation/table.hpp>

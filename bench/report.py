@@ -238,7 +238,7 @@ def table_events(runs):
 
 
 def gas_events(runs):
-    """The hard-sphere gas (examples/gas.hpp): collisions per second against N, beside the table."""
+    """The hard-sphere gas (billiards::simulation::Gas): collisions per second against N, beside the table."""
     sizes = sorted({int(name.split("/")[-1]) for name in runs if name.startswith("gas/events/")})
     if not sizes:
         return "(not in this run)"
@@ -402,9 +402,9 @@ its ratio to the plain form by hand (none of these forms is offered to users):
   which keeps a heavy ball's subnormal change to its last digits and gives every 2^k d the same bits;
 - no promise kept: also the plain kernel straight away, without the mass-range test (wrong, even ∞ or
   NaN, for a mass outside [plain_mass_low, plain_mass_high], an immovable +∞ included), and the
-  update as v + c n, one multiply-add, which turns an unchanged −0 into +0 (issue 12). What is left
+  update as v + c n, one multiply-add, which turns an unchanged −0 into +0. What is left
   against the plain form is the generated kernel's own form (two divisions by one sum, which give
-  equal masses their exact (1 + e)/2, issue 3) and the code the compiler makes of it.
+  equal masses their exact (1 + e)/2) and the code the compiler makes of it.
 
 {promise_steps(runs)}
 
@@ -432,9 +432,9 @@ step's time a pair, and in brackets its ratio to the step before:
 
 1. `plain_batch/*`: the paper's formula, one division by m1 + m2 and a multiply-add a component;
 2. `plain_batch_keeping_zero_signs/*`: the update v − (0 − c n), which leaves an unchanged velocity's
-   bits alone, −0 included (issue 12);
+   bits alone, −0 included;
 3. `plain_batch_generated_form/*`: the generated plain kernel, 2 m2/(m1 + m2) and 2 m1/(m1 + m2), two
-   divisions by one sum, which give equal masses their exact exchange (issue 3): collide_batch's pass;
+   divisions by one sum, which give equal masses their exact exchange: collide_batch's pass;
 4. `batch/*`: collide_batch itself, which also tests the masses' range before each block of 4096 pairs
    to pick the plain kernel or the full one for it.
 
@@ -447,7 +447,7 @@ step's time a pair, and in brackets its ratio to the step before:
 - `billiards-derive`: {derive_text}
 - A clean build: {args.clean_build or "(not measured in this run)"}
 
-## The event-driven table (examples/), events per second as the balls grow
+## The event-driven table (billiards::simulation::Table), events per second as the balls grow
 
 At a constant density (the area per ball of 16 balls on a 9-ft table); each event re-predicts the one
 or two balls it changed against every other ball (naive all-pairs prediction), so the cost per event
@@ -455,7 +455,7 @@ grows as O(N): the last column should grow about as the number of balls.
 
 {table_events(runs)}
 
-## The hard-sphere gas (examples/gas.hpp), events per second as the balls grow
+## The hard-sphere gas (billiards::simulation::Gas), events per second as the balls grow
 
 At packing fraction 0.3, equilibrated for max(N, 20 000) collisions first; each event predicts only
 against the balls of the neighbouring cells and its next event is filed in a calendar queue (O(1)), so

@@ -8,9 +8,9 @@
 // Exit status: 0 on success; 2 on a bad command line (one line on stderr naming the argument, its value
 // and what was expected, or --balls beyond the memory it can have); 3 when the JSON file or standard
 // output cannot be written; 4 when the run stops because the balls' paths do not meet.
+#include <billiards/simulation/gas.hpp>
 #include <billiards_support/cli_checks.hpp>
 #include <billiards_support/standard_output.hpp>
-#include <billiards/simulation/gas.hpp>
 
 #include <billiards_support/atomic_file.hpp>
 

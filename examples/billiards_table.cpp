@@ -1,5 +1,5 @@
-// billiards-table: the event-driven table of billiards::simulation (billiards/simulation/table.hpp), run for a
-// number of ball–ball collisions; prints the relative drift of the kinetic energy and the events per
+// billiards-table: the event-driven table of billiards::simulation (billiards/simulation/table.hpp), run for
+// a number of ball–ball collisions; prints the relative drift of the kinetic energy and the events per
 // second, and can draw the trajectories as SVG.
 //
 //   billiards-table [--balls N] [--width W] [--height H] [--radius R] [--seed S] [--collisions C]
@@ -29,7 +29,8 @@
 
 int main(int argc, char** argv) {
   using namespace billiards::simulation;
-  using billiards_example::read_setup_file, billiards_example::Trajectories, billiards_support::write_file_atomically;
+  using billiards_example::read_setup_file, billiards_example::Trajectories,
+      billiards_support::write_file_atomically;
   using billiards_support::count_at_least, billiards_support::finite_number, billiards_support::path_given;
   CLI::App app{
       "An event-driven billiards table on billiards::runtime: runs C ball-ball collisions and reports "

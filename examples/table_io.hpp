@@ -35,7 +35,6 @@ using billiards::simulation::TableEvent;
 using billiards::simulation::TableSetup;
 using billiards::simulation::TableVector;
 
-
 /// Limits on what a setup file may hold, so that a hostile file (/dev/zero, a endless stream) is
 /// rejected promptly instead of growing memory: a line of at most 4096 characters, at most 256 MiB in
 /// all (a million balls take about 40 MB).

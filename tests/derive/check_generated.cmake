@@ -5,5 +5,5 @@ run_derive(${DERIVE} ${WORK}/fresh)
 compare_trees(${GENERATED} ${WORK}/fresh problems)
 if(problems)
   message(FATAL_ERROR "generated/ is stale:\n${problems}"
-                      "Regenerate it: ./build/derive/billiards-derive --out generated (see README).")
+                      "Regenerate it: ./build/derive/billiards-derive --out generated (see docs/code_generation.md).")
 endif()

@@ -71,10 +71,10 @@ const std::vector<Mutation>& paper_mutations() {
        [](Kernel& k) { step(k, "contact_time").guards.at(2).condition = symbol(k, "pv") <= 0; }},
       {"cushion_output_negated", "cushion_normal_velocity_change",
        [](Kernel& k) { k.outputs.at(0) = -k.outputs.at(0); }},
-      // Beyond the eleven the issue names.
+      // Beyond the first eleven.
       {"time_of_impact_touching_value", "time_of_impact",
        [](Kernel& k) { step(k, "contact_time").guards.at(0).alternative = 1; }},
-      // √ of 0 where D ≤ 0 (issue 14): only where the time is +∞ anyway, and never passed off as the
+      // √ of 0 where D ≤ 0: only where the time is +∞ anyway, and never passed off as the
       // same value.
       {"time_of_impact_root_clamped_under_another_condition", "time_of_impact",
        [](Kernel& k) {
@@ -90,7 +90,7 @@ const std::vector<Mutation>& paper_mutations() {
        [](Kernel& k) { k.claims.push_back("cushion.no_such_claim"); }},
       {"equals_an_unverified_claim", "elastic_normal_velocity_change",
        [](Kernel& k) { k.equals = "assumption.tangential_velocity_unchanged"; }},
-      // The fast path (issue 14): its plain kernels and the way the full kernels take them.
+      // The fast path: its plain kernels and the way the full kernels take them.
       {"plain_coefficient_mass_swapped", "plain_elastic_normal_velocity_change",
        [](Kernel& k) {
          step(k, "first_impulse_coefficient").expression =
@@ -126,7 +126,7 @@ const std::vector<Mutation>& spin_mutations() {
        }},
       {"heavier_mass_guard_keeps_the_lighter", "normal_impulse",
        [](Kernel& k) { step(k, "heavier_mass").guards.at(0).alternative = symbol(k, "m2"); }},
-      // The scaling by powers of two (issue 14): a significand not scaled back, an exponent's sign.
+      // The scaling by powers of two: a significand not scaled back, an exponent's sign.
       {"normal_impulse_not_scaled_back", "normal_impulse",
        [](Kernel& k) { k.outputs.at(0) = -(1 + symbol(k, "restitution")) * symbol(k, "scaled_impulse"); }},
       {"normal_impulse_speed_exponent_subtracted", "normal_impulse",
@@ -168,7 +168,7 @@ const std::vector<Mutation>& spin_mutations() {
          Guard& guard = step(k, "bound").guards.at(0);
          guard.condition = guard.condition.lhs() > guard.condition.rhs();
        }},
-      // The plain form over one sum where both masses lie in the plain range (issue 14).
+      // The plain form over one sum where both masses lie in the plain range.
       {"plain_tangential_change_shares_swapped", "plain_tangential_velocity_change",
        [](Kernel& k) { step(k, "first").expression = symbol(k, "bound") * symbol(k, "second_share"); }},
       {"plain_tangential_change_share_of_the_lighter_sum", "plain_tangential_velocity_change",

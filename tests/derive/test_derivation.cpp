@@ -1,7 +1,7 @@
 // The derivation of the paper: every claim verified, one assumption, and perturbed definitions caught.
 #include "audit/audit.hpp"
-#include "run.hpp"
 #include "models/parkin2023/paper.hpp"
+#include "run.hpp"
 
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
@@ -80,7 +80,7 @@ TEST_CASE("The paper's derivation checks out", "[derive][paper]") {
       CHECK_FALSE(std::regex_search(claim.id, std::regex("\\.[0-9]+$")));
     }
   }
-  SECTION("the claims the issue names are all there") {
+  SECTION("the claims the audit promises are all there") {
     for (const char* id : {"split.momentum.2d",
                            "split.momentum.3d",
                            "split.kinetic.2d",
@@ -226,9 +226,9 @@ TEST_CASE("The audit", "[derive][audit]") {
     CHECK(audit.at("ginac") == ginac_version());
     REQUIRE(audit.at("claims").size() == derivation.claims.size());
     for (const auto& claim : audit.at("claims")) {
-      for (const char* key : {"id", "paper", "statement", "method", "verdict", "section", "comparison", "paper_tex",
-                              "paper_latex", "derived_latex", "residual", "failure", "depends_on", "constraints",
-                              "cases", "note"}) {
+      for (const char* key : {"id", "paper", "statement", "method", "verdict", "section", "comparison",
+                              "paper_tex", "paper_latex", "derived_latex", "residual", "failure",
+                              "depends_on", "constraints", "cases", "note"}) {
         INFO(claim.at("id") << ": " << key);
         CHECK(claim.contains(key));
       }
@@ -318,7 +318,8 @@ TEST_CASE("A slip runs billiards-derive to the end: the audit written, every fai
     CHECK(summarize(derivation.claims).failed > 0);
     for (const Claim& claim : derivation.claims) {
       INFO(claim.id);
-      if (claim.verdict == Verdict::failed) CHECK(err_text.str().find("FAILED " + claim.id + ":") != std::string::npos);
+      if (claim.verdict == Verdict::failed)
+        CHECK(err_text.str().find("FAILED " + claim.id + ":") != std::string::npos);
     }
     CHECK(err_text.str().find("KERNEL NOT PROVEN") != std::string::npos);
     fs::remove_all(out);

@@ -117,7 +117,7 @@ TEST_CASE("Every registered model", "[derive][models]") {
   }
 }
 
-TEST_CASE("Every claim id cited in generated/, runtime/ and the README exists and is verified",
+TEST_CASE("Every claim id cited in generated/, runtime/, the README and the guides exists and is verified",
           "[derive][models]") {
   // Verified, or the one kind of claim that is never checked: a stated assumption.
   std::set<std::string> ids, first_segments;
@@ -132,6 +132,9 @@ TEST_CASE("Every claim id cited in generated/, runtime/ and the README exists an
   const std::regex citation("\\b([a-z][a-z0-9_]*)((\\.([a-z0-9_]*\\{[a-z0-9_,]+\\}|[a-z0-9_]+|\\*))+)");
   const fs::path source(BILLIARDS_SOURCE_DIR);
   std::vector<fs::path> files{source / "README.md"};
+  for (const auto& file : fs::directory_iterator(source / "docs")) {
+    if (file.path().extension() == ".md") files.push_back(file.path());
+  }
   for (const fs::path& folder : {source / "generated", source / "runtime" / "include"}) {
     for (const auto& file : fs::recursive_directory_iterator(folder)) {
       if (file.is_regular_file()) files.push_back(file.path());

@@ -1,5 +1,5 @@
 # A short run of billiards-gas as a user runs it: PROGRAM with ARGS (a ;-list) writes its JSON to
-# WORK/gas.json; every field the README names must be there, with Z near the equation of state
+# WORK/gas.json; every field docs/simulations.md names must be there, with Z near the equation of state
 # (EOS, within 3 %), the collision-rate identity within 5 errors, and energy, momentum and overlap kept.
 file(MAKE_DIRECTORY ${WORK})
 file(REMOVE ${WORK}/gas.json)

@@ -6,7 +6,7 @@
 // exponent range for time_of_impact) and a few are not (NaN, infinities, zero or negative masses,
 // non-unit normals). For every accepted input: no crash, no sanitizer report, a finite result (a time
 // ≥ 0 or +∞), and the result within rounding of the same physics computed independently in long
-// double (reference.hpp: the formulas as printed in the README, not the kernels); for elastic
+// double (reference.hpp: the formulas as printed in the guides, not the kernels); for elastic
 // collisions of finite masses, momentum conserved to rounding. The spinning-ball calls are held to
 // spin_reference.hpp's long-double references the same way, with no energy created (to rounding) by a
 // collision or on the cloth. A rejected input must throw billiards::invalid_argument and nothing else.
@@ -113,7 +113,7 @@ class Shaper {
     }
   }
   /// A positive quantity within 2^±(E/4), E the type's largest exponent: where the cloth's phase
-  /// times, a few quotients, cannot underflow or overflow in between (see the README's "Fuzzing").
+  /// times, a few quotients, cannot underflow or overflow in between (see docs/accuracy_and_fuzzing.md).
   template <typename Scalar>
   Scalar moderate() {
     const int quarter = std::numeric_limits<Scalar>::max_exponent / 4;

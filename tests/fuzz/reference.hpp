@@ -1,5 +1,5 @@
 // The fuzz harness's references: each checked call's result computed again in long double, from the
-// formulas as the README prints them (not from the kernels), with the rounding the call may add as an
+// formulas as the guides print them (not from the kernels), with the rounding the call may add as an
 // explicit bound. long double has 11 more bits and a far wider exponent range than double, so the
 // reference neither overflows nor underflows where the calls must not.
 #pragma once

@@ -1,5 +1,5 @@
 // The fuzz harness's references for the spinning-ball calls: collide_with_friction and a ball on the
-// cloth computed again in long double from the formulas as the README and the issue print them (the
+// cloth computed again in long double from the formulas as the guides print them (the
 // impulse J = J_n n − j û_t with j = min(μ J_n, |u_t|/k), k = (7/2)(1/m1 + 1/m2); each phase's closed
 // form), not from the kernels, with the rounding the calls may add as an explicit bound.
 #pragma once

@@ -138,7 +138,7 @@ TEST_CASE("checked::time_of_impact", "[runtime][checked][time_of_impact]") {
             "contact_distance", "e-16");
     // Just above it: a head-on hit, at (10 − r)/3.
     CHECK(billiards::checked::time_of_impact(origin, origin, p2, approaching, 1e-152) == Approx(10.0 / 3));
-    // The cases: a crawl at 1e-161 over a gap, overlapping specks of radius 2e-170.
+    // Extreme scales: a crawl at 1e-161 over a gap, overlapping specks of radius 2e-170.
     CHECK(billiards::checked::time_of_impact(origin, origin, Vector(1.4, 0, 0), Vector(-1e-161, 0, 0),
                                              0.057) == Approx((1.4 - 0.057) / 1e-161));
     CHECK(billiards::checked::time_of_impact(origin, Vector(1, 0, 0), Vector(2e-170, 0, 0), origin, 4e-170) ==

@@ -264,7 +264,7 @@ TEMPLATE_TEST_CASE("checked::collide_with_friction rejects bad input, naming the
   CHECK(checked.second.angular_velocity == plain.second.angular_velocity);
 }
 
-// ---- The spin kernels over the whole exponent range (issue 14) --------------------------------------
+// ---- The spin kernels over the whole exponent range --------------------------------------
 
 namespace {
 

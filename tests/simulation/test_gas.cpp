@@ -1,5 +1,5 @@
-// The hard-sphere gas of billiards/simulation/gas.hpp against results no one here wrote: the equations of state
-// of Henderson (disks) and Carnahan and Starling (spheres), the virial series at low density, the
+// The hard-sphere gas of billiards/simulation/gas.hpp against results no one here wrote: the equations of
+// state of Henderson (disks) and Carnahan and Starling (spheres), the virial series at low density, the
 // identity that ties the virial to the collision rate; conservation of energy and momentum; no overlap,
 // checked over every pair at the end; every collision taken at contact; and the arguments it rejects.
 #include <billiards/simulation/gas.hpp>
@@ -152,7 +152,7 @@ TEST_CASE("arguments the gas rejects, with what was expected", "[gas]") {
 }
 
 TEST_CASE("a dilute gas's cell grid follows the balls, not the box", "[gas]") {
-  // One cell a diameter while the grid stays within max(2^24, 4 N) cells: every run the README and
+  // One cell a diameter while the grid stays within max(2^24, 4 N) cells: every run the guides and
   // the figures show keeps that grid; 1000 balls at η = 1e-12 (a box of 8e4 diameters, 5e14 cells
   // of one diameter) get 256^3 = 2^24 cells of 314 diameters.
   CHECK(gas::grid_cells_per_side(3, 1000, gas::box_side(3, 1000, 0.3)) == 12);

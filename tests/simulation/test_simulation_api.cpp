@@ -90,7 +90,8 @@ TEST_CASE("A table runs until a time and moves every ball on to it", "[simulatio
   SECTION("a time before now or NaN is an error naming the argument") {
     Table table(table_with({{{1, 1}, {1, 0}}}));
     table.run_until(0.5L);
-    CHECK_THROWS_WITH(table.run_until(0.25L), Catch::Contains("until is 0.25, expected a time at or after 0.5"));
+    CHECK_THROWS_WITH(table.run_until(0.25L),
+                      Catch::Contains("until is 0.25, expected a time at or after 0.5"));
     CHECK_THROWS_AS(table.run_until(std::numeric_limits<long double>::quiet_NaN()), std::invalid_argument);
   }
 }
@@ -147,7 +148,8 @@ TEST_CASE("A gas from the caller's configuration: two disks head on", "[simulati
   }
   SECTION("a time before now is an error naming the argument") {
     gas.run_until(1.0);
-    CHECK_THROWS_WITH(gas.run_until(0.5), Catch::Contains("until is 0.5, expected a finite time at or after 1"));
+    CHECK_THROWS_WITH(gas.run_until(0.5),
+                      Catch::Contains("until is 0.5, expected a finite time at or after 1"));
   }
 }
 
@@ -188,7 +190,8 @@ TEST_CASE("A gas's setup is validated with errors that name the value", "[simula
   CHECK(gas.positions()[1].isApprox(Eigen::Vector3d(3, 1, 1), 1e-14));
 }
 
-TEST_CASE("A large gas reports its collisions by the caller's numbers after renumbering", "[simulation][gas]") {
+TEST_CASE("A large gas reports its collisions by the caller's numbers after renumbering",
+          "[simulation][gas]") {
   // Beyond 4096 balls the engine renumbers its balls by cell every N collisions; the callback and the
   // state keep the setup's numbers: the two balls a collision names touch at its time.
   gas::Options options;

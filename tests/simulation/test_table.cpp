@@ -121,11 +121,13 @@ TEST_CASE("Bad setups are rejected with a clear error", "[simulation][table]") {
     CHECK_THROWS_WITH(validate(setup), Catch::StartsWith("ball 0 at (3, 0.5)"));
   }
   SECTION("more balls than fit") {
-    CHECK_THROWS_WITH(random_setup(TableSetup{}, 100000, 1), Catch::Contains("balls is 100000: cannot place"));
+    CHECK_THROWS_WITH(random_setup(TableSetup{}, 100000, 1),
+                      Catch::Contains("balls is 100000: cannot place"));
   }
   SECTION("a velocity beyond the checked calls' limit; at it two balls head on exchange speeds") {
     const double limit = billiards::component_limit<double>();
-    setup.balls = {{TableVector(1, 0.5), TableVector(limit, 0)}, {TableVector(2, 0.5), TableVector(-limit, 0)}};
+    setup.balls = {{TableVector(1, 0.5), TableVector(limit, 0)},
+                   {TableVector(2, 0.5), TableVector(-limit, 0)}};
     validate(setup);
     Table simulation(setup);
     while (simulation.ball_collisions() < 1) simulation.step();
@@ -236,7 +238,8 @@ TEST_CASE("Tables far from metres play as the same table in metres", "[simulatio
     TableSetup tiny = empty_table();
     tiny.width = tiny.height = 1e-300;
     tiny.radius = 1e-302;
-    tiny.balls = {{TableVector(2e-302, 2e-302), TableVector(0, 0)}, {TableVector(5e-301, 5e-301), TableVector(0, 0)}};
+    tiny.balls = {{TableVector(2e-302, 2e-302), TableVector(0, 0)},
+                  {TableVector(5e-301, 5e-301), TableVector(0, 0)}};
     CHECK(overlap(tiny, 0, 1) == Approx(2e-302 - std::hypot(4.8e-301, 4.8e-301)).epsilon(1e-12));
     CHECK(overlap(tiny, 0, 1) < 0);
   }
@@ -265,4 +268,3 @@ TEST_CASE("Balls too slow for their table end the run with a reason, and time pa
     CHECK(relative_drift(before, simulation.kinetic_energy()) <= 1e-12L);
   }
 }
-

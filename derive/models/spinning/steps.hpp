@@ -136,7 +136,8 @@ Cloth the_cloth(Recorder& record);
 // ---- The kernels ----------------------------------------------------------------------------------
 
 /// The claims the kernels are proven against where the steps do not state the emitted quantity alone.
-void kernel_claims(Recorder& record, const Contact& contact, const Impulse& impulse, const Friction& friction);
+void kernel_claims(Recorder& record, const Contact& contact, const Impulse& impulse,
+                   const Friction& friction);
 
 std::vector<Kernel> spin_kernels(const Cloth& cloth);
 

@@ -89,7 +89,7 @@ void collide_batch(std::span<const Scalar> m1, const Components<Scalar, Dimensio
 #elif defined(__GNUC__)
 #pragma GCC ivdep
 #endif
-    for (std::size_t i = begin; i < end; ++i) {  // the batch loop: vectorised (see README, Performance)
+    for (std::size_t i = begin; i < end; ++i) {  // the batch loop: vectorised (see docs/runtime.md)
       // The same dot product and the same update as billiards::collide (detail/arithmetic.hpp), so the
       // bits agree under the same flags. Each component is read once, into a local, before anything is
       // written: the compilers do not take __restrict on these arrays of pointers as a promise that a

@@ -66,17 +66,19 @@ struct Options {
 
 /// What gas::measure measured (units σ = m = kT = 1).
 struct Result {
-  int dimension = 0;             ///< 2 or 3
-  std::size_t balls = 0;         ///< N
-  double packing_fraction = 0;   ///< η
-  std::uint64_t collisions = 0;  ///< over the measured span
-  std::uint64_t cell_crossings = 0;  ///< over the measured span
-  double time = 0;  ///< the measured span, in simulation time
-  double compressibility_factor = 0, compressibility_factor_error = 0;  ///< Z from the virial
-  /// Z from the collision rate, 1 + σ √(π m/kT)/(2 d τ), and its error.
-  double compressibility_factor_from_collision_rate = 0, compressibility_factor_from_collision_rate_error = 0;
-  double mean_free_time = 0;              ///< τ = t N/(2 C)
-  double temperature = 0;                 ///< kT at the end, Σ m v²/(d N)
+  int dimension = 0;                        ///< 2 or 3
+  std::size_t balls = 0;                    ///< N
+  double packing_fraction = 0;              ///< η
+  std::uint64_t collisions = 0;             ///< over the measured span
+  std::uint64_t cell_crossings = 0;         ///< over the measured span
+  double time = 0;                          ///< the measured span, in simulation time
+  double compressibility_factor = 0;        ///< Z = PV/(N kT) from the collision virial
+  double compressibility_factor_error = 0;  ///< its standard error over ten blocks
+  /// Z from the collision rate, 1 + σ √(π m/kT)/(2 d τ).
+  double compressibility_factor_from_collision_rate = 0;
+  double compressibility_factor_from_collision_rate_error = 0;  ///< its standard error over ten blocks
+  double mean_free_time = 0;                                    ///< τ = t N/(2 C)
+  double temperature = 0;                                       ///< kT at the end, Σ m v²/(d N)
   double largest_temperature_change = 0;  ///< |kT − kT0|/kT0, the largest over the blocks' ends
   double momentum = 0;                    ///< |Σ m v| at the end
   double largest_overlap = 0;             ///< in diameters, over every collision
@@ -199,9 +201,9 @@ inline void validate(const Options& o) {
 /// A gas of N equal balls in a periodic box: the caller's configuration, or gas::lattice's.
 template <int D>
 struct GasSetup {
-  double side = 0;        ///< the box's side: a square (2-D) or a cube (3-D), periodic along every axis
-  double radius = 0.5;    ///< every ball's radius (σ = 2 radius, the diameter)
-  double mass = 1;        ///< every ball's mass
+  double side = 0;             ///< the box's side: a square (2-D) or a cube (3-D), periodic along every axis
+  double radius = 0.5;         ///< every ball's radius (σ = 2 radius, the diameter)
+  double mass = 1;             ///< every ball's mass
   std::vector<Ball<D>> balls;  ///< centres (anywhere: taken into [0, side) along each axis) and velocities
 };
 
@@ -219,16 +221,16 @@ struct NoCollisions : std::runtime_error {
 
 /// What a Gas measured over a span: from its start (or Gas::reset_measurements) to now.
 struct GasMeasurement {
-  double time = 0;               ///< the span's length, in the gas's time
-  std::uint64_t collisions = 0;  ///< collisions resolved in it
+  double time = 0;                   ///< the span's length, in the gas's time
+  std::uint64_t collisions = 0;      ///< collisions resolved in it
   std::uint64_t cell_crossings = 0;  ///< cell crossings in it (the engine's own events)
-  double virial = 0;             ///< Σ r_ij·Δp_i over its collisions
-  double temperature = 0;        ///< kT at the span's start, Σ m v²/(d N)
+  double virial = 0;                 ///< Σ r_ij·Δp_i over its collisions
+  double temperature = 0;            ///< kT at the span's start, Σ m v²/(d N)
   /// Z = PV/(N kT) from the collision virial, 1 + Σ r_ij·Δp_i/(d N kT t); 1 for an empty span.
   double compressibility_factor = 1;
   /// Z from the collision rate, 1 + σ √(π m/kT)/(2 d τ); 1 without collisions.
   double compressibility_factor_from_collision_rate = 1;
-  double mean_free_time = 0;     ///< τ = t N/(2 C); +∞ without collisions
+  double mean_free_time = 0;  ///< τ = t N/(2 C); +∞ without collisions
 };
 
 /// Throws std::invalid_argument, naming the argument, its value and what was expected, where `setup` is
@@ -635,8 +637,8 @@ class Gas {
         const Vector p = nearest_image(ball_[i].position, other);
         // A pair moving apart never meets (time_of_impact would say +∞): skip the call.
         if (p.dot(ball_[j].velocity - ball_[i].velocity) >= 0) continue;
-        const double t =
-            billiards::time_of_impact(Vector::Zero().eval(), ball_[i].velocity, p, ball_[j].velocity, diameter_);
+        const double t = billiards::time_of_impact(Vector::Zero().eval(), ball_[i].velocity, p,
+                                                   ball_[j].velocity, diameter_);
         if (now_ + t < own.collision_time) {
           own.collision_time = now_ + t;
           own.partner = j;
@@ -875,7 +877,7 @@ class Gas {
     std::uint32_t next = none, previous = none;
   };
   detail::Array<Ball> ball_;
-  detail::Array<std::uint32_t> head_;                  ///< each cell's first ball (a tile's heads share cache lines)
+  detail::Array<std::uint32_t> head_;          ///< each cell's first ball (a tile's heads share cache lines)
   static constexpr std::size_t tile = 4;       ///< cells a tile has along each axis
   std::vector<std::uint32_t> axis_offset_[D];  ///< cell_index's term for each axis and coordinate
   // What an event reads of its own ball, in one place (one cache line): its next crossing, its earliest
@@ -899,7 +901,8 @@ class Gas {
   std::vector<bool> placed_;
   std::vector<double> event_times_;
   EventCalendar calendar_;
-  detail::Array<std::uint32_t> identity_;  ///< each ball's index in the setup (the balls are renumbered by cell)
+  detail::Array<std::uint32_t>
+      identity_;  ///< each ball's index in the setup (the balls are renumbered by cell)
   std::uint64_t crossings_ = 0, since_refile_ = 0, collisions_ = 0;
   std::uint64_t collision_number_ = 0;               ///< collisions resolved so far, every event's included
   static constexpr std::size_t reorder_from = 4096;  ///< fewer balls stay in the caches anyway
@@ -933,7 +936,8 @@ void validate(const GasSetup<D>& setup) {
   const double diameters = setup.side / (2 * setup.radius);
   if (!(diameters >= 3) || !(diameters <= gas::largest_box_side())) {
     std::ostringstream text;
-    text << "side is " << setup.side << ", " << diameters << " diameters, expected from 3 diameters (the cell "
+    text << "side is " << setup.side << ", " << diameters
+         << " diameters, expected from 3 diameters (the cell "
          << "grid's neighbours distinct) to " << gas::largest_box_side()
          << " (wider boxes round positions by more than 1e-9 of a diameter)";
     fail(text.str());
@@ -948,7 +952,8 @@ void validate(const GasSetup<D>& setup) {
     }
     if (!ball.velocity.allFinite() || ball.velocity.cwiseAbs().maxCoeff() > limit) {
       text << "balls[" << i << "].velocity has a component of " << ball.velocity.cwiseAbs().maxCoeff()
-           << ", expected finite components of magnitude at most " << limit << " (billiards::component_limit)";
+           << ", expected finite components of magnitude at most " << limit
+           << " (billiards::component_limit)";
       fail(text.str());
     }
   }
@@ -981,7 +986,8 @@ GasSetup<D> lattice(const Options& options) {
       }
     }
   } else {
-    const double basis[4][3] = {{0.25, 0.25, 0.25}, {0.75, 0.75, 0.25}, {0.75, 0.25, 0.75}, {0.25, 0.75, 0.75}};
+    const double basis[4][3] = {
+        {0.25, 0.25, 0.25}, {0.75, 0.75, 0.25}, {0.75, 0.25, 0.75}, {0.25, 0.75, 0.75}};
     for (std::size_t i = 0; i < n && placed < options.balls; ++i) {
       for (std::size_t j = 0; j < n && placed < options.balls; ++j) {
         for (std::size_t k = 0; k < n && placed < options.balls; ++k) {
@@ -1064,8 +1070,9 @@ Result measure(Gas<D>& gas, const Options& options) {
   r.mean_free_time =
       done > 0 ? r.time * n / (2 * static_cast<double>(done)) : std::numeric_limits<double>::infinity();
   r.compressibility_factor_from_collision_rate =
-      done > 0 ? 1 + 2 * gas.radius() * std::sqrt(std::numbers::pi * gas.mass() / kT) / (2 * D * r.mean_free_time)
-               : 1;
+      done > 0
+          ? 1 + 2 * gas.radius() * std::sqrt(std::numbers::pi * gas.mass() / kT) / (2 * D * r.mean_free_time)
+          : 1;
   r.compressibility_factor_error = standard_error(z_blocks);
   r.compressibility_factor_from_collision_rate_error = standard_error(rate_blocks);
   return r;

@@ -95,8 +95,8 @@ class Table {
   std::uint64_t run_until(long double until, OnEvent&& on_event) {
     if (!(until >= elapsed_)) {
       std::ostringstream text;
-      text << "billiards::simulation::Table::run_until: until is " << until << ", expected a time at or after "
-           << elapsed_ << " s (the table's time now)";
+      text << "billiards::simulation::Table::run_until: until is " << until
+           << ", expected a time at or after " << elapsed_ << " s (the table's time now)";
       throw std::invalid_argument(text.str());
     }
     std::uint64_t done = 0;
@@ -108,7 +108,7 @@ class Table {
     while (elapsed_ < until) {
       const long double left = until - elapsed_;
       const double step = left > std::numeric_limits<double>::max() ? std::numeric_limits<double>::max()
-                                                                      : static_cast<double>(left);
+                                                                    : static_cast<double>(left);
       advance_by(step);
       if (step == 0) {
         elapsed_ = until;
@@ -120,6 +120,30 @@ class Table {
   /// Runs every event up to table time `until`; see the overload with a callback.
   std::uint64_t run_until(long double until) {
     return run_until(until, [](const TableEvent&) {});
+  }
+
+  /// Table time since the start, summed in long double: slow balls on a large table pass the largest
+  /// double (a table of 1e300 m crossed at 1e-7 m/s reached "inf s" in 20 000 events).
+  long double time() const { return elapsed_; }
+  /// The setup, its balls at the table's time now.
+  const TableSetup& setup() const { return setup_; }
+  /// The balls at the table's time now: centres and velocities.
+  const std::vector<Ball<2>>& balls() const { return setup_.balls; }
+  /// Events processed, including contacts that were already separating (nothing to resolve).
+  std::uint64_t events() const { return events_; }
+  /// Ball–ball contacts resolved (the balls approached and their velocities changed).
+  std::uint64_t ball_collisions() const { return ball_collisions_; }
+  /// Ball–cushion contacts resolved.
+  std::uint64_t cushion_collisions() const { return cushion_collisions_; }
+  /// The largest overlap seen at any event so far, as a fraction of the radius (0 if none).
+  double largest_overlap() const { return largest_overlap_; }
+
+  /// Σ ½ m v², summed in long double so that the sum adds no rounding of its own to the drift.
+  long double kinetic_energy() const {
+    long double sum = 0;
+    for (const Ball<2>& ball : setup_.balls)
+      sum += 0.5L * setup_.mass * ball.velocity.cast<long double>().squaredNorm();
+    return sum;
   }
 
  private:
@@ -183,32 +207,6 @@ class Table {
     }
   }
 
- public:
-  /// Table time since the start, summed in long double: slow balls on a large table pass the largest
-  /// double (a table of 1e300 m crossed at 1e-7 m/s reached "inf s" in 20 000 events).
-  long double time() const { return elapsed_; }
-  /// The setup, its balls at the table's time now.
-  const TableSetup& setup() const { return setup_; }
-  /// The balls at the table's time now: centres and velocities.
-  const std::vector<Ball<2>>& balls() const { return setup_.balls; }
-  /// Events processed, including contacts that were already separating (nothing to resolve).
-  std::uint64_t events() const { return events_; }
-  /// Ball–ball contacts resolved (the balls approached and their velocities changed).
-  std::uint64_t ball_collisions() const { return ball_collisions_; }
-  /// Ball–cushion contacts resolved.
-  std::uint64_t cushion_collisions() const { return cushion_collisions_; }
-  /// The largest overlap seen at any event so far, as a fraction of the radius (0 if none).
-  double largest_overlap() const { return largest_overlap_; }
-
-  /// Σ ½ m v², summed in long double so that the sum adds no rounding of its own to the drift.
-  long double kinetic_energy() const {
-    long double sum = 0;
-    for (const Ball<2>& ball : setup_.balls)
-      sum += 0.5L * setup_.mass * ball.velocity.cast<long double>().squaredNorm();
-    return sum;
-  }
-
- private:
   struct Prediction {
     double time;
     std::size_t ball;

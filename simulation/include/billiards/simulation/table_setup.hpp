@@ -35,18 +35,20 @@ using TableVector = Eigen::Vector2d;
 /// Where a setup's values were read, for messages: "FILE:LINE: " prefixes (empty for a setup built in
 /// code, or for a value left at its default).
 struct SetupOrigin {
-  std::string file;                 ///< "FILE: ", for what has no line of its own
-  std::string table, radius, mass;  ///< the line of each directive
-  std::vector<std::string> balls;   ///< the line of each ball
+  std::string file;                ///< "FILE: ", for what has no line of its own
+  std::string table;               ///< "FILE:LINE: " of the table directive
+  std::string radius;              ///< "FILE:LINE: " of the radius directive
+  std::string mass;                ///< "FILE:LINE: " of the mass directive
+  std::vector<std::string> balls;  ///< "FILE:LINE: " of each ball
 };
 
 /// A table and the balls on it: the cushions are the lines x = 0, x = width, y = 0 and y = height.
 /// All balls have the same radius and mass.
 struct TableSetup {
-  double width = 2.54;       ///< metres, the playing area of a 9-ft table
-  double height = 1.27;      ///< metres
-  double radius = 0.028575;  ///< metres (57.15 mm balls)
-  double mass = 0.17;        ///< kilograms
+  double width = 2.54;         ///< metres, the playing area of a 9-ft table
+  double height = 1.27;        ///< metres
+  double radius = 0.028575;    ///< metres (57.15 mm balls)
+  double mass = 0.17;          ///< kilograms
   std::vector<Ball<2>> balls;  ///< the balls' centres and velocities
   SetupOrigin origin;          ///< where the values were read (for messages; empty when built in code)
 };
@@ -242,7 +244,8 @@ inline TableSetup break_setup(TableSetup table, double speed = 8.0) {
   const double r = table.radius, spacing = 2 * r * (1 + 1e-4);
   const TableVector apex(0.75 * table.width, 0.5 * table.height);
   table.balls.clear();
-  table.balls.push_back({TableVector(0.25 * table.width, 0.5 * table.height), TableVector(speed, 0)});  // the cue ball
+  table.balls.push_back(
+      {TableVector(0.25 * table.width, 0.5 * table.height), TableVector(speed, 0)});  // the cue ball
   for (int row = 0; row < 5; ++row) {
     for (int k = 0; k <= row; ++k) {
       const TableVector p = apex + TableVector(row * spacing * std::sqrt(3.0) / 2, (k - row / 2.0) * spacing);

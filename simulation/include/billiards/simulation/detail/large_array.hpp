@@ -1,5 +1,5 @@
-// An allocator for the large arrays of an event-driven simulation (billiards/simulation/gas.hpp): aligned to cache
-// lines, and from 2 MiB up on huge-page boundaries with the kernel asked to back them with huge pages.
+// An allocator for the large arrays of an event-driven simulation (billiards/simulation/gas.hpp): aligned to
+// cache lines, and from 2 MiB up on huge-page boundaries with the kernel asked to back them with huge pages.
 #pragma once
 
 #include <cstddef>
