@@ -2,6 +2,87 @@
 
 namespace billiards::derive::spinning {
 
+namespace {
+
+// The section's energy claims: the work of the impulse, the change of kinetic energy, and its sign for
+// the normal part and in both regimes of friction.
+void friction_energy(Recorder& record, const Contact& c, const Impulse& impulse, const Friction& friction) {
+  const Symbols& s = symbols();
+  const ex e = s.restitution, un = s.normal_slip, Jn = s.normal_impulse, j = s.tangential_impulse;
+  const ex sigma = s.tangential_slip, k = impulse.k_general;
+  const ex reduced_mass = s.m1 * s.m2 / (s.m1 + s.m2);
+  const ex below_sticking = friction.sticking_impulse / (1 + s.q);  // 0 < j < |u_t|/k, q > 0
+  const Vec tau = c.tangent();
+  const Constraint tangent_length{GiNaC::pow(sigma, 2) == dot(tau, tau).expand(), "|u_t|² = u_t·u_t"};
+  // J·u for J = J_n n − j û_t and u = (u·n) n + u_t.
+  const Vec impulse_vector = add(scale(Jn, c.n), scale(-j / sigma, tau));
+  const Vec slip_split = add(scale(un, c.n), tau);
+  record.add({
+      .id = "friction.impulse_work",
+      .statement = "J·u = J_n u·n − j |u_t| for J = J_n n − j û_t.",
+      .method = std::string("u = (u·n) n + u_t with u_t = n × a; identity, |u_t|² → u_t·u_t imposed") +
+                unit_normal_method,
+      .comparison = Comparison::identity,
+      .paper_expression = Jn * un - j * sigma,
+      .derived_expression = dot(impulse_vector, slip_split).expand(),
+      .constraints = {tangent_length, c.unit_normal},
+      .depends_on = {"definition.coulomb_friction"},
+  });
+  const ex energy_change = GiNaC::normal(
+      (Jn * un - j * sigma + numeric(1, 2) * impulse.normal_inverse * Jn * Jn + numeric(1, 2) * k * j * j)
+          .subs(Jn == friction.normal_impulse));
+  record.add({
+      .id = "friction.energy_change",
+      .statement = "The kinetic energy changes by −½ (1 − e²) μ_red ((v2 − v1)·n)² − j |u_t| + ½ k j².",
+      .method = "conservation.energy_change with J·u from friction.impulse_work and J_n from "
+                "friction.normal_impulse; identity after normal()",
+      .comparison = Comparison::identity,
+      .paper_expression =
+          -numeric(1, 2) * (1 - e * e) * reduced_mass * un * un - j * sigma + numeric(1, 2) * k * j * j,
+      .derived_expression = energy_change,
+      .depends_on = {"conservation.energy_change", "friction.impulse_work", "friction.normal_impulse"},
+  });
+  const ex in_range = s.q / (1 + s.q);  // e ∈ (0, 1)
+  const ex normal_part = energy_change.subs(lst{j == 0});
+  record.add({
+      .id = "friction.normal_energy_loss_nonnegative",
+      .statement =
+          "The normal impulse creates no energy: −½ (1 − e²) μ_red ((v2 − v1)·n)² ≤ 0 for 0 ≤ e ≤ 1.",
+      .method = "sign: minus the change at j = 0 and e = q/(1 + q), q > 0 (e in (0, 1); e = 0 and 1 by "
+                "continuity), factors into positive symbols and even powers",
+      .comparison = Comparison::nonnegative,
+      .paper_expression = 0,
+      .derived_expression = GiNaC::normal(-normal_part.subs(e == in_range)),
+      .depends_on = {"friction.energy_change"},
+  });
+  const ex friction_part = GiNaC::normal(energy_change - normal_part);
+  record.add({
+      .id = "friction.energy_nonincreasing_sticking",
+      .statement = "Sticking (j = |u_t|/k) takes energy out: −j |u_t| + ½ k j² = −|u_t|²/(2k) ≤ 0, so with "
+                   "the normal part the change is ≤ 0.",
+      .method = "sign: minus the friction part of the change at j = |u_t|/k factors into positive symbols",
+      .comparison = Comparison::nonnegative,
+      .paper_expression = 0,
+      .derived_expression = GiNaC::normal(-friction_part.subs(j == friction.sticking_impulse)),
+      .depends_on = {"friction.energy_change", "friction.sticking_impulse",
+                     "friction.normal_energy_loss_nonnegative"},
+  });
+  record.add({
+      .id = "friction.energy_nonincreasing_sliding",
+      .statement = "Sliding (0 < j < |u_t|/k) takes energy out: −j |u_t| + ½ k j² ≤ 0, so with the normal "
+                   "part the change is ≤ 0.",
+      .method = "sign: minus the friction part at j = (|u_t|/k)/(1 + q), q > 0, factors into positive "
+                "symbols and sums of them",
+      .comparison = Comparison::nonnegative,
+      .paper_expression = 0,
+      .derived_expression = GiNaC::normal(-friction_part.subs(j == below_sticking)),
+      .depends_on = {"friction.energy_change", "friction.sliding_never_reverses",
+                     "friction.normal_energy_loss_nonnegative"},
+  });
+}
+
+}  // namespace
+
 Friction the_friction(Recorder& record, const Contact& c, const Impulse& impulse) {
   const Symbols& s = symbols();
   const ex e = s.restitution, un = s.normal_slip, Jn = s.normal_impulse, j = s.tangential_impulse;
@@ -88,72 +169,9 @@ Friction the_friction(Recorder& record, const Contact& c, const Impulse& impulse
       .derived_expression = GiNaC::normal(1 - factor),
       .depends_on = {"friction.sliding_scales_slip"},
   });
-  // J·u for J = J_n n − j û_t and u = (u·n) n + u_t.
-  const Vec impulse_vector = add(scale(Jn, c.n), scale(-j / sigma, tau));
-  const Vec slip_split = add(scale(un, c.n), tau);
-  record.add({
-      .id = "friction.impulse_work",
-      .statement = "J·u = J_n u·n − j |u_t| for J = J_n n − j û_t.",
-      .method = std::string("u = (u·n) n + u_t with u_t = n × a; identity, |u_t|² → u_t·u_t imposed") +
-                unit_normal_method,
-      .comparison = Comparison::identity,
-      .paper_expression = Jn * un - j * sigma,
-      .derived_expression = dot(impulse_vector, slip_split).expand(),
-      .constraints = {tangent_length, c.unit_normal},
-      .depends_on = {"definition.coulomb_friction"},
-  });
-  const ex energy_change = GiNaC::normal(
-      (Jn * un - j * sigma + numeric(1, 2) * impulse.normal_inverse * Jn * Jn + numeric(1, 2) * k * j * j)
-          .subs(Jn == normal_impulse));
-  record.add({
-      .id = "friction.energy_change",
-      .statement = "The kinetic energy changes by −½ (1 − e²) μ_red ((v2 − v1)·n)² − j |u_t| + ½ k j².",
-      .method = "conservation.energy_change with J·u from friction.impulse_work and J_n from "
-                "friction.normal_impulse; identity after normal()",
-      .comparison = Comparison::identity,
-      .paper_expression =
-          -numeric(1, 2) * (1 - e * e) * reduced_mass * un * un - j * sigma + numeric(1, 2) * k * j * j,
-      .derived_expression = energy_change,
-      .depends_on = {"conservation.energy_change", "friction.impulse_work", "friction.normal_impulse"},
-  });
-  const ex in_range = s.q / (1 + s.q);  // e ∈ (0, 1)
-  const ex normal_part = energy_change.subs(lst{j == 0});
-  record.add({
-      .id = "friction.normal_energy_loss_nonnegative",
-      .statement =
-          "The normal impulse creates no energy: −½ (1 − e²) μ_red ((v2 − v1)·n)² ≤ 0 for 0 ≤ e ≤ 1.",
-      .method = "sign: minus the change at j = 0 and e = q/(1 + q), q > 0 (e in (0, 1); e = 0 and 1 by "
-                "continuity), factors into positive symbols and even powers",
-      .comparison = Comparison::nonnegative,
-      .paper_expression = 0,
-      .derived_expression = GiNaC::normal(-normal_part.subs(e == in_range)),
-      .depends_on = {"friction.energy_change"},
-  });
-  const ex friction_part = GiNaC::normal(energy_change - normal_part);
-  record.add({
-      .id = "friction.energy_nonincreasing_sticking",
-      .statement = "Sticking (j = |u_t|/k) takes energy out: −j |u_t| + ½ k j² = −|u_t|²/(2k) ≤ 0, so with "
-                   "the normal part the change is ≤ 0.",
-      .method = "sign: minus the friction part of the change at j = |u_t|/k factors into positive symbols",
-      .comparison = Comparison::nonnegative,
-      .paper_expression = 0,
-      .derived_expression = GiNaC::normal(-friction_part.subs(j == sticking)),
-      .depends_on = {"friction.energy_change", "friction.sticking_impulse",
-                     "friction.normal_energy_loss_nonnegative"},
-  });
-  record.add({
-      .id = "friction.energy_nonincreasing_sliding",
-      .statement = "Sliding (0 < j < |u_t|/k) takes energy out: −j |u_t| + ½ k j² ≤ 0, so with the normal "
-                   "part the change is ≤ 0.",
-      .method = "sign: minus the friction part at j = (|u_t|/k)/(1 + q), q > 0, factors into positive "
-                "symbols and sums of them",
-      .comparison = Comparison::nonnegative,
-      .paper_expression = 0,
-      .derived_expression = GiNaC::normal(-friction_part.subs(j == below_sticking)),
-      .depends_on = {"friction.energy_change", "friction.sliding_never_reverses",
-                     "friction.normal_energy_loss_nonnegative"},
-  });
-  return {normal_impulse, sticking};
+  const Friction friction{normal_impulse, sticking};
+  friction_energy(record, c, impulse, friction);
+  return friction;
 }
 
 }  // namespace billiards::derive::spinning

@@ -148,44 +148,10 @@ void push_with_fast_path(std::vector<Kernel>& kernels, Kernel plain, Kernel full
   kernels.push_back(full);
 }
 
-}  // namespace
-
-std::vector<Kernel> spin_kernels(const Cloth& cloth) {
+// The impulse of a contact: k, J_n and j.
+void impulse_kernels(std::vector<Kernel>& kernels) {
   const Symbols& s = symbols();
   using Kind = Guard::Kind;
-  // A phase's duration `time`, a monomial in the kernel's parameters (its speed, friction, gravity and
-  // radius), over the whole exponent range: on their significands, scaled back once (scaled_monomial),
-  // and `frictionless` where the friction is zero. Where every input lies in [moderate_low,
-  // moderate_high] the plain form, the duration as derived, keeps every digit and needs no scaling: the
-  // kernel takes it there first, a kernel of its own (plain_<name>) printed before it.
-  const GiNaC::symbol duration("duration");
-  std::vector<Kernel> kernels;
-  const auto push_phase_time = [&](Kernel full, const ex& time, const Guard& frictionless) {
-    ScaledMonomial scaled = scaled_monomial("duration", time, full.parameters);
-    scaled.steps.push_back({duration, scaled.value, {frictionless}});
-    full.steps = scaled.steps;
-    full.outputs = {duration};
-    std::vector<ex> conditions;
-    for (const ex& parameter : full.parameters) {
-      conditions.push_back(moderate_low() <= parameter);
-      conditions.push_back(parameter <= moderate_high());
-    }
-    Kernel plain{
-        .name = "plain_" + full.name,
-        .brief = "The same as " + full.name + " where every input lies in [moderate_low, moderate_high] (" +
-                 full.name + "_is_moderate), where the plain form keeps every digit without scaling. " +
-                 full.name + " takes it there itself.",
-        .parameters = full.parameters,
-        .steps = {{duration, time, {frictionless}}},
-        .outputs = {duration},
-        .equals = full.equals,
-        .in_claim_terms = full.in_claim_terms,
-    };
-    push_with_fast_path(kernels, plain, full, conditions, full.name + "_is_moderate",
-                        "True when every input of " + full.name +
-                            " lies in [moderate_low<Scalar>(), moderate_high<Scalar>()], where it takes its "
-                            "plain form (false for 0, +∞ and NaN).");
-  };
   {
     // 3.5/m1 + 3.5/m2: each term rounds once and neither exceeds the sum, so nothing overflows that the
     // result does not (7/m1 before a halving would, for m1 just above the smallest normal number).
@@ -252,6 +218,12 @@ std::vector<Kernel> spin_kernels(const Cloth& cloth) {
         .claims = {"friction.sticking_impulse", "friction.sliding_never_reverses"},
     });
   }
+}
+
+// The velocity changes the tangential impulse makes, with their plain form over one sum.
+void tangential_velocity_kernels(std::vector<Kernel>& kernels) {
+  const Symbols& s = symbols();
+  using Kind = Guard::Kind;
   {
     const GiNaC::realsymbol speed("relative_normal_speed");
     const GiNaC::possymbol slip("tangential_slip");
@@ -339,6 +311,11 @@ std::vector<Kernel> spin_kernels(const Cloth& cloth) {
         "where tangential_velocity_change takes its plain form over one sum (false for +∞ and "
         "NaN).");
   }
+}
+
+// The spin changes of the tangential impulse.
+void spin_change_kernels(std::vector<Kernel>& kernels) {
+  const Symbols& s = symbols();
   {
     const GiNaC::possymbol change("velocity_change"), radius("radius");
     const GiNaC::symbol per_radius("change_per_radius");
@@ -371,6 +348,44 @@ std::vector<Kernel> spin_kernels(const Cloth& cloth) {
         .claims = {"kernel.spin_change_per_impulse_second_ball"},
     });
   }
+}
+
+// The durations of the phases on the cloth.
+void phase_time_kernels(std::vector<Kernel>& kernels, const Cloth& cloth) {
+  const Symbols& s = symbols();
+  using Kind = Guard::Kind;
+  // A phase's duration `time`, a monomial in the kernel's parameters (its speed, friction, gravity and
+  // radius), over the whole exponent range: on their significands, scaled back once (scaled_monomial),
+  // and `frictionless` where the friction is zero. Where every input lies in [moderate_low,
+  // moderate_high] the plain form, the duration as derived, keeps every digit and needs no scaling: the
+  // kernel takes it there first, a kernel of its own (plain_<name>) printed before it.
+  const GiNaC::symbol duration("duration");
+  const auto push_phase_time = [&](Kernel full, const ex& time, const Guard& frictionless) {
+    ScaledMonomial scaled = scaled_monomial("duration", time, full.parameters);
+    scaled.steps.push_back({duration, scaled.value, {frictionless}});
+    full.steps = scaled.steps;
+    full.outputs = {duration};
+    std::vector<ex> conditions;
+    for (const ex& parameter : full.parameters) {
+      conditions.push_back(moderate_low() <= parameter);
+      conditions.push_back(parameter <= moderate_high());
+    }
+    Kernel plain{
+        .name = "plain_" + full.name,
+        .brief = "The same as " + full.name + " where every input lies in [moderate_low, moderate_high] (" +
+                 full.name + "_is_moderate), where the plain form keeps every digit without scaling. " +
+                 full.name + " takes it there itself.",
+        .parameters = full.parameters,
+        .steps = {{duration, time, {frictionless}}},
+        .outputs = {duration},
+        .equals = full.equals,
+        .in_claim_terms = full.in_claim_terms,
+    };
+    push_with_fast_path(kernels, plain, full, conditions, full.name + "_is_moderate",
+                        "True when every input of " + full.name +
+                            " lies in [moderate_low<Scalar>(), moderate_high<Scalar>()], where it takes its "
+                            "plain form (false for 0, +∞ and NaN).");
+  };
   {
     const GiNaC::possymbol slip("slip_speed"), mu("sliding_friction"), gravity("gravity");
     push_phase_time(
@@ -413,6 +428,16 @@ std::vector<Kernel> spin_kernels(const Cloth& cloth) {
         cloth.spin_time.subs(lst{s.spin == spin, s.R == radius, s.spinning_friction == mu, s.g == gravity}),
         {mu <= 0, infinity(), Kind::piecewise, "spinning.frictionless_spins_on"});
   }
+}
+
+}  // namespace
+
+std::vector<Kernel> spin_kernels(const Cloth& cloth) {
+  std::vector<Kernel> kernels;
+  impulse_kernels(kernels);
+  tangential_velocity_kernels(kernels);
+  spin_change_kernels(kernels);
+  phase_time_kernels(kernels, cloth);
   return kernels;
 }
 
