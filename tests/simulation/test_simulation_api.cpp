@@ -188,6 +188,13 @@ TEST_CASE("A gas's setup is validated with errors that name the value", "[simula
   outside.balls[1].position = {3 + 5 * 7, 1 - 5 * 3, 1};
   Gas<3> gas(outside);
   CHECK(gas.positions()[1].isApprox(Eigen::Vector3d(3, 1, 1), 1e-14));
+  // However far outside, a position lands inside the box.
+  outside.balls[1].position = {7.9e27, -1.0206185567010309e17, 3};
+  const Gas<3> far(outside);
+  for (int k = 0; k < 3; ++k) {
+    CHECK(far.positions()[1][k] >= 0);
+    CHECK(far.positions()[1][k] < 5);
+  }
 }
 
 TEST_CASE("A large gas reports its collisions by the caller's numbers after renumbering",

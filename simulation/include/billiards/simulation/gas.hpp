@@ -271,8 +271,7 @@ class Gas {
       identity_[i] = static_cast<std::uint32_t>(i);
       for (int k = 0; k < D; ++k) {
         double& x = ball_[i].position[k];
-        x -= side_ * std::floor(x / side_);  // into [0, side): a position inside is kept bit for bit
-        if (!(x < side_)) x = 0;             // −1e-20 rounds to side itself
+        x = into_box(x);
         own_[i].coordinates[k] = std::min(cells_per_side_ - 1, static_cast<int>(x / cell_width_));
       }
       own_[i].cell = static_cast<std::uint32_t>(cell_index(own_[i].coordinates));
@@ -381,10 +380,7 @@ class Gas {
     for (std::size_t i = 0; i < out.size(); ++i) {
       Vector& p = out[identity_[i]];
       p = ball_[i].position + ball_[i].velocity * (now_ - ball_[i].updated);
-      for (int k = 0; k < D; ++k) {
-        p[k] -= side_ * std::floor(p[k] / side_);
-        if (!(p[k] < side_)) p[k] = 0;
-      }
+      for (int k = 0; k < D; ++k) p[k] = into_box(p[k]);
     }
     return out;
   }
@@ -422,6 +418,14 @@ class Gas {
   };
 
   static constexpr double infinity = std::numeric_limits<double>::infinity();
+
+  // A coordinate taken into [0, side): fmod is exact, so a coordinate inside is kept bit for bit and
+  // one far outside (−1.02e17 in a box of 5) lands inside too; −1e-20 + side rounds to side itself.
+  double into_box(double x) const {
+    x = std::fmod(x, side_);
+    if (x < 0) x += side_;
+    return x < side_ ? x : 0;
+  }
 
   // A callback that does nothing: a run without one compiles to the loop it was before.
   static void ignore_collision(const GasCollision&) {}
