@@ -89,14 +89,16 @@ class Table {
 
   /// Runs every event up to table time `until` (seconds since the start), calling
   /// `on_event(const TableEvent&)` after each, then moves every ball on to `until`; returns how many
-  /// events ran. Throws std::invalid_argument when `until` is NaN or earlier than time(), and
-  /// std::logic_error as step() does.
+  /// events ran. Throws std::invalid_argument when `until` is NaN, earlier than time() or more than the
+  /// largest finite double of seconds after it, and std::logic_error as step() does.
   template <typename OnEvent>
   std::uint64_t run_until(long double until, OnEvent&& on_event) {
-    if (!(until >= elapsed_)) {
+    // Within the largest finite step of now: a run to any time ends, one step of free flight at most.
+    const long double largest_step = std::numeric_limits<double>::max();
+    if (!(until >= elapsed_) || !(until - elapsed_ <= largest_step)) {
       std::ostringstream text;
-      text << "billiards::simulation::Table::run_until: until is " << until
-           << ", expected a time at or after " << elapsed_ << " s (the table's time now)";
+      text << "billiards::simulation::Table::run_until: until is " << until << ", expected a time from "
+           << elapsed_ << " s (the table's time now) to " << largest_step << " s after it";
       throw std::invalid_argument(text.str());
     }
     std::uint64_t done = 0;
@@ -104,17 +106,9 @@ class Table {
       on_event(resolve_next());
       ++done;
     }
-    // No event before `until`: every ball moves freely to it (at most the largest finite step at once).
-    while (elapsed_ < until) {
-      const long double left = until - elapsed_;
-      const double step = left > std::numeric_limits<double>::max() ? std::numeric_limits<double>::max()
-                                                                    : static_cast<double>(left);
-      advance_by(step);
-      if (step == 0) {
-        elapsed_ = until;
-        break;
-      }
-    }
+    // No event before `until`: every ball moves freely to it.
+    advance_by(static_cast<double>(until - elapsed_));
+    elapsed_ = until;
     return done;
   }
   /// Runs every event up to table time `until`; see the overload with a callback.
