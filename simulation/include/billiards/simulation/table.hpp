@@ -160,45 +160,43 @@ class Table {
 
   // Resolves the prediction at the top of the queue (valid: next_event_is_due()).
   TableEvent resolve_next() {
-    {
-      std::pop_heap(queue_.begin(), queue_.end(), std::greater<>());
-      const Prediction next = queue_.back();
-      queue_.pop_back();
-      advance_by(next.time);
-      TableEvent event;
-      event.time = static_cast<double>(elapsed_);
-      event.first = next.ball;
-      event.second = next.partner;
-      if (next.partner_is_ball) {
-        Ball<2>& a = setup_.balls[next.ball];
-        Ball<2>& b = setup_.balls[next.partner];
-        const auto [x1, x2] = billiards::collide_if_approaching(setup_.mass, a.position, a.velocity,
-                                                                setup_.mass, b.position, b.velocity);
-        event.resolved = x1 != a.velocity || x2 != b.velocity;
-        a.velocity = x1;
-        b.velocity = x2;
-        if (event.resolved) ++ball_collisions_;
-      } else {
-        event.kind = TableEvent::Kind::cushion;
-        Ball<2>& a = setup_.balls[next.ball];
-        const TableVector n = cushion_normal(next.partner);
-        const double wall = std::numeric_limits<double>::infinity();
-        if (a.velocity.dot(n) < 0) {  // approaching the cushion
-          a.velocity = billiards::collide(setup_.mass, a.velocity, wall, TableVector::Zero().eval(), n).first;
-          event.resolved = true;
-          ++cushion_collisions_;
-        }
+    std::pop_heap(queue_.begin(), queue_.end(), std::greater<>());
+    const Prediction next = queue_.back();
+    queue_.pop_back();
+    advance_by(next.time);
+    TableEvent event;
+    event.time = static_cast<double>(elapsed_);
+    event.first = next.ball;
+    event.second = next.partner;
+    if (next.partner_is_ball) {
+      Ball<2>& a = setup_.balls[next.ball];
+      Ball<2>& b = setup_.balls[next.partner];
+      const auto [x1, x2] = billiards::collide_if_approaching(setup_.mass, a.position, a.velocity,
+                                                              setup_.mass, b.position, b.velocity);
+      event.resolved = x1 != a.velocity || x2 != b.velocity;
+      a.velocity = x1;
+      b.velocity = x2;
+      if (event.resolved) ++ball_collisions_;
+    } else {
+      event.kind = TableEvent::Kind::cushion;
+      Ball<2>& a = setup_.balls[next.ball];
+      const TableVector n = cushion_normal(next.partner);
+      const double wall = std::numeric_limits<double>::infinity();
+      if (a.velocity.dot(n) < 0) {  // approaching the cushion
+        a.velocity = billiards::collide(setup_.mass, a.velocity, wall, TableVector::Zero().eval(), n).first;
+        event.resolved = true;
+        ++cushion_collisions_;
       }
-      ++events_;
-      ++collisions_[next.ball];
-      predict(next.ball);
-      if (next.partner_is_ball) {
-        ++collisions_[next.partner];
-        predict(next.partner);
-      }
-      check(event);
-      return event;
     }
+    ++events_;
+    ++collisions_[next.ball];
+    predict(next.ball);
+    if (next.partner_is_ball) {
+      ++collisions_[next.partner];
+      predict(next.partner);
+    }
+    check(event);
+    return event;
   }
 
   struct Prediction {
