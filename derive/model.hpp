@@ -52,6 +52,9 @@ struct Derivation : Record {
 struct ModelEntry {
   std::string name;
   std::function<Derivation()> derive;
+  /// For the mutation suite only: an edit of each header's printed text (its path relative to the
+  /// output folder, its text) before it is read back and proven, as a slip in the printer would make.
+  std::function<std::string(const std::string&, const std::string&)> edit_printed = {};
 };
 
 /// Every registered model, in the order billiards-derive runs them (models/registry.cpp).

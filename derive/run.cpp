@@ -3,6 +3,7 @@
 #include "audit/audit.hpp"
 #include "core/output_files.hpp"
 #include "emit/emitter.hpp"
+#include "emit/read_back.hpp"
 #include "emit/validate.hpp"
 
 #include <CLI/CLI.hpp>
@@ -15,6 +16,8 @@
 #include <iostream>
 #include <optional>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace billiards::derive {
 
@@ -50,13 +53,30 @@ int run_model(const ModelEntry& entry, const fs::path& folder) {
     };
     write(model.markdown_path, audit_markdown(derivation));
     write(model.json_path, json_text);
-    // A kernel that is not proven is never printed.
-    if (problems.empty()) {
-      if (!model.kernels_path.empty()) write(model.kernels_path, kernels_header(derivation, json_text));
+    // No header unless the whole model verifies: a failed claim, cited by a kernel or not, or a kernel
+    // that is not proven means none is printed. Each header is then read back and proven from its text
+    // (emit/read_back.hpp), and only written when every function in it is.
+    if (problems.empty() && summarize(derivation.claims).failed == 0) {
+      std::vector<std::pair<std::string, std::string>> headers;
+      const auto printed = [&](const std::string& path, const std::string& text,
+                               const std::vector<Kernel>* kernels) {
+        const std::string shipped = entry.edit_printed ? entry.edit_printed(path, text) : text;
+        if (kernels != nullptr) {
+          const std::vector<KernelProblem> found = prove_printed(shipped, *kernels, derivation.claims);
+          problems.insert(problems.end(), found.begin(), found.end());
+        }
+        headers.emplace_back(path, shipped);
+      };
+      if (!model.kernels_path.empty())
+        printed(model.kernels_path, kernels_header(derivation, json_text), &derivation.kernels);
       if (!model.reference_path.empty())
-        write(model.reference_path, reference_kernels_header(derivation, json_text));
+        printed(model.reference_path, reference_kernels_header(derivation, json_text),
+                &derivation.reference_kernels);
       if (!model.kernel_list_path.empty())
-        write(model.kernel_list_path, kernel_list_header(derivation, json_text));
+        printed(model.kernel_list_path, kernel_list_header(derivation, json_text), nullptr);
+      if (problems.empty()) {
+        for (const auto& [path, text] : headers) write(path, text);
+      }
     }
   } catch (const std::exception& error) {
     std::cerr << "billiards-derive: " << error.what() << "\n";

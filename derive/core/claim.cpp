@@ -7,6 +7,16 @@
 
 namespace billiards::derive {
 
+namespace {
+thread_local std::string building;
+}  // namespace
+
+ClaimUnderConstruction::ClaimUnderConstruction(const std::string& id) { building = id; }
+
+const std::string& claim_being_built() { return building; }
+
+void clear_claim_being_built() { building.clear(); }
+
 using GiNaC::ex;
 
 namespace {

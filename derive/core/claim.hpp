@@ -41,8 +41,24 @@ enum class Comparison {
   assumption,
 };
 
+/// Notes, as a claim is built, which claim that is: a member of Claim initialised right after its id, so
+/// that while the rest of a `Claim{.id = …, …}` is computed, claim_being_built() names it. An exception
+/// in a derivation step then names the claim it stopped in (record_steps in core/record.hpp).
+struct ClaimUnderConstruction {
+  explicit ClaimUnderConstruction(const std::string& id);
+  ClaimUnderConstruction(const ClaimUnderConstruction&) = default;
+  ClaimUnderConstruction& operator=(const ClaimUnderConstruction&) = default;
+};
+
+/// The id of the claim most recently begun and not yet recorded (Recorder::add clears it); empty when
+/// none is.
+const std::string& claim_being_built();
+/// Forgets the claim being built (Recorder::add, once the claim is recorded).
+void clear_claim_being_built();
+
 struct Claim {
-  std::string id;         ///< stable and descriptive, e.g. "discriminant.factored"
+  std::string id;                                 ///< stable and descriptive, e.g. "discriminant.factored"
+  ClaimUnderConstruction under_construction{id};  ///< names this claim while the rest is computed
   std::string section;    ///< the audit section (a step of the derivation) it belongs to
   std::string paper;      ///< where it stands in the paper; empty when the paper does not state it
   std::string paper_tex;  ///< the paper's equation, verbatim LaTeX from the paper; empty if it prints none

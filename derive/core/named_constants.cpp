@@ -47,4 +47,23 @@ int positive_finite_rank(const GiNaC::ex& e) {
   return -1;
 }
 
+const std::vector<BinaryFormat>& emitted_formats() {
+  static const std::vector<BinaryFormat> formats = {{"float", 24, -125, 128}, {"double", 53, -1021, 1024}};
+  return formats;
+}
+
+std::optional<GiNaC::numeric> value_in(const GiNaC::ex& constant, const BinaryFormat& format) {
+  const GiNaC::numeric two(2);
+  // min_exponent − 1 is even in both formats, so √smallest_normal is a power of two.
+  const GiNaC::numeric smallest = two.power(format.min_exponent - 1);
+  const GiNaC::numeric mass_low = 4 * two.power((format.min_exponent - 1) / 2);
+  const GiNaC::numeric moderate = two.power(-(format.max_exponent / 4 - 2));
+  if (constant.is_equal(smallest_normal())) return smallest;
+  if (constant.is_equal(plain_mass_low())) return mass_low;
+  if (constant.is_equal(plain_mass_high())) return GiNaC::inverse(mass_low);
+  if (constant.is_equal(moderate_low())) return moderate;
+  if (constant.is_equal(moderate_high())) return GiNaC::inverse(moderate);
+  return std::nullopt;
+}
+
 }  // namespace billiards::derive

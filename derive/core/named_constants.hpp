@@ -5,6 +5,8 @@
 
 #include <ginac/ginac.h>
 
+#include <optional>
+#include <string>
 #include <vector>
 
 namespace billiards::derive {
@@ -36,5 +38,21 @@ bool is_named_constant(const GiNaC::ex& e);
 /// moderate_low 2 (2^−30, 2^−254), moderate_high 3 (2^30, 2^254), plain_mass_high 4 (2^61, 2^509); −1
 /// for anything else (+∞ included).
 int positive_finite_rank(const GiNaC::ex& e);
+
+/// An IEEE binary format in the terms of std::numeric_limits: `digits` of significand, normal numbers
+/// from 2^(min_exponent − 1) up to below 2^max_exponent.
+struct BinaryFormat {
+  std::string type;  ///< its C++ type, "float" or "double"
+  int digits;
+  int min_exponent;
+  int max_exponent;
+};
+/// float (binary32) and double (binary64), the formats the kernels are emitted for.
+const std::vector<BinaryFormat>& emitted_formats();
+
+/// The exact value in `format` of a positive finite named constant, from its definition:
+/// smallest_normal 2^(min_exponent − 1), plain_mass_low 4 √smallest_normal, moderate_low
+/// 2^−(max_exponent/4 − 2), each high end the inverse of its low end. Nothing for +∞ or anything else.
+std::optional<GiNaC::numeric> value_in(const GiNaC::ex& constant, const BinaryFormat& format);
 
 }  // namespace billiards::derive

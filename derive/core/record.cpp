@@ -24,7 +24,38 @@ const Claim& Recorder::add(Claim claim) {
   }
   check(claim);
   record_.claims.push_back(std::move(claim));
+  clear_claim_being_built();
   return record_.claims.back();
+}
+
+void record_steps(Record& record, const std::function<void(Recorder&)>& steps) {
+  Recorder recorder(record);
+  clear_claim_being_built();
+  try {
+    steps(recorder);
+  } catch (const std::exception& error) {
+    const std::string step = recorder.current_section().empty() ? "(before the first step)"
+                                                                : "`" + recorder.current_section() + "`";
+    const std::string& building = claim_being_built();
+    std::string where = "the step " + step + " stopped ";
+    if (!building.empty()) {
+      where += "while building the claim `" + building + "`";
+    } else if (!record.claims.empty()) {
+      where += "after the claim `" + record.claims.back().id + "`, outside any claim";
+    } else {
+      where += "before its first claim";
+    }
+    clear_claim_being_built();
+    Claim stopped;
+    stopped.id = "derivation.stopped";
+    stopped.section = recorder.current_section();
+    stopped.statement = "Every step of the derivation runs to its end.";
+    stopped.method = "The derivation's steps were run in order; one threw an exception.";
+    stopped.verdict = Verdict::failed;
+    stopped.failure = where + ": " + error.what();
+    record.claims.push_back(std::move(stopped));
+    clear_claim_being_built();
+  }
 }
 
 bool Recorder::known(const std::string& id) const {

@@ -6,6 +6,7 @@
 
 #include <ginac/ginac.h>
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -41,12 +42,20 @@ class Recorder {
   /// Checks `claim` (check() never throws) and appends it. Throws std::logic_error when it depends on
   /// an id not recorded before it, or repeats an id: a mistake in the model, not in the algebra.
   const Claim& add(Claim claim);
+  /// The id of the section (step) claims are placed in now; empty before the first.
+  const std::string& current_section() const { return current_section_; }
 
  private:
   bool known(const std::string& id) const;
   Record& record_;
   std::string current_section_;
 };
+
+/// Runs a model's steps on `record` through one Recorder. An exception thrown anywhere in them (a slip
+/// such as GiNaC's "power::eval(): division by zero", outside any check) does not escape: it is recorded
+/// as the failed claim `derivation.stopped`, whose failure names the step it stopped in and the claim
+/// being built, so the audit of what was derived is still written and the model's headers are not.
+void record_steps(Record& record, const std::function<void(Recorder&)>& steps);
 
 struct Summary {
   int verified = 0;

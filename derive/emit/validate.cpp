@@ -153,7 +153,7 @@ class Validation {
   // square roots of perfect squares taken, |…| resolved by the branch's facts and every remaining |…|
   // oriented alike.
   ex comparable(const ex& e, const std::vector<ex>& facts) const {
-    ex out = take_square_roots(resolve_powers_of_two(e.subs(kernel_.in_claim_terms)));
+    ex out = take_square_roots(expand_radicands(resolve_powers_of_two(e.subs(kernel_.in_claim_terms))));
     for (const ex& fact : facts) {
       const ex in_terms = fact.subs(kernel_.in_claim_terms);
       if (!GiNaC::is_a<GiNaC::relational>(in_terms)) continue;
@@ -165,6 +165,18 @@ class Validation {
       out = resolve_absolute_values(out, in_terms.lhs() - in_terms.rhs(), negative ? -1 : +1);
     }
     return orient_absolute_values(out);
+  }
+
+  // Every radicand expanded, so that one quantity written two ways (b² − a c and (w·w) r² − |p × w|²
+  // in components) is one expression under the root.
+  static ex expand_radicands(const ex& e) {
+    if (GiNaC::is_a<GiNaC::power>(e) && !e.op(1).info(GiNaC::info_flags::integer)) {
+      return GiNaC::pow(expand_radicands(e.op(0)).expand(), e.op(1));
+    }
+    struct map_radicands : GiNaC::map_function {
+      ex operator()(const ex& operand) override { return expand_radicands(operand); }
+    } recurse;
+    return e.map(recurse);
   }
 
   static ex take_square_roots(const ex& e) {

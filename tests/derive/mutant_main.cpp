@@ -1,6 +1,7 @@
 // billiards-derive-mutant: billiards-derive with one mutation of a model's kernels applied after the
 // model is built, for the mutation suite. Usage: billiards-derive-mutant MUTATION [billiards-derive
-// options]; `--list` prints the mutations, one "name kernel" line each.
+// options]; `--list` prints the mutations, one "name culprit" line each ("name culprit harmless" for
+// one that must pass).
 #include "models/parkin2023/paper.hpp"
 #include "models/spinning/spinning.hpp"
 #include "mutations.hpp"
@@ -16,26 +17,37 @@ int main(int argc, char** argv) {
   struct Suite {
     std::string model;
     std::function<Derivation()> derive;
-    const std::vector<testing::Mutation>& mutations;
+    std::vector<testing::Mutation> mutations;
   };
-  const std::vector<Suite> suites = {
-      {"parkin2023", [] { return parkin2023::derive(); }, testing::paper_mutations()},
-      {"spinning", [] { return spinning::derive(); }, testing::spin_mutations()}};
+  const auto both = [](std::vector<testing::Mutation> first, const std::vector<testing::Mutation>& then) {
+    first.insert(first.end(), then.begin(), then.end());
+    return first;
+  };
+  const std::vector<Suite> suites = {{"parkin2023", [] { return parkin2023::derive(); },
+                                      both(testing::paper_mutations(), testing::paper_class_mutations())},
+                                     {"spinning", [] { return spinning::derive(); },
+                                      both(testing::spin_mutations(), testing::spin_class_mutations())}};
   const std::string wanted = argc > 1 ? argv[1] : "";
   if (wanted == "--list") {
     for (const Suite& suite : suites) {
-      for (const testing::Mutation& m : suite.mutations) std::cout << m.name << " " << m.kernel << "\n";
+      for (const testing::Mutation& m : suite.mutations)
+        std::cout << m.name << " " << m.kernel << (m.harmless ? " harmless" : "") << "\n";
     }
     return 0;
   }
   for (const Suite& suite : suites) {
     for (const testing::Mutation& mutation : suite.mutations) {
       if (mutation.name != wanted) continue;
-      const std::vector<ModelEntry> models = {{suite.model, [&suite, &mutation] {
-                                                 Derivation derivation = suite.derive();
-                                                 testing::apply(mutation, derivation);
-                                                 return derivation;
-                                               }}};
+      std::vector<ModelEntry> models = {{suite.model, [&suite, &mutation] {
+                                           Derivation derivation = suite.derive();
+                                           testing::apply(mutation, derivation);
+                                           return derivation;
+                                         }}};
+      if (mutation.edit_printed) {
+        models.front().edit_printed = [&mutation](const std::string& path, const std::string& text) {
+          return path == mutation.header ? mutation.edit_printed(text) : text;
+        };
+      }
       std::vector<const char*> rest{argv[0]};
       for (int i = 2; i < argc; ++i) rest.push_back(argv[i]);
       return derive_main(static_cast<int>(rest.size()), rest.data(), models);

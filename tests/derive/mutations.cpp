@@ -221,6 +221,8 @@ const std::vector<Mutation>& spin_mutations() {
 }
 
 void apply(const Mutation& mutation, Derivation& derivation) {
+  if (mutation.edit_derivation) mutation.edit_derivation(derivation);
+  if (!mutation.edit) return;
   for (std::vector<Kernel>* list : {&derivation.kernels, &derivation.reference_kernels}) {
     for (Kernel& kernel : *list) {
       if (kernel.name == mutation.kernel) {
@@ -230,6 +232,25 @@ void apply(const Mutation& mutation, Derivation& derivation) {
     }
   }
   throw std::invalid_argument("mutation " + mutation.name + ": no kernel " + mutation.kernel);
+}
+
+std::string edit_function(const std::string& text, const std::string& name, const std::string& from,
+                          const std::string& to) {
+  // The definition: " name(" on a line that ends its signature with "noexcept {", the body up to the
+  // "}" that starts a line.
+  for (std::size_t at = text.find(" " + name + "("); at != std::string::npos;
+       at = text.find(" " + name + "(", at + 1)) {
+    const std::size_t open = text.find(") noexcept {\n", at);
+    if (open == std::string::npos || text.find(';', at) < open) continue;
+    const std::size_t end = text.find("\n}\n", open);
+    std::string body = text.substr(open, end - open);
+    if (body.find(from) == std::string::npos)
+      throw std::invalid_argument("the function " + name + " has no " + from);
+    for (std::size_t i = body.find(from); i != std::string::npos; i = body.find(from, i + to.size()))
+      body.replace(i, from.size(), to);
+    return text.substr(0, open) + body + text.substr(end);
+  }
+  throw std::invalid_argument("no function " + name + " in the header");
 }
 
 }  // namespace billiards::derive::testing

@@ -294,14 +294,19 @@ Kernel time_of_impact_kernel(const TimeOfImpact& toi) {
   const GiNaC::symbol gap("gap"), discriminant("discriminant"), root_argument("root_argument"),
       contact_time("contact_time");
   const lst in_kernel{qb == b_in_dots, qc == gap};  // the stable form c/(√D − b) has no a
-  // The dot products in the claims' terms, inverting what was read off: b = pv, c = pp − r², a = vv,
-  // D = a r² − |p × w|², and √D for the claims' s.
-  const GiNaC::exmap time_terms{
-      {pv, qb},
-      {pp, GiNaC::lsolve(c_in_dots == qc, pp)},
-      {vv, GiNaC::lsolve(a_in_dots == qa, vv)},
-      {cross_squared, GiNaC::lsolve(lagrange_in_dots.subs(vv == qa) == qd, cross_squared)},
-      {root_of_d, GiNaC::sqrt(qd)}};
+  // What each parameter and each symbol of the claims means, written from the definitions (never solved
+  // from the kernel's own expressions): pp = p·p, pv = p·w, vv = w·w, cross_squared = |p × w|² in
+  // components, and the claims' a = w·w, b = p·w, c = p·p − r², D = b² − a c, √D. Both sides are
+  // compared in the components, so a kernel that forms anything but these quantities fails.
+  const GiNaC::exmap time_terms{{pp, dot(p, p)},
+                                {pv, dot(p, w)},
+                                {vv, dot(w, w)},
+                                {cross_squared, dot(cross, cross)},
+                                {qa, coefficient_a},
+                                {qb, coefficient_b},
+                                {qc, coefficient_c},
+                                {qd, quarter_discriminant},
+                                {root_of_d, GiNaC::sqrt(quarter_discriminant)}};
   using Kind = Guard::Kind;
   return {
       .name = "time_of_impact",

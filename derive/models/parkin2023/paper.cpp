@@ -54,47 +54,48 @@ Derivation derive(const Definitions& definitions) {
   const Setting setting{definitions};
   Derivation derivation;
   derivation.model = info();
-  Recorder record(derivation);
+  record_steps(derivation, [&](Recorder& record) {
+    // The paper.
+    record_premises(record, definitions);
+    split_along_and_across(record, setting);
+    frictionless_contact(record);
+    conservation_along_n(record, setting);
+    const Quadratic quadratic = the_quadratic(record, setting);
+    const Discriminant discriminant = the_discriminant(record, definitions, quadratic);
+    const Roots roots = the_roots(record, quadratic, discriminant);
+    putting_it_together(record, setting, quadratic, discriminant, roots);
+    const Selection selection = choosing_the_root(record, quadratic, discriminant, roots);
+    the_collision_formula(record, setting, discriminant, selection);
+    sanity_checks(record, setting, selection);
+    the_cushion(record, setting, selection);
+    end_to_end(record, setting, selection);
+    const KernelPieces pieces = what_the_emitter_prints(record, selection);
 
-  // The paper.
-  record_premises(record, definitions);
-  split_along_and_across(record, setting);
-  frictionless_contact(record);
-  conservation_along_n(record, setting);
-  const Quadratic quadratic = the_quadratic(record, setting);
-  const Discriminant discriminant = the_discriminant(record, definitions, quadratic);
-  const Roots roots = the_roots(record, quadratic, discriminant);
-  putting_it_together(record, setting, quadratic, discriminant, roots);
-  const Selection selection = choosing_the_root(record, quadratic, discriminant, roots);
-  the_collision_formula(record, setting, discriminant, selection);
-  sanity_checks(record, setting, selection);
-  the_cushion(record, setting, selection);
-  end_to_end(record, setting, selection);
-  const KernelPieces pieces = what_the_emitter_prints(record, selection);
+    // Beyond the paper.
+    record.section("beyond", "Beyond the paper",
+                   "What engines need and the paper does not cover: a coefficient of restitution, "
+                   "immovable bodies, directions that are not unit vectors, contacts that are "
+                   "already separating, and the time at which two moving balls first touch. Derived "
+                   "and checked like the paper's claims; the paper states none of them.");
+    const Restitution with_restitution = restitution(record, definitions);
+    const MassRatios ratios = immovable_bodies(record, with_restitution);
+    const PlainRange plain = plain_range(record, with_restitution, ratios);
+    const Direction direction = any_direction(record, setting, with_restitution);
+    const Approaching approaching = approaching_contacts(record, definitions, selection, with_restitution);
+    const TimeOfImpact toi = time_of_impact_quadratic(record);
+    time_of_impact_cases(record, toi);
 
-  // Beyond the paper.
-  record.section("beyond", "Beyond the paper",
-                 "What engines need and the paper does not cover: a coefficient of restitution, "
-                 "immovable bodies, directions that are not unit vectors, contacts that are "
-                 "already separating, and the time at which two moving balls first touch. Derived "
-                 "and checked like the paper's claims; the paper states none of them.");
-  const Restitution with_restitution = restitution(record, definitions);
-  const MassRatios ratios = immovable_bodies(record, with_restitution);
-  const PlainRange plain = plain_range(record, with_restitution, ratios);
-  const Direction direction = any_direction(record, setting, with_restitution);
-  const Approaching approaching = approaching_contacts(record, definitions, selection, with_restitution);
-  const TimeOfImpact toi = time_of_impact_quadratic(record);
-  time_of_impact_cases(record, toi);
-
-  // What each kernel returns, then the kernels themselves.
-  record.section("kernel_outputs", "What each emitted kernel computes",
-                 "One claim per emitted quantity: what the kernel returns, derived from the steps above and "
-                 "compared with the formula the source prints. Every kernel is proven equal to the derived "
-                 "side of its claim before it is printed (see \"The emitted kernels\" below).");
-  kernel_outputs(record, setting, selection, with_restitution, direction, approaching);
-  derivation.kernels = collision_kernels(setting, pieces, ratios, plain, direction);
-  derivation.kernels.push_back(time_of_impact_kernel(toi));
-  derivation.reference_kernels = reference_kernels(quadratic);
+    // What each kernel returns, then the kernels themselves.
+    record.section(
+        "kernel_outputs", "What each emitted kernel computes",
+        "One claim per emitted quantity: what the kernel returns, derived from the steps above and "
+        "compared with the formula the source prints. Every kernel is proven equal to the derived "
+        "side of its claim before it is printed (see \"The emitted kernels\" below).");
+    kernel_outputs(record, setting, selection, with_restitution, direction, approaching);
+    derivation.kernels = collision_kernels(setting, pieces, ratios, plain, direction);
+    derivation.kernels.push_back(time_of_impact_kernel(toi));
+    derivation.reference_kernels = reference_kernels(quadratic);
+  });
   return derivation;
 }
 

@@ -45,17 +45,17 @@ ModelInfo info() {
 Derivation derive() {
   Derivation derivation;
   derivation.model = info();
-  Recorder record(derivation);
-  const Contact contact;
-
-  record_premises(record);
-  const Impulse impulse = the_impulse(record, contact);
-  conservation(record, contact, impulse);
-  const Friction friction = the_friction(record, contact, impulse);
-  the_throw(record, contact, friction);
-  const Cloth cloth = the_cloth(record);
-  kernel_claims(record, contact, impulse, friction);
-  derivation.kernels = spin_kernels(cloth);
+  record_steps(derivation, [&](Recorder& record) {
+    const Contact contact;
+    record_premises(record);
+    const Impulse impulse = the_impulse(record, contact);
+    conservation(record, contact, impulse);
+    const Friction friction = the_friction(record, contact, impulse);
+    the_throw(record, contact, friction);
+    const Cloth cloth = the_cloth(record);
+    kernel_claims(record, contact, impulse, friction);
+    derivation.kernels = spin_kernels(cloth);
+  });
   return derivation;
 }
 

@@ -1,0 +1,37 @@
+// Proven is what is printed: a header the emitter printed is read back (cpp_reader.hpp) and every
+// function in it proven again from its text, before the header is written. Generic: it reads a header,
+// the kernels it was printed from and the claims, never a model.
+#pragma once
+
+#include "core/claim.hpp"
+#include "emit/kernel.hpp"
+#include "emit/validate.hpp"
+
+#include <string>
+#include <vector>
+
+namespace billiards::derive {
+
+/// Reads `header` back and proves what it prints, function by function:
+/// - each kernel (for a kernel with a fast path, `full_<name>`) becomes a kernel again from its text —
+///   parameters, `const Scalar` steps, guarded steps and their `if` lines, the return — and is
+///   validated against the claims (validate_kernel), with each guard's kind and claim taken from the
+///   form; it must also be the form, step for step: the same steps, expressions, conditions (the same
+///   relational operator) and outputs, once the hoisted common subexpressions are put back. Every number
+///   must be written `Scalar(d)` with d exact in float;
+/// - each kernel with a fast path is the dispatch `if (predicate(…)) return fast(…); return
+///   full_<name>(…);`, every call passing the callee's parameters by name, in order, and naming the
+///   predicate and the fast kernel of the form;
+/// - each predicate's comparisons are the fast path's conditions, and its bit comparison, where printed,
+///   tests the same interval;
+/// - each named constant's float and double values are its definition's (core/named_constants.hpp),
+///   spelled with the literal suffix of the type, and its generic form gives the same values;
+/// - absolute_value is |x|.
+/// A function the header defines that none of these covers is a problem too (support code that is bit
+/// manipulation — binary_exponent, times_power_of_two, bits_above, larger, orders_as_bits — is checked
+/// over every exponent, on the host path and the device path, by the support-code tests).
+/// `kernels` are the ones printed into this header. Never throws.
+std::vector<KernelProblem> prove_printed(const std::string& header, const std::vector<Kernel>& kernels,
+                                         const std::vector<Claim>& claims);
+
+}  // namespace billiards::derive

@@ -1,0 +1,166 @@
+// The mutation suite by class: for each kind of slip — in the printer, the emitter, the support code it
+// prints, a parameter's meaning, a claim no kernel cites — mutations that must fail the run, naming what
+// they broke; and a comment, which must not.
+#include "core/claim.hpp"
+#include "mutations.hpp"
+
+#include <stdexcept>
+
+namespace billiards::derive::testing {
+
+using GiNaC::ex;
+
+namespace {
+
+// A mutation of the header `header`'s text: `from` replaced by `to` in the body of `function`.
+Mutation printed(const std::string& name, const std::string& culprit, const std::string& header,
+                 const std::string& function, const std::string& from, const std::string& to) {
+  return {.name = name,
+          .kernel = culprit,
+          .header = header,
+          .edit_printed = [function, from, to](const std::string& text) {
+            return edit_function(text, function, from, to);
+          }};
+}
+
+const std::string kernels_header = "billiards/kernels.hpp";
+const std::string spin_header = "billiards/spin_kernels.hpp";
+
+// The claim `id` with its paper side changed, checked again: a slip in a claim that no kernel cites.
+Mutation uncited_claim_wrong(const std::string& name, const std::string& id) {
+  return {.name = name, .kernel = id, .edit_derivation = [id](Derivation& derivation) {
+            for (Claim& claim : derivation.claims) {
+              if (claim.id != id) continue;
+              claim.paper_expression = claim.paper_expression + GiNaC::symbol("slip");
+              check(claim);
+              return;
+            }
+            throw std::invalid_argument("no claim " + id);
+          }};
+}
+
+// Every kernel named `kernel` or `plain_<kernel>` with the meanings of parameters `a` and `b` swapped.
+Mutation meanings_swapped(const std::string& name, const std::string& kernel, const std::string& a,
+                          const std::string& b) {
+  return {.name = name, .kernel = kernel, .edit_derivation = [kernel, a, b](Derivation& derivation) {
+            for (Kernel& k : derivation.kernels) {
+              if (k.name != kernel && k.name != "plain_" + kernel) continue;
+              ex first, second;
+              for (const auto& [parameter, meaning] : k.in_claim_terms) {
+                const std::string n = GiNaC::ex_to<GiNaC::symbol>(parameter).get_name();
+                if (n == a) first = parameter;
+                if (n == b) second = parameter;
+              }
+              if (first.is_zero() || second.is_zero())
+                throw std::invalid_argument(kernel + " has no meaning of " + a);
+              std::swap(k.in_claim_terms[first], k.in_claim_terms[second]);
+            }
+          }};
+}
+
+}  // namespace
+
+const std::vector<Mutation>& paper_class_mutations() {
+  static const std::vector<Mutation> mutations = {
+      // The printer: each relational and arithmetic operator, literals and their suffixes.
+      printed("printer_less_as_less_or_equal", "full_normal_velocity_change", kernels_header,
+              "full_normal_velocity_change", " < smallest_normal", " <= smallest_normal"),
+      printed("printer_less_or_equal_as_less", "time_of_impact", kernels_header, "time_of_impact",
+              "discriminant <= Scalar(0)", "discriminant < Scalar(0)"),
+      printed("printer_greater_or_equal_as_greater", "time_of_impact", kernels_header, "time_of_impact",
+              "pv >= Scalar(0)", "pv > Scalar(0)"),
+      printed("printer_plus_as_minus", "plain_normal_velocity_change", kernels_header,
+              "plain_normal_velocity_change", "Scalar(1) + restitution", "Scalar(1) - restitution"),
+      printed("printer_minus_as_plus", "plain_elastic_normal_velocity_change", kernels_header,
+              "plain_elastic_normal_velocity_change", "v2n - v1n", "v2n + v1n"),
+      printed("printer_times_as_divided", "plain_elastic_normal_velocity_change", kernels_header,
+              "plain_elastic_normal_velocity_change", "first_impulse_coefficient * relative_normal_speed",
+              "first_impulse_coefficient / relative_normal_speed"),
+      printed("printer_divided_as_times", "time_of_impact", kernels_header, "time_of_impact", "gap / (",
+              "gap * ("),
+      printed("printer_negation_dropped", "cushion_normal_velocity_change", kernels_header,
+              "cushion_normal_velocity_change", "return -(Scalar(2) * vn);", "return (Scalar(2) * vn);"),
+      printed("printer_bare_double_literal", "plain_elastic_normal_velocity_change", kernels_header,
+              "plain_elastic_normal_velocity_change", "Scalar(2) * m2", "2.0 * m2"),
+      printed("printer_float_suffix_dropped", "plain_mass_low", kernels_header, "plain_mass_low<float>",
+              "0x1p-61f", "0x1p-61"),
+      printed("printer_float_suffix_on_double", "plain_mass_low", kernels_header, "plain_mass_low<double>",
+              "0x1p-509", "0x1p-509f"),
+      // The emitter: the arguments of every call a fast path prints, and which plain form it takes.
+      printed("emitter_fast_call_masses_swapped", "normal_velocity_change", kernels_header,
+              "normal_velocity_change", "plain_normal_velocity_change(m1, m2,",
+              "plain_normal_velocity_change(m2, m1,"),
+      printed("emitter_full_call_speeds_swapped", "elastic_normal_velocity_change", kernels_header,
+              "elastic_normal_velocity_change", "full_elastic_normal_velocity_change(m1, m2, v1n, v2n)",
+              "full_elastic_normal_velocity_change(m1, m2, v2n, v1n)"),
+      printed("emitter_predicate_arguments_swapped", "direction_velocity_change", kernels_header,
+              "direction_velocity_change", "within_plain_mass_range(m1, m2)",
+              "within_plain_mass_range(m2, m1)"),
+      printed("emitter_fast_path_takes_another_plain_form", "direction_velocity_change", kernels_header,
+              "direction_velocity_change", "return plain_direction_velocity_change(",
+              "return plain_approaching_direction_velocity_change("),
+      // Printed support code: a wrong constant, an off-by-one exponent, a wrong range end, |x|.
+      printed("support_constant_off_by_one", "plain_mass_low", kernels_header, "plain_mass_low<double>",
+              "0x1p-509", "0x1p-508"),
+      printed("support_generic_loop_off_by_one", "plain_mass_low", kernels_header, "plain_mass_low",
+              "min_exponent) / 2;", "min_exponent) / 2 + 1;"),
+      printed("support_smallest_normal_off_by_one", "smallest_normal", kernels_header,
+              "smallest_normal<float>", "0x1p-126f", "0x1p-125f"),
+      printed("support_predicate_range_end", "within_plain_mass_range", kernels_header,
+              "within_plain_mass_range", "m2 <= plain_mass_high<Scalar>()", "m2 <= infinity<Scalar>()"),
+      printed("support_predicate_bits_range_end", "within_plain_mass_range", kernels_header,
+              "within_plain_mass_range", "bits_above(plain_mass_high<Scalar>(), low)",
+              "bits_above(infinity<Scalar>(), low)"),
+      printed("support_absolute_value_sign", "absolute_value", kernels_header, "absolute_value", "? -x : x",
+              "? x : -x"),
+      // Parameter meanings, written from the definitions: D with its operands swapped (−D), a meaning
+      // negated or two swapped.
+      {"meaning_discriminant_operands_swapped", "time_of_impact",
+       [](Kernel& k) {
+         for (KernelStep& step : k.steps) {
+           if (step.name.get_name() == "discriminant") step.expression = -step.expression;
+         }
+       }},
+      {.name = "meaning_pv_negated",
+       .kernel = "time_of_impact",
+       .edit =
+           [](Kernel& k) {
+             for (auto& [parameter, meaning] : k.in_claim_terms) {
+               if (GiNaC::ex_to<GiNaC::symbol>(parameter).get_name() == "pv") meaning = -meaning;
+             }
+           }},
+      meanings_swapped("meaning_direction_speeds_swapped", "direction_velocity_change", "v1d", "v2d"),
+      // A claim that no kernel cites.
+      uncited_claim_wrong("uncited_claim_momentum_along_n", "along_n.momentum"),
+      // A comment changes nothing that is proven.
+      {.name = "comment_only",
+       .kernel = "plain_elastic_normal_velocity_change",
+       .header = kernels_header,
+       .edit_printed =
+           [](const std::string& text) {
+             return edit_function(text, "plain_elastic_normal_velocity_change", "  const Scalar total_mass",
+                                  "  // the sum of the masses\n  const Scalar total_mass");
+           },
+       .harmless = true},
+  };
+  return mutations;
+}
+
+const std::vector<Mutation>& spin_class_mutations() {
+  static const std::vector<Mutation> mutations = {
+      printed("printer_literal_not_exact_in_float", "tangential_inverse_effective_mass", spin_header,
+              "tangential_inverse_effective_mass", "Scalar(3.5) / m1", "Scalar(3.4) / m1"),
+      printed("printer_literal_misspelled", "spin_change", spin_header, "spin_change", "Scalar(2.5)",
+              "Scalar(2.25)"),
+      printed("emitter_fast_call_arguments_swapped", "slide_time", spin_header, "slide_time",
+              "plain_slide_time(slip_speed, sliding_friction, gravity)",
+              "plain_slide_time(slip_speed, gravity, sliding_friction)"),
+      printed("support_moderate_loop_off_by_one", "moderate_low", spin_header, "moderate_low",
+              "max_exponent / 4 - 2", "max_exponent / 4 - 1"),
+      meanings_swapped("meaning_roll_time_speed_and_gravity_swapped", "roll_time", "speed", "gravity"),
+      uncited_claim_wrong("uncited_claim_linear_momentum", "conservation.linear_momentum"),
+  };
+  return mutations;
+}
+
+}  // namespace billiards::derive::testing

@@ -1,0 +1,137 @@
+// Proven is what is printed: the reader of the emitted C++, the proof of a header from its text, and a
+// derivation step that stops.
+#include "core/record.hpp"
+#include "emit/cpp_reader.hpp"
+#include "emit/emitter.hpp"
+#include "emit/read_back.hpp"
+#include "models/parkin2023/paper.hpp"
+#include "models/spinning/spinning.hpp"
+
+#include <catch2/catch.hpp>
+
+#include <string>
+
+using namespace billiards::derive;
+
+namespace {
+
+std::string replaced(std::string text, const std::string& from, const std::string& to) {
+  const std::size_t at = text.find(from);
+  REQUIRE(at != std::string::npos);
+  return text.replace(at, from.size(), to);
+}
+
+std::string reasons(const std::vector<KernelProblem>& problems) {
+  std::string out;
+  for (const KernelProblem& p : problems) out += p.kernel + ": " + p.reason + "\n";
+  return out;
+}
+
+}  // namespace
+
+TEST_CASE("The reader of the emitted C++", "[derive][read_back]") {
+  SECTION("operators bind as in C++") {
+    CHECK(spelled(read_expression("a + b * c - d / e")) == "((a + (b * c)) - (d / e))");
+    CHECK(spelled(read_expression("-(a - b) < c && d <= e")) == "((-(a - b) < c) && (d <= e))");
+    CHECK(spelled(read_expression("x < Scalar(0) ? -x : x")) == "((x < Scalar(0)) ? -x : x)");
+    CHECK(spelled(read_expression("smallest_normal<Scalar>() <= m1")) == "(smallest_normal<Scalar>() <= m1)");
+    CHECK(spelled(read_expression("(std::bit_cast<Bits>(x) >> stored) & all_ones")) ==
+          "((std::bit_cast<Bits>(x) >> stored) & all_ones)");
+  }
+  SECTION("a function template, a specialisation and their statements") {
+    const std::vector<CppFunction> functions = read_functions(
+        "namespace n {\n"
+        "template <typename Scalar>\nstruct Pair {\n  Scalar first;\n};\n"
+        "/// doc\ntemplate <typename Scalar>\nBILLIARDS_HOST_DEVICE constexpr Scalar f(Scalar a, Scalar b) "
+        "noexcept {\n"
+        "  const Scalar s = a + b;  // a comment\n  Scalar t = s;\n  if (s < Scalar(0)) t = -s;\n  return "
+        "t;\n}\n"
+        "template <>\nBILLIARDS_HOST_DEVICE constexpr float g<float>() noexcept {\n  return 0x1p-61f;\n}\n"
+        "}  // namespace n\n");
+    REQUIRE(functions.size() == 2);
+    CHECK(functions[0].name == "f");
+    CHECK(functions[0].result == "Scalar");
+    CHECK(functions[0].parameters.size() == 2);
+    REQUIRE(functions[0].body.size() == 4);
+    CHECK(functions[0].body[0].type == "const Scalar");
+    CHECK(functions[0].body[2].kind == CppStatement::Kind::if_);
+    CHECK(functions[1].name == "g");
+    CHECK(functions[1].specialization == "float");
+    CHECK(spelled(*functions[1].body[0].value) == "0x1p-61f");
+  }
+  SECTION("anything outside the subset is an error naming the line") {
+    CHECK_THROWS_AS(read_functions("int f() {\n  return 1 +;\n}\n"), CppReadError);
+    CHECK_THROWS_WITH(read_functions("int f() {\n  while (1) {}\n}\n"), Catch::Contains("line 2"));
+  }
+}
+
+TEST_CASE("A printed header is proven from its text", "[derive][read_back]") {
+  for (const Derivation& derivation : {parkin2023::derive(), spinning::derive()}) {
+    const std::string header = kernels_header(derivation, "{}");
+    INFO(derivation.model.name);
+    CHECK(reasons(prove_printed(header, derivation.kernels, derivation.claims)).empty());
+    // Each of these is a slip the reader must see: a relational operator changed, a function printed
+    // that nothing proves, a kernel missing.
+    const bool spinning = derivation.model.name == "spinning";
+    const std::string from = spinning ? "if (m2 < m1)" : "if (gap < Scalar(0))";
+    const std::string to = spinning ? "if (m2 <= m1)" : "if (gap <= Scalar(0))";
+    CHECK_FALSE(prove_printed(replaced(header, from, to), derivation.kernels, derivation.claims).empty());
+    const std::string extra = replaced(
+        header, "/// |x|,",
+        "template <typename Scalar>\nScalar twice(Scalar x) noexcept {\n  return x + x;\n}\n/// |x|,");
+    CHECK_THAT(reasons(prove_printed(extra, derivation.kernels, derivation.claims)),
+               Catch::Contains("twice: as printed: is printed but nothing reads it back"));
+    std::vector<Kernel> more = derivation.kernels;
+    more.push_back(more.front());
+    more.back().name = "unprinted_kernel";
+    more.back().fast_path.reset();
+    CHECK_THAT(reasons(prove_printed(header, more, derivation.claims)),
+               Catch::Contains("unprinted_kernel: as printed: the function is not in the header"));
+  }
+  SECTION("the reference header too") {
+    const Derivation derivation = parkin2023::derive();
+    const std::string header = reference_kernels_header(derivation, "{}");
+    CHECK(reasons(prove_printed(header, derivation.reference_kernels, derivation.claims)).empty());
+    CHECK_FALSE(prove_printed(replaced(header, "Scalar(4) * quadratic_a", "Scalar(2) * quadratic_a"),
+                              derivation.reference_kernels, derivation.claims)
+                    .empty());
+  }
+  SECTION("text that cannot be read is a problem, not an exception") {
+    const Derivation derivation = parkin2023::derive();
+    CHECK_THAT(reasons(prove_printed("int f( {", derivation.kernels, derivation.claims)),
+               Catch::Contains("cannot be read back"));
+  }
+}
+
+TEST_CASE("A step that stops names itself and the claim it was building", "[derive][read_back]") {
+  const GiNaC::symbol x("x");
+  SECTION("inside a claim") {
+    Record record;
+    record_steps(record, [&](Recorder& recorder) {
+      recorder.section("first_step", "First", "");
+      recorder.add({.id = "first.fine", .paper_expression = x, .derived_expression = x});
+      recorder.section("second_step", "Second", "");
+      recorder.add({.id = "second.divides_by_zero", .paper_expression = x, .derived_expression = x / 0});
+    });
+    REQUIRE(record.claims.size() == 2);
+    const Claim& stopped = record.claims.back();
+    CHECK(stopped.id == "derivation.stopped");
+    CHECK(stopped.verdict == Verdict::failed);
+    CHECK(stopped.section == "second_step");
+    CHECK_THAT(stopped.failure, Catch::Contains("the step `second_step` stopped while building the claim "
+                                                "`second.divides_by_zero`"));
+    CHECK_THAT(stopped.failure, Catch::Contains("division by zero"));
+  }
+  SECTION("between claims") {
+    Record record;
+    record_steps(record, [&](Recorder& recorder) {
+      recorder.section("only_step", "Only", "");
+      recorder.add({.id = "only.fine", .paper_expression = x, .derived_expression = x});
+      const GiNaC::ex broken = x / 0;
+      recorder.add({.id = "only.never", .paper_expression = broken, .derived_expression = x});
+    });
+    CHECK_THAT(
+        record.claims.back().failure,
+        Catch::Contains("the step `only_step` stopped after the claim `only.fine`, outside any claim"));
+  }
+}
