@@ -54,7 +54,6 @@ void record_steps(Record& record, const std::function<void(Recorder&)>& steps) {
     stopped.verdict = Verdict::failed;
     stopped.failure = where + ": " + error.what();
     record.claims.push_back(std::move(stopped));
-    clear_claim_being_built();
   }
 }
 

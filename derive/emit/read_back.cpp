@@ -19,12 +19,6 @@ using GiNaC::ex;
 
 namespace {
 
-// A statement or expression outside what a kernel may print.
-struct NotInSubset : std::runtime_error {
-  NotInSubset(int line, const std::string& what)
-      : std::runtime_error("line " + std::to_string(line) + ": " + what) {}
-};
-
 std::string symbol_name(const ex& e) { return GiNaC::ex_to<GiNaC::symbol>(e).get_name(); }
 
 // The named constants by their C++ spelling in a kernel.
@@ -67,15 +61,15 @@ ex to_expression(const CppExpression& e, const std::map<std::string, ex>& names)
   const auto operand = [&](std::size_t i) { return to_expression(e.operands.at(i), names); };
   switch (e.kind) {
     case Kind::literal:
-      throw NotInSubset(e.line, "the bare literal " + e.text + ": every number in a kernel is Scalar(d)");
+      throw CppReadError(e.line, "the bare literal " + e.text + ": every number in a kernel is Scalar(d)");
     case Kind::name: {
       const auto found = names.find(e.text);
       if (found == names.end())
-        throw NotInSubset(e.line, "reads " + e.text + ", which is no parameter or earlier step");
+        throw CppReadError(e.line, "reads " + e.text + ", which is no parameter or earlier step");
       return found->second;
     }
     case Kind::unary:
-      if (e.text != "-") throw NotInSubset(e.line, "the operator " + e.text + " in a kernel expression");
+      if (e.text != "-") throw CppReadError(e.line, "the operator " + e.text + " in a kernel expression");
       return -operand(0);
     case Kind::binary: {
       const std::string& op = e.text;
@@ -90,16 +84,16 @@ ex to_expression(const CppExpression& e, const std::map<std::string, ex>& names)
       if (op == ">=") return relational(operand(0), operand(1), relational::greater_or_equal);
       if (op == "==") return relational(operand(0), operand(1), relational::equal);
       if (op == "!=") return relational(operand(0), operand(1), relational::not_equal);
-      throw NotInSubset(e.line, "the operator " + op + " in a kernel expression");
+      throw CppReadError(e.line, "the operator " + op + " in a kernel expression");
     }
     case Kind::call: {
       const std::size_t arity = e.operands.size();
       if (e.text == "Scalar" && arity == 1 && e.operands[0].kind == Kind::literal) {
         const std::optional<GiNaC::numeric> value = decimal_value(e.operands[0].text);
         if (!value)
-          throw NotInSubset(e.line, "Scalar(" + e.operands[0].text + "): expected a decimal number");
+          throw CppReadError(e.line, "Scalar(" + e.operands[0].text + "): expected a decimal number");
         if (!exact_in_float(*value))
-          throw NotInSubset(e.line, "Scalar(" + e.operands[0].text + ") is not exact in float");
+          throw CppReadError(e.line, "Scalar(" + e.operands[0].text + ") is not exact in float");
         return *value;
       }
       const auto constant = constants_by_spelling().find(e.text);
@@ -108,12 +102,12 @@ ex to_expression(const CppExpression& e, const std::map<std::string, ex>& names)
       if (e.text == "times_power_of_two" && arity == 2) return times_power_of_two(operand(0), operand(1));
       if (e.text == "absolute_value" && arity == 1) return GiNaC::abs(operand(0));
       if (e.text == "std::sqrt" && arity == 1) return GiNaC::sqrt(operand(0));
-      throw NotInSubset(e.line, "the call " + spelled(e) + " in a kernel expression");
+      throw CppReadError(e.line, "the call " + spelled(e) + " in a kernel expression");
     }
     case Kind::conditional:
     case Kind::braced: break;
   }
-  throw NotInSubset(e.line, spelled(e) + " in a kernel expression");
+  throw CppReadError(e.line, spelled(e) + " in a kernel expression");
 }
 
 bool same_expression(const ex& a, const ex& b) {
@@ -245,10 +239,10 @@ class ReadBack {
     for (const ex& p : form.parameters) names[symbol_name(p)] = p;
     bool returned = false;
     for (const CppStatement& s : f.body) {
-      if (returned) throw NotInSubset(s.line, "a statement after the return");
+      if (returned) throw CppReadError(s.line, "a statement after the return");
       using Kind = CppStatement::Kind;
       if (s.kind == Kind::declaration && (s.type == "const Scalar" || s.type == "Scalar")) {
-        if (names.count(s.name)) throw NotInSubset(s.line, "the name " + s.name + " is defined twice");
+        if (names.count(s.name)) throw CppReadError(s.line, "the name " + s.name + " is defined twice");
         const GiNaC::symbol step(s.name);
         printed.steps.push_back({step, to_expression(*s.value, names)});
         names[s.name] = step;
@@ -256,14 +250,14 @@ class ReadBack {
                  s.body[0].kind == Kind::assignment && s.body[0].op == "=") {
         const std::string& target = s.body[0].name;
         if (printed.steps.empty() || printed.steps.back().name.get_name() != target)
-          throw NotInSubset(s.line,
-                            "an `if` that assigns " + target + ", which is not the step just declared");
+          throw CppReadError(s.line,
+                             "an `if` that assigns " + target + ", which is not the step just declared");
         KernelStep& step = printed.steps.back();
         const auto in_form = std::find_if(form.steps.begin(), form.steps.end(),
                                           [&](const KernelStep& k) { return k.name.get_name() == target; });
         const std::size_t index = step.guards.size();
         if (in_form == form.steps.end() || index >= in_form->guards.size())
-          throw NotInSubset(s.line, "a guard on " + target + " that the kernel's form does not have");
+          throw CppReadError(s.line, "a guard on " + target + " that the kernel's form does not have");
         const Guard& guard = in_form->guards[index];
         step.guards.push_back({to_expression(*s.condition, names), to_expression(*s.body[0].value, names),
                                guard.kind, guard.claim});
@@ -275,10 +269,10 @@ class ReadBack {
         }
         returned = true;
       } else {
-        throw NotInSubset(s.line, "a statement outside what a kernel prints");
+        throw CppReadError(s.line, "a statement outside what a kernel prints");
       }
     }
-    if (!returned) throw NotInSubset(f.line, "no return");
+    if (!returned) throw CppReadError(f.line, "no return");
     // A guarded step printed `Scalar x = …` and an unguarded one `const Scalar x = …`: the reader takes
     // both; the comparison with the form checks every guard is there.
     return printed;
@@ -446,7 +440,7 @@ class ReadBack {
       using Kind = CppStatement::Kind;
       const CppStatement& last = f->body.back();
       if (last.kind != Kind::return_)
-        throw NotInSubset(last.line, "the predicate does not end in its comparisons");
+        throw CppReadError(last.line, "the predicate does not end in its comparisons");
       std::vector<const CppExpression*> terms;
       conjuncts(*last.value, terms);
       std::vector<ex> conditions;
@@ -471,7 +465,7 @@ class ReadBack {
                           spelled(*f->body[1].condition) == "orders_as_bits<Scalar>()" &&
                           f->body[1].body.size() == 1 && f->body[1].body[0].kind == Kind::block &&
                           f->body[2].kind == Kind::directive && f->body[2].text == "endif";
-      if (!shaped) throw NotInSubset(f->line, "the predicate's host branch is not the bit comparison");
+      if (!shaped) throw CppReadError(f->line, "the predicate's host branch is not the bit comparison");
       const std::vector<ex> tested = interval_of_bits(f->body[1].body[0].body, names);
       bool same_set = tested.size() == path.conditions.size();
       for (const ex& c : path.conditions) {
@@ -494,8 +488,8 @@ class ReadBack {
     using Kind = CppStatement::Kind;
     if (body.size() < 2 || body.front().kind != Kind::declaration || body.front().type != "const Scalar" ||
         body.front().name != "low" || body.back().kind != Kind::return_)
-      throw NotInSubset(body.empty() ? 0 : body.front().line,
-                        "the bit comparison is not `low`, the largest, the test");
+      throw CppReadError(body.empty() ? 0 : body.front().line,
+                         "the bit comparison is not `low`, the largest, the test");
     const ex low = to_expression(*body.front().value, names);
     std::vector<std::string> read;
     // bits_above(p, low) → p; larger(a, b) → both; `largest` → what it has held.
@@ -511,14 +505,14 @@ class ReadBack {
       } else if (e.kind == CppExpression::Kind::name && e.text == "largest") {
         read.insert(read.end(), largest.begin(), largest.end());
       } else {
-        throw NotInSubset(e.line, spelled(e) + " in the bit comparison");
+        throw CppReadError(e.line, spelled(e) + " in the bit comparison");
       }
     };
     for (std::size_t i = 1; i + 1 < body.size(); ++i) {
       const CppStatement& s = body[i];
       const bool declares = s.kind == Kind::declaration && s.type == "auto" && s.name == "largest";
       const bool updates = s.kind == Kind::assignment && s.name == "largest" && s.op == "=";
-      if (!declares && !updates) throw NotInSubset(s.line, "a statement outside the bit comparison");
+      if (!declares && !updates) throw CppReadError(s.line, "a statement outside the bit comparison");
       read.clear();
       collect(*s.value);
       largest = read;
@@ -527,14 +521,14 @@ class ReadBack {
     if (test.kind != CppExpression::Kind::binary || test.text != "<=" ||
         test.operands[1].kind != CppExpression::Kind::call || test.operands[1].text != "bits_above" ||
         test.operands[1].operands.size() != 2 || spelled(test.operands[1].operands[1]) != "low")
-      throw NotInSubset(test.line, "the bit comparison's test is not `largest <= bits_above(high, low)`");
+      throw CppReadError(test.line, "the bit comparison's test is not `largest <= bits_above(high, low)`");
     read.clear();
     collect(test.operands[0]);
     const ex high = to_expression(test.operands[1].operands[0], names);
     std::vector<ex> conditions;
     for (const std::string& p : read) {
       const auto found = names.find(p);
-      if (found == names.end()) throw NotInSubset(test.line, "the bit comparison reads " + p);
+      if (found == names.end()) throw CppReadError(test.line, "the bit comparison reads " + p);
       conditions.push_back(low <= found->second);
       conditions.push_back(found->second <= high);
     }
@@ -572,7 +566,7 @@ class ReadBack {
     std::function<long(const CppExpression&)> integer = [&](const CppExpression& e) -> long {
       if (e.kind == CppExpression::Kind::literal) {
         if (e.text.find_first_not_of("0123456789") != std::string::npos)
-          throw NotInSubset(e.line, "the integer " + e.text);
+          throw CppReadError(e.line, "the integer " + e.text);
         return std::stol(e.text);
       }
       if (e.kind == CppExpression::Kind::name && limits.count(e.text)) return limits.at(e.text);
@@ -584,7 +578,7 @@ class ReadBack {
         if (e.text == "*") return a * b;
         if (e.text == "/" && b != 0) return a / b;
       }
-      throw NotInSubset(e.line, spelled(e) + " in a constant's loop");
+      throw CppReadError(e.line, spelled(e) + " in a constant's loop");
     };
     const auto scalar = [](const CppExpression& e) -> std::optional<GiNaC::numeric> {
       if (e.kind != CppExpression::Kind::call || e.text != "Scalar" || e.operands.size() != 1 ||

@@ -278,12 +278,11 @@ Kernel time_of_impact_kernel(const TimeOfImpact& toi) {
   const Vec& cross = toi.cross;
   const GiNaC::possymbol &contact_distance = toi.r, &qa = toi.qa, &root_of_d = toi.root_of_d;
   const GiNaC::realsymbol &qb = toi.qb, &qc = toi.qc, &qd = toi.qd;
-  // The time of impact in the dot products pp = p·p, pv = p·w, vv = w·w: the coefficients read off
-  // in components, the last component eliminated through each dot product.
+  // The time of impact in the dot products pp = p·p, pv = p·w, vv = w·w: the coefficients b and c read
+  // off in components, the last component eliminated through each dot product.
   const GiNaC::realsymbol pp("pp"), pv("pv"), vv("vv");
   const ex b_in_dots = GiNaC::normal(coefficient_b.subs(p[2] == (pv - p[0] * w[0] - p[1] * w[1]) / w[2]));
   const ex c_in_dots = reduce_modulo(coefficient_c, GiNaC::pow(p[2], 2) == pp - p[0] * p[0] - p[1] * p[1]);
-  const ex a_in_dots = reduce_modulo(coefficient_a, GiNaC::pow(w[2], 2) == vv - w[0] * w[0] - w[1] * w[1]);
   // D in Lagrange's form, (w·w) r² − |p × w|² (beyond.time_of_impact.discriminant): D + |p × w|²
   // expanded in components is (w·w) r², written in vv. Unlike b² − a c it does not cancel when the
   // spheres are far apart (r ≪ |p|), where b² and a c agree in all but their last digits.
