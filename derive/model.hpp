@@ -5,6 +5,7 @@
 
 #include "core/record.hpp"
 #include "emit/kernel.hpp"
+#include "emit/rounding.hpp"
 
 #include <functional>
 #include <string>
@@ -46,6 +47,9 @@ struct Derivation : Record {
   /// Kernels for the benchmark only (the raw derivation before simplification), validated the same
   /// way and printed into the reference header, never part of the runtime.
   std::vector<Kernel> reference_kernels;
+  /// What Gappa proved of each fast path's plain form, filled in when the printed kernels are read back
+  /// (billiards-derive), before the audit is written.
+  std::vector<RoundingBound> rounding;
 };
 
 /// One line of the registry: a model's name and the function that derives it.

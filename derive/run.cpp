@@ -35,13 +35,45 @@ int run_model(const ModelEntry& entry, const fs::path& folder) {
               << "\n";
     return exit_claims_failed;
   }
-  const Derivation& derivation = *derived;
+  Derivation& derivation = *derived;
   std::vector<KernelProblem> problems = validate_kernels(derivation.kernels, derivation.claims);
   const std::vector<KernelProblem> reference =
       validate_kernels(derivation.reference_kernels, derivation.claims);
   problems.insert(problems.end(), reference.begin(), reference.end());
-
   const ModelInfo& model = derivation.model;
+
+  // The headers as they ship (for the mutation suite, with its edit of the printed text), each with the
+  // kernels printed into it.
+  struct Header {
+    std::string path, text;
+    const std::vector<Kernel>* kernels;
+  };
+  const auto headers = [&](const std::string& audit_text) {
+    std::vector<Header> out;
+    const auto add = [&](const std::string& path, const std::string& text,
+                         const std::vector<Kernel>* kernels) {
+      if (!path.empty())
+        out.push_back({path, entry.edit_printed ? entry.edit_printed(path, text) : text, kernels});
+    };
+    add(model.kernels_path, kernels_header(derivation, audit_text), &derivation.kernels);
+    add(model.reference_path, reference_kernels_header(derivation, audit_text),
+        &derivation.reference_kernels);
+    add(model.kernel_list_path, kernel_list_header(derivation, audit_text), nullptr);
+    return out;
+  };
+  // No header unless the whole model verifies: a failed claim, cited by a kernel or not, or a kernel that
+  // is not proven means none is printed. Each header is then read back and proven from its text
+  // (emit/read_back.hpp), its plain forms' domains by Gappa, before the audit is written, which shows what
+  // Gappa proved; the headers, whose fingerprint covers the audit, are then printed again with it.
+  const bool verified = problems.empty() && summarize(derivation.claims).failed == 0;
+  if (verified) {
+    for (const Header& header : headers("")) {
+      if (header.kernels == nullptr) continue;
+      const std::vector<KernelProblem> found =
+          prove_printed(header.text, *header.kernels, derivation.claims, derivation.rounding);
+      problems.insert(problems.end(), found.begin(), found.end());
+    }
+  }
   std::vector<std::string> written;
   try {
     ensure_directory(folder);
@@ -53,30 +85,8 @@ int run_model(const ModelEntry& entry, const fs::path& folder) {
     };
     write(model.markdown_path, audit_markdown(derivation));
     write(model.json_path, json_text);
-    // No header unless the whole model verifies: a failed claim, cited by a kernel or not, or a kernel
-    // that is not proven means none is printed. Each header is then read back and proven from its text
-    // (emit/read_back.hpp), and only written when every function in it is.
-    if (problems.empty() && summarize(derivation.claims).failed == 0) {
-      std::vector<std::pair<std::string, std::string>> headers;
-      const auto printed = [&](const std::string& path, const std::string& text,
-                               const std::vector<Kernel>* kernels) {
-        const std::string shipped = entry.edit_printed ? entry.edit_printed(path, text) : text;
-        if (kernels != nullptr) {
-          const std::vector<KernelProblem> found = prove_printed(shipped, *kernels, derivation.claims);
-          problems.insert(problems.end(), found.begin(), found.end());
-        }
-        headers.emplace_back(path, shipped);
-      };
-      if (!model.kernels_path.empty())
-        printed(model.kernels_path, kernels_header(derivation, json_text), &derivation.kernels);
-      if (!model.reference_path.empty())
-        printed(model.reference_path, reference_kernels_header(derivation, json_text),
-                &derivation.reference_kernels);
-      if (!model.kernel_list_path.empty())
-        printed(model.kernel_list_path, kernel_list_header(derivation, json_text), nullptr);
-      if (problems.empty()) {
-        for (const auto& [path, text] : headers) write(path, text);
-      }
+    if (verified && problems.empty()) {
+      for (const Header& header : headers(json_text)) write(header.path, header.text);
     }
   } catch (const std::exception& error) {
     std::cerr << "billiards-derive: " << error.what() << "\n";

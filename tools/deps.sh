@@ -2,9 +2,9 @@
 # As root it installs what is missing (apt-get update first); as anyone else it prints the exact
 # apt-get line and stops.
 
-# The manual (docs target) needs doxygen, python3 and libjs-mathjax; its browser test, chromium; the
-# audit's JSON Schema test, python3-jsonschema.
-billiards_packages=(cmake make g++ pkg-config clang-format libginac-dev libeigen3-dev catch2 libbenchmark-dev
+# billiards-derive runs gappa to prove the fast paths' domains. The manual (docs target) needs doxygen,
+# python3 and libjs-mathjax; its browser test, chromium; the audit's JSON Schema test, python3-jsonschema.
+billiards_packages=(cmake make g++ pkg-config clang-format libginac-dev gappa libeigen3-dev catch2 libbenchmark-dev
                     nlohmann-json3-dev libcli11-dev doxygen libjs-mathjax python3 python3-jsonschema chromium)
 
 billiards_require_packages() {

@@ -47,6 +47,21 @@ int positive_finite_rank(const GiNaC::ex& e) {
   return -1;
 }
 
+const std::vector<std::pair<std::string, GiNaC::ex>>& named_constant_spellings() {
+  static const std::vector<std::pair<std::string, GiNaC::ex>> table = {
+      {"smallest_normal<Scalar>", smallest_normal()}, {"infinity<Scalar>", infinity()},
+      {"plain_mass_low<Scalar>", plain_mass_low()},   {"plain_mass_high<Scalar>", plain_mass_high()},
+      {"moderate_low<Scalar>", moderate_low()},       {"moderate_high<Scalar>", moderate_high()}};
+  return table;
+}
+
+std::optional<GiNaC::ex> named_constant_spelled(const std::string& spelling) {
+  for (const auto& [name, constant] : named_constant_spellings()) {
+    if (name == spelling) return constant;
+  }
+  return std::nullopt;
+}
+
 const std::vector<BinaryFormat>& emitted_formats() {
   static const std::vector<BinaryFormat> formats = {{"float", 24, -125, 128}, {"double", 53, -1021, 1024}};
   return formats;

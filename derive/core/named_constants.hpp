@@ -7,6 +7,7 @@
 
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace billiards::derive {
@@ -38,6 +39,12 @@ bool is_named_constant(const GiNaC::ex& e);
 /// moderate_low 2 (2^−30, 2^−254), moderate_high 3 (2^30, 2^254), plain_mass_high 4 (2^61, 2^509); −1
 /// for anything else (+∞ included).
 int positive_finite_rank(const GiNaC::ex& e);
+
+/// Every named constant with the name a kernel's C++ calls it by (smallest_normal<Scalar>,
+/// infinity<Scalar>, …), for reading printed kernels back.
+const std::vector<std::pair<std::string, GiNaC::ex>>& named_constant_spellings();
+/// The named constant a kernel's C++ calls `spelling()`; nothing for any other name.
+std::optional<GiNaC::ex> named_constant_spelled(const std::string& spelling);
 
 /// An IEEE binary format in the terms of std::numeric_limits: `digits` of significand, normal numbers
 /// from 2^(min_exponent − 1) up to below 2^max_exponent.

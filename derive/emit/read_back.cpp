@@ -21,15 +21,6 @@ namespace {
 
 std::string symbol_name(const ex& e) { return GiNaC::ex_to<GiNaC::symbol>(e).get_name(); }
 
-// The named constants by their C++ spelling in a kernel.
-const std::map<std::string, ex>& constants_by_spelling() {
-  static const std::map<std::string, ex> table = {
-      {"smallest_normal<Scalar>", smallest_normal()}, {"infinity<Scalar>", infinity()},
-      {"plain_mass_low<Scalar>", plain_mass_low()},   {"plain_mass_high<Scalar>", plain_mass_high()},
-      {"moderate_low<Scalar>", moderate_low()},       {"moderate_high<Scalar>", moderate_high()}};
-  return table;
-}
-
 // A decimal literal d (digits, at most one point; no exponent, no suffix) as an exact rational.
 std::optional<GiNaC::numeric> decimal_value(const std::string& text) {
   if (text.empty() || std::count(text.begin(), text.end(), '.') > 1) return std::nullopt;
@@ -96,8 +87,8 @@ ex to_expression(const CppExpression& e, const std::map<std::string, ex>& names)
           throw CppReadError(e.line, "Scalar(" + e.operands[0].text + ") is not exact in float");
         return *value;
       }
-      const auto constant = constants_by_spelling().find(e.text);
-      if (constant != constants_by_spelling().end() && arity == 0) return constant->second;
+      if (const std::optional<ex> constant = named_constant_spelled(e.text); constant && arity == 0)
+        return *constant;
       if (e.text == "binary_exponent" && arity == 1) return binary_exponent(operand(0));
       if (e.text == "times_power_of_two" && arity == 2) return times_power_of_two(operand(0), operand(1));
       if (e.text == "absolute_value" && arity == 1) return GiNaC::abs(operand(0));
@@ -133,8 +124,8 @@ bool same_relational(const ex& a, const ex& b) {
 class ReadBack {
  public:
   ReadBack(const std::vector<CppFunction>& functions, const std::vector<Kernel>& kernels,
-           const std::vector<Claim>& claims)
-      : functions_(functions), kernels_(kernels), claims_(claims) {}
+           const std::vector<Claim>& claims, std::vector<RoundingBound>& bounds)
+      : functions_(functions), kernels_(kernels), claims_(claims), bounds_(bounds) {}
 
   std::vector<KernelProblem> run() {
     for (const Kernel& kernel : kernels_) {
@@ -225,6 +216,11 @@ class ReadBack {
       problem.kernel = name;
       problem.reason = "as printed: " + problem.reason;
       problems_.push_back(problem);
+    }
+    // Where the kernel is a fast path's plain form, its domain proven safe from the same text.
+    if (!kernel.domain.empty()) {
+      const std::vector<KernelProblem> rounding = prove_rounding(*f, kernel, bounds_);
+      problems_.insert(problems_.end(), rounding.begin(), rounding.end());
     }
   }
 
@@ -624,7 +620,7 @@ class ReadBack {
   }
 
   void prove_constants() {
-    for (const auto& [spelling, constant] : constants_by_spelling()) {
+    for (const auto& [spelling, constant] : named_constant_spellings()) {
       const std::string name = spelling.substr(0, spelling.find('<'));
       const CppFunction* generic = find(name);
       if (generic == nullptr) continue;  // not printed: no kernel reads it
@@ -704,6 +700,7 @@ class ReadBack {
   const std::vector<CppFunction>& functions_;
   const std::vector<Kernel>& kernels_;
   const std::vector<Claim>& claims_;
+  std::vector<RoundingBound>& bounds_;
   std::set<std::string> proven_, predicates_done_;
   std::vector<KernelProblem> problems_;
 };
@@ -711,10 +708,11 @@ class ReadBack {
 }  // namespace
 
 std::vector<KernelProblem> prove_printed(const std::string& header, const std::vector<Kernel>& kernels,
-                                         const std::vector<Claim>& claims) {
+                                         const std::vector<Claim>& claims,
+                                         std::vector<RoundingBound>& bounds) {
   try {
     const std::vector<CppFunction> functions = read_functions(header);
-    return ReadBack(functions, kernels, claims).run();
+    return ReadBack(functions, kernels, claims, bounds).run();
   } catch (const std::exception& error) {
     return {{"(the printed header)", "", std::string("cannot be read back: ") + error.what()}};
   }

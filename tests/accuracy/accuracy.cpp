@@ -21,9 +21,10 @@
 // to the largest finite number, with zeros (no slip, no friction), restitution 0 and 1, and equal masses
 // among them.
 //
-// Usage: billiards-accuracy [--samples N (1 to 10^7, default 20000)] [--limit ULP]
-//   prints a Markdown table (kernel, type, samples, largest error in ULP, non-finite results) and
-//   exits 1 when an error exceeds --limit (default 4) or a valid input gives NaN or infinity.
+// Usage: billiards-accuracy [--samples N (1 to 10^7, default 20000)] [--limit ULP] [--proven AUDIT_JSON]...
+//   prints a Markdown table (kernel, type, samples, largest error in ULP, the bound Gappa proved where the
+//   audits --proven names hold one, non-finite results) and exits 1 when an error exceeds --limit
+//   (default 4) or its proven bound, or a valid input gives NaN or infinity.
 #include "core/named_constants.hpp"
 #include "exact.hpp"
 #include "models/parkin2023/paper.hpp"
@@ -34,10 +35,12 @@
 
 #include <CLI/CLI.hpp>
 #include <billiards_support/cli_checks.hpp>
+#include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <fstream>
 #include <functional>
 #include <iostream>
 #include <limits>
@@ -545,6 +548,28 @@ Row measure_spin(const billiards::derive::Kernel& kernel, const char* type, long
   return row;
 }
 
+// The bounds Gappa proved, from audits billiards-derive wrote: kernel and type → the largest bound, in ε,
+// over its cases and outputs. Throws std::runtime_error naming the file when one cannot be read.
+std::map<std::pair<std::string, std::string>, double> proven_bounds(const std::vector<std::string>& files) {
+  std::map<std::pair<std::string, std::string>, double> bounds;
+  for (const std::string& file : files) {
+    std::ifstream in(file);
+    try {
+      const nlohmann::json audit = nlohmann::json::parse(in);
+      for (const auto& kernel : audit.at("kernels")) {
+        for (const auto& proof : kernel.at("rounding")) {
+          double& bound = bounds[{kernel.at("name").get<std::string>(), proof.at("type").get<std::string>()}];
+          for (const auto& output : proof.at("outputs"))
+            bound = std::max(bound, output.at("epsilons").get<double>());
+        }
+      }
+    } catch (const std::exception& error) {
+      throw std::runtime_error("--proven: " + file + ": not an audit.json with proven bounds (" +
+                               error.what() + ")");
+    }
+  }
+  return bounds;
+}
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -558,6 +583,11 @@ int main(int argc, char** argv) {
       ->check(billiards_support::count_at_least(1, 10'000'000));
   app.add_option("--limit", limit, "Largest error allowed, in scaled ULP")
       ->check(billiards_support::finite_number(true));
+  std::vector<std::string> proven_files;
+  app.add_option("--proven", proven_files,
+                 "An audit.json whose proven bounds (Gappa's, for the fast paths' plain forms) the measured "
+                 "errors must stay within; may be given more than once")
+      ->type_name("FILE");
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& help) {
@@ -567,6 +597,13 @@ int main(int argc, char** argv) {
     return 2;
   }
 
+  std::map<std::pair<std::string, std::string>, double> proven;
+  try {
+    proven = proven_bounds(proven_files);
+  } catch (const std::exception& error) {
+    std::cerr << "billiards-accuracy: " << error.what() << "\n";
+    return 2;
+  }
   GiNaC::Digits = 60;  // square roots, far beyond double precision
   const billiards::derive::Derivation derivation = billiards::derive::parkin2023::derive();
   std::vector<Row> rows, reference_rows;
@@ -584,12 +621,23 @@ int main(int argc, char** argv) {
     reference_rows.push_back(measure<double>(kernel, "double", samples, true));
   }
   bool ok = true;
-  std::cout
-      << "| kernel | type | inputs | largest error (scaled ULP) | NaN or ∞ |\n|---|---|---:|---:|---:|\n";
+  std::cout << "| kernel | type | inputs | largest error (scaled ULP) | proven bound (ε) | NaN or ∞ |\n"
+               "|---|---|---:|---:|---:|---:|\n";
   for (const Row& row : rows) {
+    // The spinning kernels are listed as spin::name; the audit names them without the namespace.
+    const std::string name =
+        row.kernel.substr(row.kernel.find(':') == std::string::npos ? 0 : row.kernel.rfind(':') + 1);
+    const auto bound = proven.find({name, row.type});
     std::cout << "| `" << row.kernel << "` | " << row.type << " | " << row.samples << " | " << row.worst
+              << " | "
+              << (bound == proven.end() ? std::string("—") : std::to_string(bound->second).substr(0, 4))
               << " | " << row.non_finite << " |\n";
     ok = ok && row.worst <= limit && row.non_finite == 0;
+    if (bound != proven.end() && row.worst > bound->second) {
+      std::cerr << "billiards-accuracy: " << row.kernel << " (" << row.type << ") measured " << row.worst
+                << " ε, above its proven bound " << bound->second << " ε\n";
+      ok = false;
+    }
     if (verbose) std::cerr << row.kernel << " (" << row.type << "): " << row.worst_input << "\n";
   }
   std::cout
@@ -600,6 +648,7 @@ int main(int argc, char** argv) {
               << " | " << row.non_finite << " |\n";
   }
   if (!ok)
-    std::cerr << "billiards-accuracy: an error exceeds " << limit << " ULP, or a valid input gave NaN or ∞\n";
+    std::cerr << "billiards-accuracy: an error exceeds " << limit
+              << " ULP or its proven bound, or a valid input gave NaN or ∞\n";
   return ok ? 0 : 1;
 }

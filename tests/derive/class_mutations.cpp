@@ -2,6 +2,7 @@
 // prints, a parameter's meaning, a claim no kernel cites — mutations that must fail the run, naming what
 // they broke; and a comment, which must not.
 #include "core/claim.hpp"
+#include "core/named_constants.hpp"
 #include "mutations.hpp"
 
 #include <stdexcept>
@@ -54,6 +55,19 @@ Mutation meanings_swapped(const std::string& name, const std::string& kernel, co
               if (first.is_zero() || second.is_zero())
                 throw std::invalid_argument(kernel + " has no meaning of " + a);
               std::swap(k.in_claim_terms[first], k.in_claim_terms[second]);
+            }
+          }};
+}
+
+// Every fast path's domain widened, the plain forms' domains and the predicates' conditions alike (both
+// come from one place in a model): the named constant `from` replaced by `to`.
+Mutation domain_widened(const std::string& name, const std::string& culprit, const ex& from, const ex& to) {
+  return {.name = name, .kernel = culprit, .edit_derivation = [from, to](Derivation& derivation) {
+            for (Kernel& k : derivation.kernels) {
+              for (ex& condition : k.domain) condition = condition.subs(from == to);
+              if (k.fast_path) {
+                for (ex& condition : k.fast_path->conditions) condition = condition.subs(from == to);
+              }
             }
           }};
 }
@@ -130,6 +144,12 @@ const std::vector<Mutation>& paper_class_mutations() {
              }
            }},
       meanings_swapped("meaning_direction_speeds_swapped", "direction_velocity_change", "v1d", "v2d"),
+      // A domain widened past what is safe: to +∞ (a NaN for an immovable body), or down to the smallest
+      // normal number (the impulse coefficients then underflow).
+      domain_widened("domain_mass_range_to_infinity", "plain_elastic_normal_velocity_change",
+                     plain_mass_high(), infinity()),
+      domain_widened("domain_mass_range_down_to_the_smallest_normal", "plain_normal_velocity_change",
+                     plain_mass_low(), smallest_normal()),
       // A claim that no kernel cites.
       uncited_claim_wrong("uncited_claim_momentum_along_n", "along_n.momentum"),
       // A comment changes nothing that is proven.
@@ -159,6 +179,12 @@ const std::vector<Mutation>& spin_class_mutations() {
               "max_exponent / 4 - 2", "max_exponent / 4 - 1"),
       meanings_swapped("meaning_roll_time_speed_and_gravity_swapped", "roll_time", "speed", "gravity"),
       uncited_claim_wrong("uncited_claim_linear_momentum", "conservation.linear_momentum"),
+      // The phase times' moderate range widened up to 2^509 (double) from 2^254: a quotient of three
+      // inputs then overflows.
+      domain_widened("domain_moderate_range_to_the_plain_mass_range", "plain_slide_time", moderate_high(),
+                     plain_mass_high()),
+      domain_widened("domain_tangential_mass_range_to_infinity", "plain_tangential_velocity_change",
+                     plain_mass_high(), infinity()),
   };
   return mutations;
 }

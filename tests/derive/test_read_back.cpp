@@ -1,5 +1,6 @@
 // Proven is what is printed: the reader of the emitted C++, the proof of a header from its text, and a
 // derivation step that stops.
+#include "core/named_constants.hpp"
 #include "core/record.hpp"
 #include "emit/cpp_reader.hpp"
 #include "emit/emitter.hpp"
@@ -9,9 +10,11 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <string>
 
 using namespace billiards::derive;
+using GiNaC::ex;
 
 namespace {
 
@@ -19,6 +22,13 @@ std::string replaced(std::string text, const std::string& from, const std::strin
   const std::size_t at = text.find(from);
   REQUIRE(at != std::string::npos);
   return text.replace(at, from.size(), to);
+}
+
+// prove_printed with the rounding bounds it finds left aside.
+std::vector<KernelProblem> prove_printed(const std::string& header, const std::vector<Kernel>& kernels,
+                                         const std::vector<Claim>& claims) {
+  std::vector<RoundingBound> bounds;
+  return billiards::derive::prove_printed(header, kernels, claims, bounds);
 }
 
 std::string reasons(const std::vector<KernelProblem>& problems) {
@@ -133,5 +143,59 @@ TEST_CASE("A step that stops names itself and the claim it was building", "[deri
     CHECK_THAT(
         record.claims.back().failure,
         Catch::Contains("the step `only_step` stopped after the claim `only.fine`, outside any claim"));
+  }
+}
+
+TEST_CASE("Gappa proves each fast path's domain safe, from the plain form as printed",
+          "[derive][read_back]") {
+  const Derivation derivation = parkin2023::derive();
+  const std::string header = kernels_header(derivation, "{}");
+  std::vector<RoundingBound> bounds;
+  REQUIRE(reasons(billiards::derive::prove_printed(header, derivation.kernels, derivation.claims, bounds))
+              .empty());
+  // Four plain forms, float and double, one case each.
+  CHECK(bounds.size() == 8);
+  for (const RoundingBound& bound : bounds) {
+    INFO(bound.kernel << " in " << bound.format);
+    CHECK(bound.kernel.rfind("plain_", 0) == 0);
+    CHECK(bound.outputs.size() == 2);
+    if (bound.kernel != "plain_elastic_normal_velocity_change") continue;
+    // By hand: m1 + m2, 2 m2 over it, v2n − v1n and their product round once each (2 m2 is exact), so
+    // the relative error is at most (1 + u)^4 − 1, u = ε/2: just over 2 ε.
+    const GiNaC::numeric u = GiNaC::numeric(2).power(bound.format == "float" ? -24 : -53);
+    for (const GiNaC::numeric& relative : bound.relative) {
+      CHECK(relative >= 4 * u * GiNaC::numeric(99, 100));
+      CHECK(relative <= (1 + u).power(4) - 1 + u * GiNaC::numeric(1, 100));
+    }
+    CHECK(bound.in_epsilons.front() == Approx(2.01));
+  }
+  SECTION("the script is the printed kernel, rounded, over the domain in the type") {
+    const std::vector<CppFunction> functions = read_functions(header);
+    const auto plain = std::find_if(functions.begin(), functions.end(), [](const CppFunction& f) {
+      return f.name == "plain_elastic_normal_velocity_change";
+    });
+    REQUIRE(plain != functions.end());
+    const Kernel& kernel = derivation.kernels.front();
+    REQUIRE(kernel.name == plain->name);
+    const std::string script =
+        gappa_script(*plain, kernel, emitted_formats().back(), kernel.rounding_cases.front(), {});
+    CHECK_THAT(script, Catch::Contains("@rnd = float<ieee_64, ne>;"));
+    CHECK_THAT(script, Catch::Contains("c_total_mass rnd= (p_m1 + p_m2);"));
+    CHECK_THAT(script, Catch::Contains("p_m1 in [1b-509, 1b509]"));
+    CHECK_THAT(script, Catch::Contains("(p_v2n - p_v1n) in [1, 2]"));
+    CHECK_THAT(script, Catch::Contains("(c_first_change - e_first_change) / e_first_change in ?"));
+  }
+  SECTION("a domain widened past what is safe is not proven") {
+    Derivation widened = derivation;
+    for (Kernel& k : widened.kernels) {
+      for (ex& condition : k.domain) condition = condition.subs(plain_mass_low() == smallest_normal());
+      if (k.fast_path)
+        for (ex& condition : k.fast_path->conditions)
+          condition = condition.subs(plain_mass_low() == smallest_normal());
+    }
+    std::vector<RoundingBound> none;
+    CHECK_THAT(reasons(billiards::derive::prove_printed(kernels_header(widened, "{}"), widened.kernels,
+                                                        widened.claims, none)),
+               Catch::Contains("plain_elastic_normal_velocity_change: its rounding proof: in float"));
   }
 }

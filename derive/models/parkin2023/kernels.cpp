@@ -82,7 +82,8 @@ std::vector<KernelStep> change_steps(const ChangeNames& names, const MassRatios&
 // first `speed_steps` of `full`), then (1 + e) m2/(m1 + m2) and (1 + e) m1/(m1 + m2) over one sum
 // (beyond.plain_range.one_division_form), each times the speed `by`; `full` takes it first there.
 std::vector<Kernel> with_fast_path(Kernel full, const PlainRange& plain, const MassRatios& ratios,
-                                   const ex& restitution, const ex& by, std::size_t speed_steps) {
+                                   const ex& restitution, const ex& by, std::size_t speed_steps,
+                                   const std::vector<ex>& rounding_ranges) {
   const Symbols& s = symbols();
   const ex e = s.restitution;
   const GiNaC::symbol first_coefficient("first_impulse_coefficient"),
@@ -106,6 +107,7 @@ std::vector<Kernel> with_fast_path(Kernel full, const PlainRange& plain, const M
       .claims = {"beyond.plain_range.one_division_form", "beyond.plain_range.smallest_share"},
       .names = {{"total_mass", s.m1 + s.m2}, {"restitution_factor", 1 + e}},
       .domain = plain_mass_range(s.m1, s.m2),
+      .rounding_cases = {rounding_ranges},
   };
   fast.steps.push_back({first_coefficient, plain.first_mass_form.subs(e == restitution)});
   fast.steps.push_back({second_coefficient, plain.second_mass_form.subs(e == restitution)});
@@ -148,8 +150,21 @@ std::vector<Kernel> collision_kernels(const Setting& setting, const KernelPieces
   const GiNaC::exmap direction_terms{
       {v1d, dot(space.v1, direction.d)}, {v2d, dot(space.v2, direction.d)}, {ddot, direction.dd}};
   std::vector<Kernel> kernels;
-  const auto add = [&](const Kernel& full, const ex& restitution, const ex& by, std::size_t speed_steps) {
-    for (const Kernel& kernel : with_fast_path(full, plain, ratios, restitution, by, speed_steps))
+  // The rounding proof's ranges of what the mass range leaves free: restitution in [0, 1] and the speed
+  // in one binade — approaching along d for the kernel that changes only approaching pairs (a separating
+  // pair's change is exactly 0).
+  const auto between = [](const ex& low, const ex& x, const ex& high) {
+    return std::vector<ex>{low <= x, x <= high};
+  };
+  const auto joined = [](std::vector<ex> first, const std::vector<ex>& then) {
+    first.insert(first.end(), then.begin(), then.end());
+    return first;
+  };
+  const std::vector<ex> in_restitution = between(0, e, 1), in_normal_speed = between(1, s.v2n - s.v1n, 2),
+                        in_direction = joined(between(1, ddot, 2), in_restitution);
+  const auto add = [&](const Kernel& full, const ex& restitution, const ex& by, std::size_t speed_steps,
+                       const std::vector<ex>& ranges) {
+    for (const Kernel& kernel : with_fast_path(full, plain, ratios, restitution, by, speed_steps, ranges))
       kernels.push_back(kernel);
   };
   add(
@@ -166,7 +181,7 @@ std::vector<Kernel> collision_kernels(const Setting& setting, const KernelPieces
           .claims = {"result.x1_simplified_form", "result.x2_by_symmetry", "kernel.impulse_coefficient_first",
                      "kernel.impulse_coefficient_second", "beyond.immovable.mass_ratio_form"},
       },
-      1, speed_name, 1);
+      1, speed_name, 1, in_normal_speed);
   add(
       {
           .name = "normal_velocity_change",
@@ -180,7 +195,7 @@ std::vector<Kernel> collision_kernels(const Setting& setting, const KernelPieces
                      "beyond.restitution.energy_loss"},
           .names = {{"restitution_factor", 1 + e}},
       },
-      e, speed_name, 1);
+      e, speed_name, 1, joined(in_normal_speed, in_restitution));
   add(
       {
           .name = "direction_velocity_change",
@@ -196,7 +211,7 @@ std::vector<Kernel> collision_kernels(const Setting& setting, const KernelPieces
                      "beyond.immovable.mass_ratio_form"},
           .names = {{"restitution_factor", 1 + e}},
       },
-      e, direction_speed, 1);
+      e, direction_speed, 1, joined(between(1, v2d - v1d, 2), in_direction));
   add(
       {
           .name = "approaching_direction_velocity_change",
@@ -214,7 +229,7 @@ std::vector<Kernel> collision_kernels(const Setting& setting, const KernelPieces
                      "beyond.any_normal.direction_form", "beyond.immovable.mass_ratio_form"},
           .names = {{"restitution_factor", 1 + e}},
       },
-      e, approach_name, 2);
+      e, approach_name, 2, joined(between(-2, v2d - v1d, -1), in_direction));
   const GiNaC::realsymbol vn("vn");
   kernels.push_back({
       .name = "cushion_normal_velocity_change",

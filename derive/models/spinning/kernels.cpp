@@ -305,6 +305,15 @@ void tangential_velocity_kernels(std::vector<Kernel>& kernels) {
         "sum, normal numbers there. tangential_velocity_change takes it there itself.";
     plain.steps = plain_steps;
     plain.names = {};
+    // The rounding proof's two cases, one for each branch of the bound: sticking (2|u_t|/7 the smaller)
+    // and sliding (−(1 + e) μ (v2 − v1)·n the smaller); in each, every quantity in one binade, or e in
+    // [0, 1].
+    const auto ranges = [&](const ex& slip_low) {
+      return std::vector<ex>{slip_low <= slip,   slip <= 2 * slip_low, ex(1) / 2 <= s.friction,
+                             s.friction <= 1,    -2 <= speed,          speed <= -1,
+                             0 <= s.restitution, s.restitution <= 1};
+    };
+    plain.rounding_cases = {ranges(ex(1) / 2), ranges(16)};
     push_with_fast_path(
         kernels, plain, full, plain_range, "within_plain_mass_range",
         "True when both masses lie in [plain_mass_low<Scalar>(), plain_mass_high<Scalar>()], "

@@ -1,0 +1,484 @@
+#include "emit/rounding.hpp"
+
+#include "core/powers_of_two.hpp"
+#include "print/printer.hpp"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <map>
+#include <optional>
+#include <set>
+#include <sstream>
+#include <stdexcept>
+
+namespace billiards::derive {
+
+using GiNaC::ex;
+
+namespace {
+
+// A proof that cannot be written: the reason.
+struct NotProvable : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+std::string text(const GiNaC::numeric& n) {
+  std::ostringstream out;
+  out << n;
+  return out.str();
+}
+
+// ---- what Gappa is told of a format ----------------------------------------------------------------
+std::string gappa_format(const BinaryFormat& format) {
+  return format.type == "float" ? "float<ieee_32, ne>" : "float<ieee_64, ne>";
+}
+
+// A number in Gappa's notation, exactly: an integer, p/q, or for a power of two 1bk.
+std::string gappa_number(const GiNaC::numeric& n) {
+  if (n.is_positive() && (n > 1024 || n < 1)) {
+    if (const std::optional<int> k = exact_binary_logarithm(n)) return "1b" + std::to_string(*k);
+  }
+  if (n.is_integer()) return n.is_negative() ? "(" + text(n) + ")" : text(n);
+  return "(" + text(n.numer()) + "/" + text(n.denom()) + ")";
+}
+
+// An end of an interval, which Gappa wants as a bare number: -2, not (-2).
+std::string interval_end(const std::string& number) {
+  if (number.size() > 2 && number.front() == '(' && number.back() == ')' &&
+      number.find('/') == std::string::npos)
+    return number.substr(1, number.size() - 2);
+  if (number.find('/') != std::string::npos)
+    throw NotProvable("the bound " + number + " is not a dyadic number, which Gappa wants");
+  return number;
+}
+
+// The largest finite number, (2^digits − 1) 2^(max_exponent − digits), exactly.
+std::string largest_finite(const BinaryFormat& format) {
+  return text(GiNaC::numeric(2).power(format.digits) - 1) + "b" +
+         std::to_string(format.max_exponent - format.digits);
+}
+std::string smallest_normal_number(const BinaryFormat& format) {
+  return "1b" + std::to_string(format.min_exponent - 1);
+}
+std::string smallest_subnormal(const BinaryFormat& format) {
+  return "1b" + std::to_string(format.min_exponent - format.digits);
+}
+
+// A Gappa dyadic number as printed in its results (-864691128455134979b-110, 1b-53, 0) as a rational.
+std::optional<GiNaC::numeric> dyadic_value(const std::string& word) {
+  const std::size_t b = word.find('b');
+  try {
+    const GiNaC::numeric mantissa(word.substr(0, b).c_str());
+    if (b == std::string::npos) return mantissa;
+    return mantissa * GiNaC::numeric(2).power(std::stoi(word.substr(b + 1)));
+  } catch (const std::exception&) {
+    return std::nullopt;
+  }
+}
+
+// The larger magnitude of the interval in a result line of Gappa's, `… in [low {…}, high {…}]`.
+std::optional<GiNaC::numeric> interval_magnitude(const std::string& line) {
+  const std::size_t open = line.find(" in [");
+  const std::size_t close = line.rfind(']');
+  if (open == std::string::npos || close == std::string::npos || close < open) return std::nullopt;
+  std::string inside;
+  int braces = 0;
+  for (const char c : line.substr(open + 5, close - open - 5)) {
+    braces += c == '{' ? 1 : c == '}' ? -1 : 0;
+    if (braces == 0 && c != '}' && c != ' ') inside += c;
+  }
+  const std::size_t comma = inside.find(',');
+  if (comma == std::string::npos) return std::nullopt;
+  const std::optional<GiNaC::numeric> low = dyadic_value(inside.substr(0, comma)),
+                                      high = dyadic_value(inside.substr(comma + 1));
+  if (!low || !high) return std::nullopt;
+  return std::max(GiNaC::abs(*low), GiNaC::abs(*high));
+}
+
+// A positive rational's size as a power of two, for messages: about 2^k.
+std::string interval_text(const GiNaC::numeric& n) {
+  return "about 2^" + std::to_string(n.numer().int_length() - n.denom().int_length());
+}
+
+// ---- the kernel as Gappa reads it ------------------------------------------------------------------
+
+// Names in the script: a parameter p_x, a step as computed c_x, the same step in exact arithmetic e_x.
+class Script {
+ public:
+  Script(const CppFunction& printed, const Kernel& kernel, const BinaryFormat& format)
+      : printed_(printed), kernel_(kernel), format_(format) {
+    for (const auto& parameter : printed.parameters) parameters_.insert(parameter.second);
+  }
+
+  // An expression of the printed kernel, rounded (each operation, as `rnd=` does) or exact.
+  std::string expression(const CppExpression& e, bool exact) const {
+    using Kind = CppExpression::Kind;
+    switch (e.kind) {
+      case Kind::name:
+        if (parameters_.count(e.text)) return "p_" + e.text;
+        if (steps_.count(e.text)) return (exact ? "e_" : "c_") + e.text;
+        throw NotProvable("reads " + e.text + ", which is no parameter or earlier step");
+      case Kind::unary:
+        if (e.text == "-") return "-(" + expression(e.operands[0], exact) + ")";
+        break;
+      case Kind::binary:
+        if (e.text == "+" || e.text == "-" || e.text == "*" || e.text == "/")
+          return "(" + expression(e.operands[0], exact) + " " + e.text + " " +
+                 expression(e.operands[1], exact) + ")";
+        break;
+      case Kind::call: {
+        if (e.text == "Scalar" && e.operands.size() == 1 && e.operands[0].kind == Kind::literal)
+          return e.operands[0].text;  // an exact decimal (the read-back has checked it)
+        if (const std::optional<ex> constant = named_constant_spelled(e.text)) {
+          const std::optional<GiNaC::numeric> value = value_in(*constant, format_);
+          if (!value) throw NotProvable("reads " + spelled(e) + ", which is not a finite number");
+          return gappa_number(*value);
+        }
+        if (e.text == "absolute_value" && e.operands.size() == 1) {
+          const std::string argument = expression(e.operands[0], exact);
+          absolutes_.insert(argument);
+          return "|" + argument + "|";
+        }
+        if (e.text == "std::sqrt" && e.operands.size() == 1)
+          return "sqrt(" + expression(e.operands[0], exact) + ")";
+        break;
+      }
+      default: break;
+    }
+    throw NotProvable(spelled(e) + " is outside the straight-line arithmetic Gappa proves");
+  }
+
+  // A relational of the case's ranges (in the parameters) as Gappa text.
+  static std::string exact_text(const ex& e) {
+    if (GiNaC::is_a<GiNaC::numeric>(e)) return gappa_number(GiNaC::ex_to<GiNaC::numeric>(e));
+    if (GiNaC::is_a<GiNaC::symbol>(e)) return "p_" + GiNaC::ex_to<GiNaC::symbol>(e).get_name();
+    if (GiNaC::is_a<GiNaC::add>(e)) {
+      // As C++ writes it, (a - b): the positive terms, then each negative one subtracted.
+      std::vector<std::string> added, subtracted;
+      for (const ex& term : e) {
+        if (prints_negative(term)) {
+          subtracted.push_back(exact_text(-term));
+        } else {
+          added.push_back(exact_text(term));
+        }
+      }
+      std::sort(added.begin(), added.end());
+      std::sort(subtracted.begin(), subtracted.end());
+      std::string out = added.empty() ? "0" : "";
+      for (const std::string& term : added) out += (out.empty() ? "" : " + ") + term;
+      for (const std::string& term : subtracted) out += " - " + term;
+      return "(" + out + ")";
+    }
+    if (GiNaC::is_a<GiNaC::mul>(e)) {
+      std::string out;
+      for (const ex& factor : e) out += (out.empty() ? "" : " * ") + exact_text(factor);
+      return "(" + out + ")";
+    }
+    if (GiNaC::is_a<GiNaC::power>(e) && e.op(1).info(GiNaC::info_flags::integer)) {
+      const int n = GiNaC::ex_to<GiNaC::numeric>(e.op(1)).to_int();
+      std::string base = exact_text(e.op(0)), out = base;
+      for (int i = 1; i < std::abs(n); ++i) out += " * " + base;
+      return n > 0 ? "(" + out + ")" : "(1 / (" + out + "))";
+    }
+    if (GiNaC::is_a<GiNaC::function>(e) && GiNaC::ex_to<GiNaC::function>(e).get_name() == "abs")
+      return "|" + exact_text(e.op(0)) + "|";
+    throw NotProvable("the range of " + print(e, Notation::text) + " has no Gappa form");
+  }
+
+  // `low ≤ x` and `x ≤ high` in `relationals`, paired by x, as `x in [low, high]`.
+  static std::vector<std::string> intervals(const std::vector<ex>& relationals,
+                                            const std::function<std::string(const ex&)>& number) {
+    std::vector<std::pair<ex, std::pair<std::string, std::string>>> pairs;
+    for (const ex& r : relationals) {
+      if (!GiNaC::is_a<GiNaC::relational>(r) || !r.info(GiNaC::info_flags::relation_less_or_equal))
+        throw NotProvable(print(r, Notation::text) + " is not a bound `a <= x` or `x <= b`");
+      const bool lower = GiNaC::is_a<GiNaC::numeric>(r.lhs()) || is_named_constant(r.lhs());
+      const ex quantity = lower ? r.rhs() : r.lhs(), bound = lower ? r.lhs() : r.rhs();
+      auto at =
+          std::find_if(pairs.begin(), pairs.end(), [&](const auto& p) { return p.first.is_equal(quantity); });
+      if (at == pairs.end()) {
+        pairs.push_back({quantity, {}});
+        at = pairs.end() - 1;
+      }
+      (lower ? at->second.first : at->second.second) = interval_end(number(bound));
+    }
+    std::vector<std::string> out;
+    for (const auto& [quantity, ends] : pairs) {
+      if (ends.first.empty() || ends.second.empty())
+        throw NotProvable(print(quantity, Notation::text) + " is bounded on one side only");
+      out.push_back(exact_text(quantity) + " in [" + ends.first + ", " + ends.second + "]");
+    }
+    return out;
+  }
+
+  // The domain's and the case's hypotheses.
+  std::vector<std::string> hypotheses(const std::vector<ex>& case_ranges) const {
+    const auto domain_number = [&](const ex& bound) -> std::string {
+      if (GiNaC::is_a<GiNaC::numeric>(bound)) return gappa_number(GiNaC::ex_to<GiNaC::numeric>(bound));
+      const std::optional<GiNaC::numeric> value = value_in(bound, format_);
+      if (!value)
+        throw NotProvable("the domain's bound " + print(bound, Notation::text) + " is not a finite number");
+      return gappa_number(*value);
+    };
+    std::vector<std::string> out = intervals(kernel_.domain, domain_number);
+    const std::vector<std::string> more = intervals(case_ranges, domain_number);
+    out.insert(out.end(), more.begin(), more.end());
+    return out;
+  }
+
+  // The script's definitions: each parameter a number of the format, each step computed and exact, with
+  // its guards taken as `taken` says; the outputs o_i and e_o_i. Collects the names to bound in `bounded`.
+  std::string definitions(const std::vector<bool>& taken, std::vector<std::string>& bounded,
+                          std::vector<std::pair<std::string, std::string>>& outputs) {
+    std::ostringstream out;
+    out << "@rnd = " << gappa_format(format_) << ";\n";
+    for (const auto& parameter : printed_.parameters)
+      out << "p_" << parameter.second << " = rnd(input_" << parameter.second << ");\n";
+    std::size_t guard = 0;
+    using Kind = CppStatement::Kind;
+    for (std::size_t i = 0; i < printed_.body.size(); ++i) {
+      const CppStatement& s = printed_.body[i];
+      if (s.kind == Kind::declaration) {
+        CppExpression value = *s.value;
+        // Its guards, each taken or not: the value is the last taken one's.
+        for (std::size_t j = i + 1; j < printed_.body.size() && printed_.body[j].kind == Kind::if_;
+             ++j, ++guard) {
+          if (guard >= taken.size()) throw NotProvable("a guard without a decision");
+          if (taken[guard]) value = *printed_.body[j].body.at(0).value;
+        }
+        out << "c_" << s.name << " rnd= " << expression(value, false) << ";\n";
+        out << "e_" << s.name << " = " << expression(value, true) << ";\n";
+        steps_.insert(s.name);
+        bounded.push_back("c_" + s.name);
+      } else if (s.kind == Kind::return_) {
+        std::vector<CppExpression> values = s.value->kind == CppExpression::Kind::braced
+                                                ? s.value->operands
+                                                : std::vector<CppExpression>{*s.value};
+        for (std::size_t k = 0; k < values.size(); ++k) {
+          // An output that is a step is that step (Gappa would rename a copy); any other, o_k.
+          std::string name = values[k].kind == CppExpression::Kind::name ? values[k].text : "";
+          if (name.empty() || !steps_.count(name)) {
+            name = "o_" + std::to_string(k);
+            out << "c_" << name << " rnd= " << expression(values[k], false) << ";\n";
+            out << "e_" << name << " = " << expression(values[k], true) << ";\n";
+            bounded.push_back("c_" + name);
+          }
+          outputs.emplace_back(spelled(values[k]), name);
+        }
+      } else if (s.kind != Kind::if_) {
+        throw NotProvable("a statement outside straight-line code");
+      }
+    }
+    return out.str();
+  }
+
+  // The guards in order: their conditions' two sides as computed, and the operator.
+  std::vector<const CppExpression*> guard_conditions() const {
+    std::vector<const CppExpression*> out;
+    for (const CppStatement& s : printed_.body) {
+      if (s.kind == CppStatement::Kind::if_) out.push_back(&*s.condition);
+    }
+    return out;
+  }
+
+  // The goal that says guard `condition` is taken (or not), on the computed values: for floats a and b,
+  // a < b exactly when b − a is at least the smallest subnormal number, and a ≤ b when b − a ≥ 0.
+  std::string decision_goal(const CppExpression& condition, bool taken) const {
+    if (condition.kind != CppExpression::Kind::binary) throw NotProvable("the guard " + spelled(condition));
+    std::string op = condition.text;
+    std::string a = expression(condition.operands[0], false), b = expression(condition.operands[1], false);
+    if (op == ">" || op == ">=") {
+      std::swap(a, b);
+      op = op == ">" ? "<" : "<=";
+    }
+    if (op != "<" && op != "<=") throw NotProvable("the guard " + spelled(condition));
+    // taken: a < b (b − a ≥ tiny) or a ≤ b (b − a ≥ 0); not taken: a ≥ b (a − b ≥ 0) or a > b (a − b ≥ tiny).
+    const bool strict = op == "<";
+    if (taken) return b + " - " + a + " >= " + (strict ? smallest_subnormal(format_) : "0");
+    return a + " - " + b + " >= " + (strict ? "0" : smallest_subnormal(format_));
+  }
+
+  const CppFunction& printed_;
+  const Kernel& kernel_;
+  const BinaryFormat& format_;
+  std::set<std::string> parameters_, steps_;
+  mutable std::set<std::string> absolutes_;  ///< the arguments of |…| in the definitions
+};
+
+// The outputs of the script for `taken`: each as printed, and its name in the script.
+std::vector<std::pair<std::string, std::string>> script_outputs(const CppFunction& printed,
+                                                                const Kernel& kernel,
+                                                                const BinaryFormat& format,
+                                                                const std::vector<bool>& taken) {
+  Script script(printed, kernel, format);
+  std::vector<std::string> bounded;
+  std::vector<std::pair<std::string, std::string>> outputs;
+  script.definitions(taken, bounded, outputs);
+  return outputs;
+}
+
+// Runs Gappa on `script`: its exit status and what it printed.
+std::pair<int, std::string> run_gappa(const std::string& script) {
+  std::string path = (std::filesystem::temp_directory_path() / "billiards-gappa-XXXXXX").string();
+  std::vector<char> name(path.begin(), path.end());
+  name.push_back('\0');
+  const int descriptor = mkstemp(name.data());
+  if (descriptor < 0) throw std::runtime_error("cannot create a temporary file for Gappa's input");
+  close(descriptor);
+  path = name.data();
+  {
+    std::ofstream file(path);
+    file << script;
+  }
+  std::string output;
+  int status = -1;
+  if (FILE* pipe = popen(("gappa '" + path + "' 2>&1").c_str(), "r")) {
+    char buffer[4096];
+    while (const std::size_t n = std::fread(buffer, 1, sizeof buffer, pipe)) output.append(buffer, n);
+    status = pclose(pipe);
+  }
+  std::filesystem::remove(path);
+  if (status == -1) throw std::runtime_error("cannot run Gappa");
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, output};
+}
+
+// The first property Gappa names as not satisfied, or its first error.
+std::string gappa_failure(const std::string& output) {
+  std::size_t at = output.find("not satisfied:");
+  if (at != std::string::npos) {
+    at = output.find_first_not_of(" \n", at + 14);
+  } else {
+    at = output.find("Error");
+  }
+  if (at == std::string::npos) return output;
+  return output.substr(at, output.find('\n', at) - at);
+}
+
+}  // namespace
+
+std::string gappa_script(const CppFunction& printed, const Kernel& kernel, const BinaryFormat& format,
+                         const std::vector<ex>& case_ranges, const std::vector<bool>& guards_taken,
+                         const std::vector<std::string>& hints) {
+  Script script(printed, kernel, format);
+  std::vector<std::string> bounded;
+  std::vector<std::pair<std::string, std::string>> outputs;
+  std::string out = script.definitions(guards_taken, bounded, outputs);
+  std::vector<std::string> goals;
+  for (const std::string& name : bounded)
+    goals.push_back("|" + name + "| in [" + smallest_normal_number(format) + ", " + largest_finite(format) +
+                    "]");
+  for (const auto& output : outputs)
+    goals.push_back("(c_" + output.second + " - e_" + output.second + ") / e_" + output.second + " in ?");
+  std::string hypotheses, wanted;
+  for (const std::string& h : script.hypotheses(case_ranges))
+    hypotheses += (hypotheses.empty() ? "" : " /\\ ") + h;
+  for (const std::string& g : goals) wanted += (wanted.empty() ? "" : "\n  /\\ ") + g;
+  std::string hinted;
+  for (const std::string& hint : hints) hinted += hint + "\n";
+  return out + "{ " + hypotheses + "\n  -> " + wanted + " }\n" + hinted;
+}
+
+std::vector<KernelProblem> prove_rounding(const CppFunction& printed, const Kernel& kernel,
+                                          std::vector<RoundingBound>& bounds) {
+  std::vector<KernelProblem> problems;
+  const auto fail = [&](const std::string& reason) {
+    problems.push_back({kernel.name, kernel.equals, "its rounding proof: " + reason});
+  };
+  std::vector<std::vector<ex>> cases = kernel.rounding_cases;
+  if (cases.empty()) cases.push_back({});
+  for (const BinaryFormat& format : emitted_formats()) {
+    for (const std::vector<ex>& ranges : cases) {
+      try {
+        // Each guard decided in turn: the domain and the case must say whether it is taken.
+        Script probe(printed, kernel, format);
+        std::vector<bool> taken;
+        const std::vector<const CppExpression*> conditions = probe.guard_conditions();
+        std::string hypotheses;
+        for (const std::string& h : probe.hypotheses(ranges))
+          hypotheses += (hypotheses.empty() ? "" : " /\\ ") + h;
+        for (const CppExpression* condition : conditions) {
+          std::optional<bool> decided;
+          for (const bool branch : {false, true}) {
+            Script attempt(printed, kernel, format);
+            std::vector<bool> trial = taken;
+            trial.resize(conditions.size(), false);
+            trial[taken.size()] = branch;
+            std::vector<std::string> unused;
+            std::vector<std::pair<std::string, std::string>> no_outputs;
+            const std::string definitions = attempt.definitions(trial, unused, no_outputs);
+            const std::string goal = attempt.decision_goal(*condition, branch);
+            if (run_gappa(definitions + "{ " + hypotheses + " -> " + goal + " }\n").first == 0) {
+              decided = branch;
+              break;
+            }
+          }
+          if (!decided)
+            throw NotProvable("in " + format.type + ", the domain neither rules out nor in the guard " +
+                              spelled(*condition));
+          taken.push_back(*decided);
+        }
+        // |x| where the domain and the case fix x's sign, told to Gappa as x or −x.
+        std::vector<std::string> hints;
+        {
+          Script signs(printed, kernel, format);
+          std::vector<std::string> unused;
+          std::vector<std::pair<std::string, std::string>> no_outputs;
+          const std::string definitions = signs.definitions(taken, unused, no_outputs);
+          for (const std::string& x : signs.absolutes_) {
+            for (const bool negative : {true, false}) {
+              const std::string goal = (negative ? "-" : "") + x + " >= 0";
+              if (run_gappa(definitions + "{ " + hypotheses + " -> " + goal + " }\n").first != 0) continue;
+              hints.push_back("|" + x + "| -> " + (negative ? "-" : "") + x + " { " + goal + " };");
+              break;
+            }
+          }
+        }
+        const std::string script = gappa_script(printed, kernel, format, ranges, taken, hints);
+        const auto [status, output] = run_gappa(script);
+        if (status != 0) {
+          fail("in " + format.type + " over " + hypotheses +
+               ", Gappa does not prove every intermediate and output finite and normal with a bounded "
+               "error: " +
+               gappa_failure(output));
+          continue;
+        }
+        RoundingBound bound{kernel.name, format.type, hypotheses, {}, {}, {}};
+        const GiNaC::numeric epsilon = GiNaC::numeric(2).power(1 - format.digits);
+        for (const auto& [spelling, name] : script_outputs(printed, kernel, format, taken)) {
+          const std::string goal = "(c_" + name + " - e_" + name + ") / e_" + name + " in [";
+          const std::size_t at = output.find(goal);
+          const std::optional<GiNaC::numeric> largest =
+              at == std::string::npos ? std::nullopt
+                                      : interval_magnitude(output.substr(at, output.find('\n', at) - at));
+          if (!largest) {
+            fail("cannot read Gappa's bound of " + spelling + " in: " + output);
+            break;
+          }
+          // Gappa answers `in ?` with what it can show, however wide: a bound of a digit or more is none.
+          if (*largest >= GiNaC::numeric(1, 1024)) {
+            fail("in " + format.type + " over " + hypotheses + ", Gappa bounds the relative error of " +
+                 spelling + " only by " + interval_text(*largest) + ": it may lose every digit");
+            break;
+          }
+          bound.outputs.push_back(spelling);
+          bound.relative.push_back(*largest);
+          bound.in_epsilons.push_back(std::ceil((*largest / epsilon).to_double() * 100) / 100);
+        }
+        if (bound.relative.size() != bound.outputs.size() || bound.outputs.empty()) continue;
+        bounds.push_back(std::move(bound));
+      } catch (const std::exception& error) {
+        fail(error.what());
+      }
+    }
+  }
+  return problems;
+}
+
+}  // namespace billiards::derive
