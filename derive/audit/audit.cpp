@@ -183,14 +183,17 @@ std::string audit_markdown(const Derivation& derivation) {
     }
   }
   if (!derivation.rounding.empty()) {
-    md << "\n## The fast paths' domains, proven safe\n\n"
-       << "Each fast path's plain form, read back from the header as printed, was given to Gappa over its "
-          "domain, in float and in double: every intermediate and every output is proven finite and a normal "
-          "number (from the smallest normal number to the largest finite one: no overflow, no underflow), "
+    md << "\n## Rounding, proven by Gappa\n\n"
+       << "Each fast path's plain form, and each kernel that states its rounding ranges, read back from the "
+          "header as printed, was given to Gappa over its domain and ranges, in float and in double: every "
+          "intermediate and every output is proven finite and a normal number (from the smallest normal "
+          "number to the largest finite one: no overflow, no underflow), "
           "and each output's rounding error is bounded, relative to its exact value, in units of ε = "
           "2^(1 − digits) (2^−23 in float, 2^−52 in double). A speed is taken in one binade: the outputs "
           "scale exactly with it, and its sign only turns them, so the bound holds at every magnitude where "
-          "they are normal numbers. A domain widened past what is safe fails billiards-derive.\n\n"
+          "the intermediates and outputs are normal numbers. A domain widened past what is safe fails "
+          "billiards-derive. The other kernels have no bound proven yet; billiards-accuracy measures "
+          "them.\n\n"
        << "| kernel | type | over (Gappa's hypotheses) | output | relative error at most |\n"
           "|---|---|---|---|---:|\n";
     for (const RoundingBound& bound : derivation.rounding) {

@@ -83,7 +83,8 @@ struct Kernel {
   /// Where this kernel keeps its accuracy when that is less than every valid input: relationals (a fast
   /// path's conditions) that its inputs must meet. The accuracy tool draws its inputs inside them.
   std::vector<GiNaC::ex> domain = {};
-  /// For a kernel with a domain, the rounding proof's cases (emit/rounding.hpp): in each, relationals
+  /// The rounding proof's cases (emit/rounding.hpp), for a kernel with a domain (which always has a proof)
+  /// or any straight-line kernel that states them: in each, relationals
   /// `a <= x`, `x <= b` bounding the quantities the domain leaves free — restitution in [0, 1], a speed
   /// such as v2n − v1n in one binade, [1, 2] (its outputs scale exactly with it, and its sign only turns
   /// them, so one binade stands for every magnitude at which they are normal numbers). Each case is

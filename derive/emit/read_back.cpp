@@ -218,7 +218,7 @@ class ReadBack {
       problems_.push_back(problem);
     }
     // Where the kernel is a fast path's plain form, its domain proven safe from the same text.
-    if (!kernel.domain.empty()) {
+    if (!kernel.domain.empty() || !kernel.rounding_cases.empty()) {
       const std::vector<KernelProblem> rounding = prove_rounding(*f, kernel, bounds_);
       problems_.insert(problems_.end(), rounding.begin(), rounding.end());
     }

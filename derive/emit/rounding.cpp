@@ -290,10 +290,14 @@ class Script {
 
   // The goal that says guard `condition` is taken (or not), on the computed values: for floats a and b,
   // a < b exactly when b − a is at least the smallest subnormal number, and a ≤ b when b − a ≥ 0.
-  std::string decision_goal(const CppExpression& condition, bool taken) const {
+  // Each side is computed as the header computes it, rounded: `g_a rnd= …;`, `g_b rnd= …;` come first
+  // (returned in `sides`).
+  std::string decision_goal(const CppExpression& condition, bool taken, std::string& sides) const {
     if (condition.kind != CppExpression::Kind::binary) throw NotProvable("the guard " + spelled(condition));
     std::string op = condition.text;
-    std::string a = expression(condition.operands[0], false), b = expression(condition.operands[1], false);
+    sides = "g_a rnd= " + expression(condition.operands[0], false) +
+            ";\ng_b rnd= " + expression(condition.operands[1], false) + ";\n";
+    std::string a = "g_a", b = "g_b";
     if (op == ">" || op == ">=") {
       std::swap(a, b);
       op = op == ">" ? "<" : "<=";
@@ -413,8 +417,9 @@ std::vector<KernelProblem> prove_rounding(const CppFunction& printed, const Kern
             std::vector<std::string> unused;
             std::vector<std::pair<std::string, std::string>> no_outputs;
             const std::string definitions = attempt.definitions(trial, unused, no_outputs);
-            const std::string goal = attempt.decision_goal(*condition, branch);
-            if (run_gappa(definitions + "{ " + hypotheses + " -> " + goal + " }\n").first == 0) {
+            std::string sides;
+            const std::string goal = attempt.decision_goal(*condition, branch, sides);
+            if (run_gappa(definitions + sides + "{ " + hypotheses + " -> " + goal + " }\n").first == 0) {
               decided = branch;
               break;
             }

@@ -150,6 +150,10 @@ const std::vector<Mutation>& paper_class_mutations() {
                      plain_mass_high(), infinity()),
       domain_widened("domain_mass_range_down_to_the_smallest_normal", "plain_normal_velocity_change",
                      plain_mass_low(), smallest_normal()),
+      // A kernel's stated rounding range widened through zero: v·n = 0 gives a change of 0, no normal
+      // number, and no relative bound.
+      {"rounding_range_through_zero", "cushion_normal_velocity_change",
+       [](Kernel& k) { k.rounding_cases.at(0).at(0) = 0 <= k.parameters.at(0); }},
       // A claim that no kernel cites.
       uncited_claim_wrong("uncited_claim_momentum_along_n", "along_n.momentum"),
       // A comment changes nothing that is proven.

@@ -241,6 +241,8 @@ std::vector<Kernel> collision_kernels(const Setting& setting, const KernelPieces
       .equals = "kernel.cushion_velocity_change",
       .in_claim_terms = {{vn, s.v1n}},
       .claims = {"cushion.limit"},
+      // v·n in one binade: the output scales exactly with it.
+      .rounding_cases = {{1 <= vn, vn <= 2}},
   });
   // The raw derivation, for the benchmark: the coefficients A, B, C as read off, D = B² − 4AC, and the
   // root (−B ± √D)/(2A) with the sign of (v2 − v1)·n, the collision root whichever the sign

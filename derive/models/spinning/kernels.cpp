@@ -166,6 +166,8 @@ void impulse_kernels(std::vector<Kernel>& kernels) {
         .outputs = {first + second},
         .equals = "impulse.tangential_inverse_effective_mass_solid_spheres",
         .claims = {"impulse.decoupled"},
+        // Rounding proven over masses in the plain range (it keeps its digits beyond it too).
+        .rounding_cases = {plain_mass_range(s.m1, s.m2)},
     });
   }
   {
@@ -216,6 +218,12 @@ void impulse_kernels(std::vector<Kernel>& kernels) {
         .equals = "kernel.friction_impulse",
         .in_claim_terms = {{normal, s.normal_impulse}, {slip, s.tangential_slip}, {k, s.k}},
         .claims = {"friction.sticking_impulse", "friction.sliding_never_reverses"},
+        // Rounding proven in each branch, every quantity in one binade: sticking (|u_t|/k the smaller)
+        // and sliding (μ J_n the smaller).
+        .rounding_cases = {{ex(1) / 2 <= s.friction, s.friction <= 1, 4 <= normal, normal <= 8,
+                            ex(1) / 2 <= slip, slip <= 1, 1 <= k, k <= 2},
+                           {ex(1) / 2 <= s.friction, s.friction <= 1, ex(1) / 16 <= normal,
+                            normal <= ex(1) / 8, ex(1) / 2 <= slip, slip <= 1, 1 <= k, k <= 2}},
     });
   }
 }
