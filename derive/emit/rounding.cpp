@@ -46,6 +46,11 @@ std::string gappa_number(const GiNaC::numeric& n) {
     if (const std::optional<int> k = exact_binary_logarithm(n)) return "1b" + std::to_string(*k);
   }
   if (n.is_integer()) return n.is_negative() ? "(" + text(n) + ")" : text(n);
+  // A dyadic number p/2^k as Gappa writes it, pb-k.
+  if (const std::optional<int> k = exact_binary_logarithm(n.denom())) {
+    const std::string dyadic = text(n.numer()) + "b" + std::to_string(-*k);
+    return n.is_negative() ? "(" + dyadic + ")" : dyadic;
+  }
   return "(" + text(n.numer()) + "/" + text(n.denom()) + ")";
 }
 
@@ -112,10 +117,17 @@ std::string interval_text(const GiNaC::numeric& n) {
 // Names in the script: a parameter p_x, a step as computed c_x, the same step in exact arithmetic e_x.
 class Script {
  public:
-  Script(const CppFunction& printed, const Kernel& kernel, const BinaryFormat& format)
+  Script(const CppFunction& printed, const Kernel& kernel, const BinaryFormat& format,
+         const std::vector<ex>& case_ranges)
       : printed_(printed), kernel_(kernel), format_(format) {
     for (const auto& parameter : printed.parameters) parameters_.insert(parameter.second);
+    hypotheses_ = intervals(kernel_.domain);
+    const std::vector<std::string> more = intervals(case_ranges);
+    hypotheses_.insert(hypotheses_.end(), more.begin(), more.end());
   }
+
+  // The domain's and the case's hypotheses.
+  const std::vector<std::string>& hypotheses() const { return hypotheses_; }
 
   // An expression of the printed kernel, rounded (each operation, as `rnd=` does) or exact.
   std::string expression(const CppExpression& e, bool exact) const {
@@ -145,6 +157,21 @@ class Script {
           const std::string argument = expression(e.operands[0], exact);
           absolutes_.insert(argument);
           return "|" + argument + "|";
+        }
+        // x = f 2^k split exactly: over one binade of x, [1, 2), the exponent is 0 and the scaling by 2^0
+        // exact; the kernel scales exactly with x (validated for every k), so one binade stands for all.
+        if (e.text == "binary_exponent" && e.operands.size() == 1) {
+          const CppExpression& x = e.operands[0];
+          const auto range = x.kind == Kind::name ? ranges_.find(x.text) : ranges_.end();
+          if (range == ranges_.end() || range->second.first < 1 || range->second.second >= 2)
+            throw NotProvable("binary_exponent(" + spelled(x) + ") needs " + spelled(x) +
+                              " a parameter in one binade, [1, 2)");
+          return "0";
+        }
+        if (e.text == "times_power_of_two" && e.operands.size() == 2) {
+          if (!zero_exponent(e.operands[1]))
+            throw NotProvable(spelled(e) + " scales by an exponent that is not 0 over the binade");
+          return expression(e.operands[0], exact);
         }
         if (e.text == "std::sqrt" && e.operands.size() == 1)
           return "sqrt(" + expression(e.operands[0], exact) + ")";
@@ -192,44 +219,49 @@ class Script {
     throw NotProvable("the range of " + print(e, Notation::text) + " has no Gappa form");
   }
 
-  // `low ≤ x` and `x ≤ high` in `relationals`, paired by x, as `x in [low, high]`.
-  static std::vector<std::string> intervals(const std::vector<ex>& relationals,
-                                            const std::function<std::string(const ex&)>& number) {
-    std::vector<std::pair<ex, std::pair<std::string, std::string>>> pairs;
+  // A bound of a range in the type: a number, or a named constant's value.
+  GiNaC::numeric bound_value(const ex& bound) const {
+    if (GiNaC::is_a<GiNaC::numeric>(bound)) return GiNaC::ex_to<GiNaC::numeric>(bound);
+    const std::optional<GiNaC::numeric> value = value_in(bound, format_);
+    if (!value)
+      throw NotProvable("the domain's bound " + print(bound, Notation::text) + " is not a finite number");
+    return *value;
+  }
+
+  // `low ≤ x`, `x ≤ high` and `x < 2^k` (the largest number of the type below 2^k) in `relationals`,
+  // paired by x, as `x in [low, high]`; a parameter's interval is kept for binary_exponent.
+  std::vector<std::string> intervals(const std::vector<ex>& relationals) {
+    std::vector<std::pair<ex, std::pair<std::optional<GiNaC::numeric>, std::optional<GiNaC::numeric>>>> pairs;
     for (const ex& r : relationals) {
-      if (!GiNaC::is_a<GiNaC::relational>(r) || !r.info(GiNaC::info_flags::relation_less_or_equal))
-        throw NotProvable(print(r, Notation::text) + " is not a bound `a <= x` or `x <= b`");
+      const bool strict = GiNaC::is_a<GiNaC::relational>(r) && r.info(GiNaC::info_flags::relation_less);
+      if (!GiNaC::is_a<GiNaC::relational>(r) ||
+          !(strict || r.info(GiNaC::info_flags::relation_less_or_equal)))
+        throw NotProvable(print(r, Notation::text) + " is not a bound `a <= x`, `x <= b` or `x < 2^k`");
       const bool lower = GiNaC::is_a<GiNaC::numeric>(r.lhs()) || is_named_constant(r.lhs());
-      const ex quantity = lower ? r.rhs() : r.lhs(), bound = lower ? r.lhs() : r.rhs();
+      const ex quantity = lower ? r.rhs() : r.lhs();
+      GiNaC::numeric bound = bound_value(lower ? r.lhs() : r.rhs());
+      if (strict) {
+        if (lower || !bound.is_positive() || !exact_binary_logarithm(bound))
+          throw NotProvable(print(r, Notation::text) + " is strict but not `x < 2^k`");
+        bound -= bound * GiNaC::numeric(2).power(-format_.digits);
+      }
       auto at =
           std::find_if(pairs.begin(), pairs.end(), [&](const auto& p) { return p.first.is_equal(quantity); });
       if (at == pairs.end()) {
         pairs.push_back({quantity, {}});
         at = pairs.end() - 1;
       }
-      (lower ? at->second.first : at->second.second) = interval_end(number(bound));
+      (lower ? at->second.first : at->second.second) = bound;
     }
     std::vector<std::string> out;
     for (const auto& [quantity, ends] : pairs) {
-      if (ends.first.empty() || ends.second.empty())
+      if (!ends.first || !ends.second)
         throw NotProvable(print(quantity, Notation::text) + " is bounded on one side only");
-      out.push_back(exact_text(quantity) + " in [" + ends.first + ", " + ends.second + "]");
+      if (GiNaC::is_a<GiNaC::symbol>(quantity))
+        ranges_[GiNaC::ex_to<GiNaC::symbol>(quantity).get_name()] = {*ends.first, *ends.second};
+      out.push_back(exact_text(quantity) + " in [" + interval_end(gappa_number(*ends.first)) + ", " +
+                    interval_end(gappa_number(*ends.second)) + "]");
     }
-    return out;
-  }
-
-  // The domain's and the case's hypotheses.
-  std::vector<std::string> hypotheses(const std::vector<ex>& case_ranges) const {
-    const auto domain_number = [&](const ex& bound) -> std::string {
-      if (GiNaC::is_a<GiNaC::numeric>(bound)) return gappa_number(GiNaC::ex_to<GiNaC::numeric>(bound));
-      const std::optional<GiNaC::numeric> value = value_in(bound, format_);
-      if (!value)
-        throw NotProvable("the domain's bound " + print(bound, Notation::text) + " is not a finite number");
-      return gappa_number(*value);
-    };
-    std::vector<std::string> out = intervals(kernel_.domain, domain_number);
-    const std::vector<std::string> more = intervals(case_ranges, domain_number);
-    out.insert(out.end(), more.begin(), more.end());
     return out;
   }
 
@@ -256,7 +288,12 @@ class Script {
         out << "c_" << s.name << " rnd= " << expression(value, false) << ";\n";
         out << "e_" << s.name << " = " << expression(value, true) << ";\n";
         steps_.insert(s.name);
-        bounded.push_back("c_" + s.name);
+        // An exponent (0 over the binade) is an integer, not a number whose digits count.
+        if (zero_exponent(value)) {
+          zero_steps_.insert(s.name);
+        } else {
+          bounded.push_back("c_" + s.name);
+        }
       } else if (s.kind == Kind::return_) {
         std::vector<CppExpression> values = s.value->kind == CppExpression::Kind::braced
                                                 ? s.value->operands
@@ -309,10 +346,24 @@ class Script {
     return a + " - " + b + " >= " + (strict ? "0" : smallest_subnormal(format_));
   }
 
+  // Whether an exponent expression is 0 over the hypotheses: binary_exponent of a parameter in [1, 2),
+  // a step that is, and sums, differences and negations of them.
+  bool zero_exponent(const CppExpression& e) const {
+    using Kind = CppExpression::Kind;
+    if (e.kind == Kind::call && e.text == "binary_exponent") return true;  // its range checked when printed
+    if (e.kind == Kind::name) return zero_steps_.count(e.text) > 0;
+    if (e.kind == Kind::unary && e.text == "-") return zero_exponent(e.operands[0]);
+    if (e.kind == Kind::binary && (e.text == "+" || e.text == "-"))
+      return zero_exponent(e.operands[0]) && zero_exponent(e.operands[1]);
+    return false;
+  }
+
   const CppFunction& printed_;
   const Kernel& kernel_;
   const BinaryFormat& format_;
-  std::set<std::string> parameters_, steps_;
+  std::set<std::string> parameters_, steps_, zero_steps_;
+  std::map<std::string, std::pair<GiNaC::numeric, GiNaC::numeric>> ranges_;  ///< each parameter's interval
+  std::vector<std::string> hypotheses_;
   mutable std::set<std::string> absolutes_;  ///< the arguments of |…| in the definitions
 };
 
@@ -320,8 +371,9 @@ class Script {
 std::vector<std::pair<std::string, std::string>> script_outputs(const CppFunction& printed,
                                                                 const Kernel& kernel,
                                                                 const BinaryFormat& format,
+                                                                const std::vector<ex>& ranges,
                                                                 const std::vector<bool>& taken) {
-  Script script(printed, kernel, format);
+  Script script(printed, kernel, format, ranges);
   std::vector<std::string> bounded;
   std::vector<std::pair<std::string, std::string>> outputs;
   script.definitions(taken, bounded, outputs);
@@ -370,7 +422,7 @@ std::string gappa_failure(const std::string& output) {
 std::string gappa_script(const CppFunction& printed, const Kernel& kernel, const BinaryFormat& format,
                          const std::vector<ex>& case_ranges, const std::vector<bool>& guards_taken,
                          const std::vector<std::string>& hints) {
-  Script script(printed, kernel, format);
+  Script script(printed, kernel, format, case_ranges);
   std::vector<std::string> bounded;
   std::vector<std::pair<std::string, std::string>> outputs;
   std::string out = script.definitions(guards_taken, bounded, outputs);
@@ -381,8 +433,7 @@ std::string gappa_script(const CppFunction& printed, const Kernel& kernel, const
   for (const auto& output : outputs)
     goals.push_back("(c_" + output.second + " - e_" + output.second + ") / e_" + output.second + " in ?");
   std::string hypotheses, wanted;
-  for (const std::string& h : script.hypotheses(case_ranges))
-    hypotheses += (hypotheses.empty() ? "" : " /\\ ") + h;
+  for (const std::string& h : script.hypotheses()) hypotheses += (hypotheses.empty() ? "" : " /\\ ") + h;
   for (const std::string& g : goals) wanted += (wanted.empty() ? "" : "\n  /\\ ") + g;
   std::string hinted;
   for (const std::string& hint : hints) hinted += hint + "\n";
@@ -401,16 +452,15 @@ std::vector<KernelProblem> prove_rounding(const CppFunction& printed, const Kern
     for (const std::vector<ex>& ranges : cases) {
       try {
         // Each guard decided in turn: the domain and the case must say whether it is taken.
-        Script probe(printed, kernel, format);
+        Script probe(printed, kernel, format, ranges);
         std::vector<bool> taken;
         const std::vector<const CppExpression*> conditions = probe.guard_conditions();
         std::string hypotheses;
-        for (const std::string& h : probe.hypotheses(ranges))
-          hypotheses += (hypotheses.empty() ? "" : " /\\ ") + h;
+        for (const std::string& h : probe.hypotheses()) hypotheses += (hypotheses.empty() ? "" : " /\\ ") + h;
         for (const CppExpression* condition : conditions) {
           std::optional<bool> decided;
           for (const bool branch : {false, true}) {
-            Script attempt(printed, kernel, format);
+            Script attempt(printed, kernel, format, ranges);
             std::vector<bool> trial = taken;
             trial.resize(conditions.size(), false);
             trial[taken.size()] = branch;
@@ -432,7 +482,7 @@ std::vector<KernelProblem> prove_rounding(const CppFunction& printed, const Kern
         // |x| where the domain and the case fix x's sign, told to Gappa as x or −x.
         std::vector<std::string> hints;
         {
-          Script signs(printed, kernel, format);
+          Script signs(printed, kernel, format, ranges);
           std::vector<std::string> unused;
           std::vector<std::pair<std::string, std::string>> no_outputs;
           const std::string definitions = signs.definitions(taken, unused, no_outputs);
@@ -456,7 +506,7 @@ std::vector<KernelProblem> prove_rounding(const CppFunction& printed, const Kern
         }
         RoundingBound bound{kernel.name, format.type, hypotheses, {}, {}, {}};
         const GiNaC::numeric epsilon = GiNaC::numeric(2).power(1 - format.digits);
-        for (const auto& [spelling, name] : script_outputs(printed, kernel, format, taken)) {
+        for (const auto& [spelling, name] : script_outputs(printed, kernel, format, ranges, taken)) {
           const std::string goal = "(c_" + name + " - e_" + name + ") / e_" + name + " in [";
           const std::size_t at = output.find(goal);
           const std::optional<GiNaC::numeric> largest =

@@ -183,6 +183,9 @@ const std::vector<Mutation>& spin_class_mutations() {
               "max_exponent / 4 - 2", "max_exponent / 4 - 1"),
       meanings_swapped("meaning_roll_time_speed_and_gravity_swapped", "roll_time", "speed", "gravity"),
       uncited_claim_wrong("uncited_claim_linear_momentum", "conservation.linear_momentum"),
+      // A scaled kernel's range beyond one binade, where its exponents are no longer 0.
+      {"rounding_range_beyond_one_binade", "spin_change_per_impulse",
+       [](Kernel& k) { k.rounding_cases.at(0).at(1) = k.parameters.at(0) < 4; }},
       // The phase times' moderate range widened up to 2^509 (double) from 2^254: a quotient of three
       // inputs then overflows.
       domain_widened("domain_moderate_range_to_the_plain_mass_range", "plain_slide_time", moderate_high(),

@@ -131,6 +131,18 @@ void kernel_claims(Recorder& record, const Contact& c, const Impulse& impulse, c
 
 namespace {
 
+// The rounding proof's case for a kernel scaled by powers of two (scaled_monomial): every parameter in one
+// binade, 1 ≤ x < 2, where each exponent is 0; the kernel scales exactly with each (its validation holds
+// for every exponent), so the bound holds wherever its intermediates and its output are normal numbers.
+std::vector<ex> in_one_binade(const std::vector<ex>& parameters) {
+  std::vector<ex> ranges;
+  for (const ex& parameter : parameters) {
+    ranges.push_back(1 <= parameter);
+    ranges.push_back(parameter < 2);
+  }
+  return ranges;
+}
+
 // `plain`, a faster form of `full`'s claim where every one of `conditions` holds (its domain), and `full`
 // taking it there first through the predicate `predicate`: both appended, `plain` first.
 void push_with_fast_path(std::vector<Kernel>& kernels, Kernel plain, Kernel full,
@@ -363,6 +375,7 @@ void spin_change_kernels(std::vector<Kernel>& kernels) {
         .equals = "kernel.spin_change_per_impulse",
         .in_claim_terms = {{mass, s.m1}, {radius, s.R1}},
         .claims = {"kernel.spin_change_per_impulse_second_ball"},
+        .rounding_cases = {in_one_binade({mass, radius})},
     });
   }
 }
@@ -382,6 +395,7 @@ void phase_time_kernels(std::vector<Kernel>& kernels, const Cloth& cloth) {
     scaled.steps.push_back({duration, scaled.value, {frictionless}});
     full.steps = scaled.steps;
     full.outputs = {duration};
+    full.rounding_cases = {in_one_binade(full.parameters)};
     std::vector<ex> conditions;
     for (const ex& parameter : full.parameters) {
       conditions.push_back(moderate_low() <= parameter);
