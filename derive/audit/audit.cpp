@@ -184,16 +184,18 @@ std::string audit_markdown(const Derivation& derivation) {
   }
   if (!derivation.rounding.empty()) {
     md << "\n## Rounding, proven by Gappa\n\n"
-       << "Each fast path's plain form, and each kernel that states its rounding ranges, read back from the "
-          "header as printed, was given to Gappa over its domain and ranges, in float and in double: every "
-          "intermediate and every output is proven finite and a normal number (from the smallest normal "
-          "number to the largest finite one: no overflow, no underflow), "
-          "and each output's rounding error is bounded, relative to its exact value, in units of ε = "
-          "2^(1 − digits) (2^−23 in float, 2^−52 in double). A speed is taken in one binade: the outputs "
-          "scale exactly with it, and its sign only turns them, so the bound holds at every magnitude where "
-          "the intermediates and outputs are normal numbers. A domain widened past what is safe fails "
-          "billiards-derive. The other kernels have no bound proven yet; billiards-accuracy measures "
-          "them.\n\n"
+       << "Every kernel, read back from the header as printed, was given to Gappa in float and in double: a "
+          "fast path's plain form over its domain, every other kernel over the cases it states. A plain form "
+          "is proven to keep every digit: every intermediate and every output finite and a normal number "
+          "(from the smallest normal number to the largest finite one: no overflow, no underflow). Over a "
+          "stated case every intermediate is proven finite (a fraction that leaves the normal range there "
+          "only chooses the form) and every output a normal number. Each output's rounding error is "
+          "bounded, relative to its exact value, in units of ε = 2^(1 − digits) (2^−23 in float, 2^−52 in "
+          "double). A case takes speeds, masses and sizes in one binade, where each binary exponent is fixed: "
+          "the outputs scale exactly with them, and a sign only turns them, so the bound holds at every "
+          "magnitude where the intermediates and outputs are normal numbers. A full form's cases put its "
+          "masses beyond the plain range, each way round, and past where the light ball's share leaves the "
+          "normal range. A domain or case widened past what is safe fails billiards-derive.\n\n"
        << "| kernel | type | over (Gappa's hypotheses) | output | relative error at most |\n"
           "|---|---|---|---|---:|\n";
     for (const RoundingBound& bound : derivation.rounding) {

@@ -26,6 +26,29 @@ std::vector<GiNaC::ex> plain_mass_range(const GiNaC::ex& m1, const GiNaC::ex& m2
   return {plain_mass_low() <= m1, m1 <= plain_mass_high(), plain_mass_low() <= m2, m2 <= plain_mass_high()};
 }
 
+std::vector<MassCase> beyond_plain_mass_cases(const GiNaC::ex& m1, const GiNaC::ex& m2) {
+  const GiNaC::ex high = plain_mass_high(), x_min = smallest_normal();
+  // Each in one binade, so that each mass's binary exponent is fixed: [low, top] or [low, top).
+  const auto between = [](const GiNaC::ex& low, const GiNaC::ex& x, const GiNaC::ex& top) {
+    return std::vector<GiNaC::ex>{low <= x, x <= top};
+  };
+  const auto below = [](const GiNaC::ex& low, const GiNaC::ex& x, const GiNaC::ex& top) {
+    return std::vector<GiNaC::ex>{low <= x, x < top};
+  };
+  const auto both = [](std::vector<GiNaC::ex> a, const std::vector<GiNaC::ex>& b) {
+    a.insert(a.end(), b.begin(), b.end());
+    return a;
+  };
+  const GiNaC::ex light_low = GiNaC::numeric(1, 2), light_high = GiNaC::numeric(5, 8);
+  const GiNaC::ex heavy_low = GiNaC::numeric(3, 2) / x_min, heavy_high = GiNaC::numeric(7, 4) / x_min;
+  return {
+      {both(below(1, m1, 2), below(2 * high, m2, 4 * high))},
+      {both(below(2 * high, m1, 4 * high), below(1, m2, 2))},
+      {both(between(light_low, m1, light_high), between(heavy_low, m2, heavy_high)), 16},
+      {both(between(heavy_low, m1, heavy_high), between(light_low, m2, light_high)), 16},
+  };
+}
+
 const GiNaC::symbol& moderate_low() {
   static const GiNaC::symbol constant("moderate_low", "x_{\\text{low}}");
   return constant;

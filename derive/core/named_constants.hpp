@@ -24,6 +24,18 @@ const GiNaC::symbol& plain_mass_high();
 /// order (a fast path's domain and predicate conditions, in both models).
 std::vector<GiNaC::ex> plain_mass_range(const GiNaC::ex& m1, const GiNaC::ex& m2);
 
+/// Masses beyond the plain range, where a full form takes over, for its rounding proof: one mass in
+/// [1, 2) and the other in [2 plain_mass_high, 4 plain_mass_high), either way round; and one in [1/2, 5/8]
+/// with the other in [(3/2)/x_min, (7/4)/x_min], either way round, where the light ball's share
+/// m_light/(m_light + m_heavy) is below x_min = smallest_normal while the ratio m_heavy/m_light is finite.
+/// Speeds of that case are taken `speed_scale` = 16 times larger, so that the heavy ball's change is a
+/// normal number.
+struct MassCase {
+  std::vector<GiNaC::ex> masses;
+  int speed_scale = 1;
+};
+std::vector<MassCase> beyond_plain_mass_cases(const GiNaC::ex& m1, const GiNaC::ex& m2);
+
 /// The moderate range [2^−(E/4 − 2), 2^(E/4 − 2)] of Scalar, E = std::numeric_limits<Scalar>::max_exponent
 /// (2^−254 to 2^254 in double, 2^−30 to 2^30 in float): a product or quotient of four numbers in it, times
 /// 2/7 or 5/2, is a normal number, so a monomial kernel's plain form keeps every digit there. Printed as

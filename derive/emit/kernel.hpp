@@ -83,12 +83,13 @@ struct Kernel {
   /// Where this kernel keeps its accuracy when that is less than every valid input: relationals (a fast
   /// path's conditions) that its inputs must meet. The accuracy tool draws its inputs inside them.
   std::vector<GiNaC::ex> domain = {};
-  /// The rounding proof's cases (emit/rounding.hpp), for a kernel with a domain (which always has a proof)
-  /// or any straight-line kernel that states them: in each, relationals
-  /// `a <= x`, `x <= b` bounding the quantities the domain leaves free — restitution in [0, 1], a speed
-  /// such as v2n − v1n in one binade, [1, 2] (its outputs scale exactly with it, and its sign only turns
-  /// them, so one binade stands for every magnitude at which they are normal numbers). Each case is
-  /// proven on its own; none means the domain alone.
+  /// The rounding proof's cases (emit/rounding.hpp). Every kernel that is not a reference kernel needs a
+  /// domain or at least one case, or billiards-derive fails: its error bound is proven over them. In
+  /// each, relationals `a <= x`, `x <= b`, `x < 2^k` or `-2^k < x` (the bounds numbers or named constants'
+  /// expressions) bounding the quantities the domain leaves free — restitution in [0, 1], a speed such as
+  /// v2n − v1n in one binade, [1, 2] (its outputs scale exactly with it, and its sign only turns them, so
+  /// one binade stands for every magnitude at which they are normal numbers), a mass beyond the plain
+  /// range. Each case is proven on its own; none means the domain alone.
   std::vector<std::vector<GiNaC::ex>> rounding_cases = {};
 };
 

@@ -31,8 +31,8 @@ namespace billiards::derive {
 /// A function the header defines that none of these covers is a problem too (support code that is bit
 /// manipulation — binary_exponent, times_power_of_two, bits_above, larger, orders_as_bits — is checked
 /// over every exponent, on the host path and the device path, by the support-code tests).
-/// Each kernel with a domain (a fast path's plain form) is also proven safe there from its text, by Gappa
-/// (prove_rounding), its bounds appended to `bounds`. `kernels` are the ones printed into this header.
+/// Each kernel with a domain (a fast path's plain form) or rounding cases is also proven safe there from
+/// its text, by Gappa (prove_rounding), its bounds appended to `bounds`. `kernels` are the ones printed into this header.
 /// Never throws.
 std::vector<KernelProblem> prove_printed(const std::string& header, const std::vector<Kernel>& kernels,
                                          const std::vector<Claim>& claims,

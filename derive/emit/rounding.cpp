@@ -3,9 +3,11 @@
 #include "core/powers_of_two.hpp"
 #include "print/printer.hpp"
 
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -44,6 +46,17 @@ std::string gappa_format(const BinaryFormat& format) {
 std::string gappa_number(const GiNaC::numeric& n) {
   if (n.is_positive() && (n > 1024 || n < 1)) {
     if (const std::optional<int> k = exact_binary_logarithm(n)) return "1b" + std::to_string(*k);
+  }
+  if (n.is_integer() && GiNaC::abs(n) > 1024) {
+    // A large multiple of a power of two as Gappa writes it, pbk: 3 · 2^1021 is 3b1021.
+    GiNaC::numeric odd = n;
+    int k = 0;
+    while ((odd / 2).is_integer()) {
+      odd /= 2;
+      ++k;
+    }
+    const std::string dyadic = text(odd) + "b" + std::to_string(k);
+    return n.is_negative() ? "(" + dyadic + ")" : dyadic;
   }
   if (n.is_integer()) return n.is_negative() ? "(" + text(n) + ")" : text(n);
   // A dyadic number p/2^k as Gappa writes it, pb-k.
@@ -88,8 +101,8 @@ std::optional<GiNaC::numeric> dyadic_value(const std::string& word) {
   }
 }
 
-// The larger magnitude of the interval in a result line of Gappa's, `… in [low {…}, high {…}]`.
-std::optional<GiNaC::numeric> interval_magnitude(const std::string& line) {
+// The ends of the interval in a result line of Gappa's, `… in [low {…}, high {…}]`.
+std::optional<std::pair<GiNaC::numeric, GiNaC::numeric>> interval_ends(const std::string& line) {
   const std::size_t open = line.find(" in [");
   const std::size_t close = line.rfind(']');
   if (open == std::string::npos || close == std::string::npos || close < open) return std::nullopt;
@@ -104,12 +117,114 @@ std::optional<GiNaC::numeric> interval_magnitude(const std::string& line) {
   const std::optional<GiNaC::numeric> low = dyadic_value(inside.substr(0, comma)),
                                       high = dyadic_value(inside.substr(comma + 1));
   if (!low || !high) return std::nullopt;
-  return std::max(GiNaC::abs(*low), GiNaC::abs(*high));
+  return std::make_pair(*low, *high);
+}
+
+// The larger magnitude of the interval in a result line of Gappa's.
+std::optional<GiNaC::numeric> interval_magnitude(const std::string& line) {
+  const auto ends = interval_ends(line);
+  if (!ends) return std::nullopt;
+  return std::max(GiNaC::abs(ends->first), GiNaC::abs(ends->second));
+}
+
+// ⌊log2 x⌋ of a positive rational.
+int floor_binary_logarithm(const GiNaC::numeric& x) {
+  int k = static_cast<int>(x.numer().int_length()) - static_cast<int>(x.denom().int_length());
+  const GiNaC::numeric two(2);
+  while (two.power(k) > x) --k;
+  while (two.power(k + 1) <= x) ++k;
+  return k;
+}
+
+// The exponent k with every x of [low, high] in ±[2^k, 2^(k+1)): binary_exponent's value over it.
+std::optional<int> one_binade(const GiNaC::numeric& low, const GiNaC::numeric& high) {
+  if (!(low.is_positive() || high.is_negative())) return std::nullopt;
+  const GiNaC::numeric small = low.is_positive() ? low : -high, large = low.is_positive() ? high : -low;
+  const int k = floor_binary_logarithm(small);
+  if (large >= GiNaC::numeric(2).power(k + 1)) return std::nullopt;
+  return k;
 }
 
 // A positive rational's size as a power of two, for messages: about 2^k.
 std::string interval_text(const GiNaC::numeric& n) {
   return "about 2^" + std::to_string(n.numer().int_length() - n.denom().int_length());
+}
+
+// `script` without the definitions its proposition and hints do not read, directly or through other
+// definitions: Gappa takes time over every definition it is given.
+std::string only_what_is_read(const std::string& script) {
+  std::vector<std::string> lines;
+  for (std::size_t at = 0; at < script.size();) {
+    const std::size_t end = script.find('\n', at);
+    lines.push_back(script.substr(at, end == std::string::npos ? std::string::npos : end - at));
+    at = end == std::string::npos ? script.size() : end + 1;
+  }
+  const auto defined = [](const std::string& line) -> std::string {
+    const std::size_t space = line.find(' ');
+    if (space == std::string::npos || line.empty() || line[0] == '@' || line[0] == '{') return "";
+    const std::string rest = line.substr(space + 1);
+    return rest.rfind("= ", 0) == 0 || rest.rfind("rnd= ", 0) == 0 ? line.substr(0, space) : "";
+  };
+  std::set<std::string> read;
+  const auto reads = [&](const std::string& text) {
+    for (std::size_t at = 0; at < text.size();) {
+      if (std::isalpha(static_cast<unsigned char>(text[at])) || text[at] == '_') {
+        std::size_t end = at;
+        while (end < text.size() && (std::isalnum(static_cast<unsigned char>(text[end])) || text[end] == '_')) ++end;
+        read.insert(text.substr(at, end - at));
+        at = end;
+      } else {
+        ++at;
+      }
+    }
+  };
+  std::vector<bool> kept(lines.size(), false);
+  for (std::size_t i = 0; i < lines.size(); ++i) {
+    if (defined(lines[i]).empty()) {
+      kept[i] = true;
+      reads(lines[i]);
+    }
+  }
+  for (std::size_t i = lines.size(); i-- > 0;) {
+    const std::string name = defined(lines[i]);
+    if (name.empty() || !read.count(name)) continue;
+    kept[i] = true;
+    reads(lines[i].substr(name.size()));
+  }
+  std::string out;
+  for (std::size_t i = 0; i < lines.size(); ++i) {
+    if (kept[i]) out += lines[i] + "\n";
+  }
+  return out;
+}
+
+// Runs Gappa on `script`: its exit status and what it printed.
+std::pair<int, std::string> run_gappa(const std::string& whole) {
+  const std::string script = only_what_is_read(whole);
+  // The same script (a probe repeated for another guard or case) is answered once.
+  static std::map<std::string, std::pair<int, std::string>> answered;
+  if (const auto known = answered.find(script); known != answered.end()) return known->second;
+  std::string path = (std::filesystem::temp_directory_path() / "billiards-gappa-XXXXXX").string();
+  std::vector<char> name(path.begin(), path.end());
+  name.push_back('\0');
+  const int descriptor = mkstemp(name.data());
+  if (descriptor < 0) throw std::runtime_error("cannot create a temporary file for Gappa's input");
+  close(descriptor);
+  path = name.data();
+  {
+    std::ofstream file(path);
+    file << script;
+  }
+  std::string output;
+  int status = -1;
+  if (FILE* pipe = popen(("gappa '" + path + "' 2>&1").c_str(), "r")) {
+    char buffer[4096];
+    while (const std::size_t n = std::fread(buffer, 1, sizeof buffer, pipe)) output.append(buffer, n);
+    status = pclose(pipe);
+  }
+  std::filesystem::remove(path);
+  if (status == -1) throw std::runtime_error("cannot run Gappa");
+  return answered[script] = {WIFEXITED(status) ? WEXITSTATUS(status) : -1, output};
 }
 
 // ---- the kernel as Gappa reads it ------------------------------------------------------------------
@@ -128,6 +243,8 @@ class Script {
 
   // The domain's and the case's hypotheses.
   const std::vector<std::string>& hypotheses() const { return hypotheses_; }
+  // Each exact scaling by a power of two the definitions wrote, as computed.
+  const std::set<std::string>& scalings() const { return scalings_; }
 
   // An expression of the printed kernel, rounded (each operation, as `rnd=` does) or exact.
   std::string expression(const CppExpression& e, bool exact) const {
@@ -135,6 +252,8 @@ class Script {
     switch (e.kind) {
       case Kind::name:
         if (parameters_.count(e.text)) return "p_" + e.text;
+        if (const auto integer = integer_steps_.find(e.text); integer != integer_steps_.end())
+          return gappa_number(integer->second);
         if (steps_.count(e.text)) return (exact ? "e_" : "c_") + e.text;
         throw NotProvable("reads " + e.text + ", which is no parameter or earlier step");
       case Kind::unary:
@@ -158,20 +277,18 @@ class Script {
           absolutes_.insert(argument);
           return "|" + argument + "|";
         }
-        // x = f 2^k split exactly: over one binade of x, [1, 2), the exponent is 0 and the scaling by 2^0
-        // exact; the kernel scales exactly with x (validated for every k), so one binade stands for all.
-        if (e.text == "binary_exponent" && e.operands.size() == 1) {
-          const CppExpression& x = e.operands[0];
-          const auto range = x.kind == Kind::name ? ranges_.find(x.text) : ranges_.end();
-          if (range == ranges_.end() || range->second.first < 1 || range->second.second >= 2)
-            throw NotProvable("binary_exponent(" + spelled(x) + ") needs " + spelled(x) +
-                              " a parameter in one binade, [1, 2)");
-          return "0";
-        }
+        // x = f 2^k split exactly: where x lies in one binade, ±[2^k, 2^(k+1)), its exponent is the
+        // integer k, and the scaling by 2^k (correctly rounded) exact where its result is normal, which
+        // the script then proves.
+        if (e.text == "binary_exponent" && e.operands.size() == 1) return gappa_number(exponent_of(e));
         if (e.text == "times_power_of_two" && e.operands.size() == 2) {
-          if (!zero_exponent(e.operands[1]))
-            throw NotProvable(spelled(e) + " scales by an exponent that is not 0 over the binade");
-          return expression(e.operands[0], exact);
+          const std::optional<int> k = integer_value(e.operands[1]);
+          if (!k) throw NotProvable(spelled(e) + " scales by an exponent the case does not fix");
+          const std::string scaled = expression(e.operands[0], exact);
+          if (*k == 0) return scaled;
+          const std::string out = "(" + scaled + " * " + gappa_number(GiNaC::numeric(2).power(*k)) + ")";
+          if (!exact) scalings_.insert(out);
+          return out;
         }
         if (e.text == "std::sqrt" && e.operands.size() == 1)
           return "sqrt(" + expression(e.operands[0], exact) + ")";
@@ -219,13 +336,30 @@ class Script {
     throw NotProvable("the range of " + print(e, Notation::text) + " has no Gappa form");
   }
 
-  // A bound of a range in the type: a number, or a named constant's value.
-  GiNaC::numeric bound_value(const ex& bound) const {
+  // A bound of a range in the type: a number, or one made of named constants (their values in the
+  // type); nothing when `bound` reads anything else.
+  std::optional<GiNaC::numeric> constant_value(const ex& bound) const {
     if (GiNaC::is_a<GiNaC::numeric>(bound)) return GiNaC::ex_to<GiNaC::numeric>(bound);
-    const std::optional<GiNaC::numeric> value = value_in(bound, format_);
-    if (!value)
-      throw NotProvable("the domain's bound " + print(bound, Notation::text) + " is not a finite number");
-    return *value;
+    if (is_named_constant(bound)) {
+      const std::optional<GiNaC::numeric> value = value_in(bound, format_);
+      if (!value)
+        throw NotProvable("the domain's bound " + print(bound, Notation::text) + " is not a finite number");
+      return value;
+    }
+    if (GiNaC::is_a<GiNaC::add>(bound) || GiNaC::is_a<GiNaC::mul>(bound) ||
+        (GiNaC::is_a<GiNaC::power>(bound) && bound.op(1).info(GiNaC::info_flags::integer))) {
+      std::vector<GiNaC::numeric> values;
+      for (const ex& operand : bound) {
+        const std::optional<GiNaC::numeric> value = constant_value(operand);
+        if (!value) return std::nullopt;
+        values.push_back(*value);
+      }
+      if (GiNaC::is_a<GiNaC::power>(bound)) return values[0].power(values[1]);
+      GiNaC::numeric out = GiNaC::is_a<GiNaC::add>(bound) ? 0 : 1;
+      for (const GiNaC::numeric& value : values) out = GiNaC::is_a<GiNaC::add>(bound) ? out + value : out * value;
+      return out;
+    }
+    return std::nullopt;
   }
 
   // `low ≤ x`, `x ≤ high` and `x < 2^k` (the largest number of the type below 2^k) in `relationals`,
@@ -236,13 +370,17 @@ class Script {
       const bool strict = GiNaC::is_a<GiNaC::relational>(r) && r.info(GiNaC::info_flags::relation_less);
       if (!GiNaC::is_a<GiNaC::relational>(r) ||
           !(strict || r.info(GiNaC::info_flags::relation_less_or_equal)))
-        throw NotProvable(print(r, Notation::text) + " is not a bound `a <= x`, `x <= b` or `x < 2^k`");
-      const bool lower = GiNaC::is_a<GiNaC::numeric>(r.lhs()) || is_named_constant(r.lhs());
+        throw NotProvable(print(r, Notation::text) +
+                          " is not a bound `a <= x`, `x <= b`, `x < 2^k` or `-2^k < x`");
+      const bool lower = constant_value(r.lhs()).has_value();
       const ex quantity = lower ? r.rhs() : r.lhs();
-      GiNaC::numeric bound = bound_value(lower ? r.lhs() : r.rhs());
+      const std::optional<GiNaC::numeric> value = constant_value(lower ? r.lhs() : r.rhs());
+      if (!value) throw NotProvable(print(r, Notation::text) + " bounds nothing by a constant");
+      GiNaC::numeric bound = *value;
       if (strict) {
-        if (lower || !bound.is_positive() || !exact_binary_logarithm(bound))
-          throw NotProvable(print(r, Notation::text) + " is strict but not `x < 2^k`");
+        // x < 2^k: x is at most the number of the type just below 2^k; −2^k < x, at least the one above.
+        if ((lower ? bound.is_positive() : !bound.is_positive()) || !exact_binary_logarithm(GiNaC::abs(bound)))
+          throw NotProvable(print(r, Notation::text) + " is strict but not `x < 2^k` or `-2^k < x`");
         bound -= bound * GiNaC::numeric(2).power(-format_.digits);
       }
       auto at =
@@ -267,8 +405,9 @@ class Script {
 
   // The script's definitions: each parameter a number of the format, each step computed and exact, with
   // its guards taken as `taken` says; the outputs o_i and e_o_i. Collects the names to bound in `bounded`.
+  // With `partial`, the script stops before the first step whose guards `taken` does not decide yet.
   std::string definitions(const std::vector<bool>& taken, std::vector<std::string>& bounded,
-                          std::vector<std::pair<std::string, std::string>>& outputs) {
+                          std::vector<std::pair<std::string, std::string>>& outputs, bool partial = false) {
     std::ostringstream out;
     out << "@rnd = " << gappa_format(format_) << ";\n";
     for (const auto& parameter : printed_.parameters)
@@ -282,23 +421,28 @@ class Script {
         // Its guards, each taken or not: the value is the last taken one's.
         for (std::size_t j = i + 1; j < printed_.body.size() && printed_.body[j].kind == Kind::if_;
              ++j, ++guard) {
-          if (guard >= taken.size()) throw NotProvable("a guard without a decision");
+          if (guard >= taken.size()) {
+            if (partial) return out.str();
+            throw NotProvable("a guard without a decision");
+          }
           if (taken[guard]) value = *printed_.body[j].body.at(0).value;
+        }
+        fix_exponents(value, out.str());
+        // An exponent is an integer the case fixes, not a number whose digits count.
+        if (const std::optional<int> k = integer_value(value)) {
+          integer_steps_[s.name] = *k;
+          continue;
         }
         out << "c_" << s.name << " rnd= " << expression(value, false) << ";\n";
         out << "e_" << s.name << " = " << expression(value, true) << ";\n";
         steps_.insert(s.name);
-        // An exponent (0 over the binade) is an integer, not a number whose digits count.
-        if (zero_exponent(value)) {
-          zero_steps_.insert(s.name);
-        } else {
-          bounded.push_back("c_" + s.name);
-        }
+        bounded.push_back("c_" + s.name);
       } else if (s.kind == Kind::return_) {
         std::vector<CppExpression> values = s.value->kind == CppExpression::Kind::braced
                                                 ? s.value->operands
                                                 : std::vector<CppExpression>{*s.value};
         for (std::size_t k = 0; k < values.size(); ++k) {
+          fix_exponents(values[k], out.str());
           // An output that is a step is that step (Gappa would rename a copy); any other, o_k.
           std::string name = values[k].kind == CppExpression::Kind::name ? values[k].text : "";
           if (name.empty() || !steps_.count(name)) {
@@ -346,25 +490,74 @@ class Script {
     return a + " - " + b + " >= " + (strict ? "0" : smallest_subnormal(format_));
   }
 
-  // Whether an exponent expression is 0 over the hypotheses: binary_exponent of a parameter in [1, 2),
-  // a step that is, and sums, differences and negations of them.
-  bool zero_exponent(const CppExpression& e) const {
+  // The integer an exponent expression is over the hypotheses: binary_exponent of a value in one binade
+  // (fixed by fix_exponents), a step that is one, and sums, differences and negations of them; nothing
+  // for any other expression.
+  std::optional<int> integer_value(const CppExpression& e) const {
     using Kind = CppExpression::Kind;
-    if (e.kind == Kind::call && e.text == "binary_exponent") return true;  // its range checked when printed
-    if (e.kind == Kind::name) return zero_steps_.count(e.text) > 0;
-    if (e.kind == Kind::unary && e.text == "-") return zero_exponent(e.operands[0]);
-    if (e.kind == Kind::binary && (e.text == "+" || e.text == "-"))
-      return zero_exponent(e.operands[0]) && zero_exponent(e.operands[1]);
-    return false;
+    if (e.kind == Kind::call && e.text == "binary_exponent") return exponent_of(e);
+    if (e.kind == Kind::name) {
+      const auto integer = integer_steps_.find(e.text);
+      if (integer == integer_steps_.end()) return std::nullopt;
+      return integer->second;
+    }
+    if (e.kind == Kind::unary && e.text == "-") {
+      const std::optional<int> k = integer_value(e.operands[0]);
+      if (!k) return std::nullopt;
+      return -*k;
+    }
+    if (e.kind == Kind::binary && (e.text == "+" || e.text == "-")) {
+      const std::optional<int> a = integer_value(e.operands[0]), b = integer_value(e.operands[1]);
+      if (!a || !b) return std::nullopt;
+      return e.text == "+" ? *a + *b : *a - *b;
+    }
+    return std::nullopt;
+  }
+
+  // binary_exponent(x)'s value, fixed before by fix_exponents.
+  int exponent_of(const CppExpression& call) const {
+    const CppExpression& x = call.operands.at(0);
+    const auto known = x.kind == CppExpression::Kind::name ? exponents_.find(x.text) : exponents_.end();
+    if (known == exponents_.end())
+      throw NotProvable("binary_exponent(" + spelled(x) + ") needs " + spelled(x) +
+                        " a parameter or step in one binade, ±[2^k, 2^(k+1))");
+    return known->second;
+  }
+
+  // Fixes the exponent of each name `e` takes binary_exponent of: for a parameter, from its range in the
+  // hypotheses; for a step, from Gappa's enclosure of it as computed (`so_far` defines it). Either must
+  // lie in one binade, or the exponent is left unknown (and exponent_of says so).
+  void fix_exponents(const CppExpression& e, const std::string& so_far) {
+    for (const CppExpression& operand : e.operands) fix_exponents(operand, so_far);
+    if (e.kind != CppExpression::Kind::call || e.text != "binary_exponent" || e.operands.size() != 1 ||
+        e.operands[0].kind != CppExpression::Kind::name || exponents_.count(e.operands[0].text))
+      return;
+    const std::string& x = e.operands[0].text;
+    std::optional<std::pair<GiNaC::numeric, GiNaC::numeric>> range;
+    if (const auto parameter = ranges_.find(x); parameter != ranges_.end()) {
+      range = parameter->second;
+    } else if (steps_.count(x)) {
+      std::string hypotheses;
+      for (const std::string& h : hypotheses_) hypotheses += (hypotheses.empty() ? "" : " /\\ ") + h;
+      const auto [status, output] = run_gappa(so_far + "{ " + hypotheses + " -> c_" + x + " in ? }\n");
+      const std::size_t at = output.find("c_" + x + " in [");
+      if (status == 0 && at != std::string::npos)
+        range = interval_ends(output.substr(at, output.find('\n', at) - at));
+    }
+    if (!range) return;
+    if (const std::optional<int> k = one_binade(range->first, range->second)) exponents_[x] = *k;
   }
 
   const CppFunction& printed_;
   const Kernel& kernel_;
   const BinaryFormat& format_;
-  std::set<std::string> parameters_, steps_, zero_steps_;
+  std::set<std::string> parameters_, steps_;
+  std::map<std::string, int> integer_steps_;  ///< exponent steps: integers over the case
+  std::map<std::string, int> exponents_;      ///< binary_exponent of each name, where fixed
   std::map<std::string, std::pair<GiNaC::numeric, GiNaC::numeric>> ranges_;  ///< each parameter's interval
   std::vector<std::string> hypotheses_;
   mutable std::set<std::string> absolutes_;  ///< the arguments of |…| in the definitions
+  mutable std::set<std::string> scalings_;   ///< each exact scaling by 2^k (k ≠ 0) as computed
 };
 
 // The outputs of the script for `taken`: each as printed, and its name in the script.
@@ -378,31 +571,6 @@ std::vector<std::pair<std::string, std::string>> script_outputs(const CppFunctio
   std::vector<std::pair<std::string, std::string>> outputs;
   script.definitions(taken, bounded, outputs);
   return outputs;
-}
-
-// Runs Gappa on `script`: its exit status and what it printed.
-std::pair<int, std::string> run_gappa(const std::string& script) {
-  std::string path = (std::filesystem::temp_directory_path() / "billiards-gappa-XXXXXX").string();
-  std::vector<char> name(path.begin(), path.end());
-  name.push_back('\0');
-  const int descriptor = mkstemp(name.data());
-  if (descriptor < 0) throw std::runtime_error("cannot create a temporary file for Gappa's input");
-  close(descriptor);
-  path = name.data();
-  {
-    std::ofstream file(path);
-    file << script;
-  }
-  std::string output;
-  int status = -1;
-  if (FILE* pipe = popen(("gappa '" + path + "' 2>&1").c_str(), "r")) {
-    char buffer[4096];
-    while (const std::size_t n = std::fread(buffer, 1, sizeof buffer, pipe)) output.append(buffer, n);
-    status = pclose(pipe);
-  }
-  std::filesystem::remove(path);
-  if (status == -1) throw std::runtime_error("cannot run Gappa");
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, output};
 }
 
 // The first property Gappa names as not satisfied, or its first error.
@@ -426,10 +594,19 @@ std::string gappa_script(const CppFunction& printed, const Kernel& kernel, const
   std::vector<std::string> bounded;
   std::vector<std::pair<std::string, std::string>> outputs;
   std::string out = script.definitions(guards_taken, bounded, outputs);
+  // A plain form promises every digit over its domain: every intermediate a normal number. Elsewhere an
+  // intermediate need only be finite (a fraction that leaves the normal range only chooses the form),
+  // and each output, and each exact scaling, must be a normal number.
   std::vector<std::string> goals;
-  for (const std::string& name : bounded)
-    goals.push_back("|" + name + "| in [" + smallest_normal_number(format) + ", " + largest_finite(format) +
-                    "]");
+  const std::string normal = " in [" + smallest_normal_number(format) + ", " + largest_finite(format) + "]";
+  std::set<std::string> must_be_normal;
+  for (const auto& output : outputs) must_be_normal.insert("c_" + output.second);
+  for (const std::string& name : bounded) {
+    goals.push_back("|" + name + "|" +
+                    (!kernel.domain.empty() || must_be_normal.count(name) ? normal
+                                                                          : " <= " + largest_finite(format)));
+  }
+  for (const std::string& scaling : script.scalings()) goals.push_back("|" + scaling + "|" + normal);
   for (const auto& output : outputs)
     goals.push_back("(c_" + output.second + " - e_" + output.second + ") / e_" + output.second + " in ?");
   std::string hypotheses, wanted;
@@ -440,16 +617,16 @@ std::string gappa_script(const CppFunction& printed, const Kernel& kernel, const
   return out + "{ " + hypotheses + "\n  -> " + wanted + " }\n" + hinted;
 }
 
-std::vector<KernelProblem> prove_rounding(const CppFunction& printed, const Kernel& kernel,
-                                          std::vector<RoundingBound>& bounds) {
-  std::vector<KernelProblem> problems;
+namespace {
+
+// One format and one case: what Gappa proved (into `bounds`) or why not (into `problems`).
+void prove_case(const CppFunction& printed, const Kernel& kernel, const BinaryFormat& format,
+                const std::vector<ex>& ranges, std::vector<KernelProblem>& problems,
+                std::vector<RoundingBound>& bounds) {
   const auto fail = [&](const std::string& reason) {
     problems.push_back({kernel.name, kernel.equals, "its rounding proof: " + reason});
   };
-  std::vector<std::vector<ex>> cases = kernel.rounding_cases;
-  if (cases.empty()) cases.push_back({});
-  for (const BinaryFormat& format : emitted_formats()) {
-    for (const std::vector<ex>& ranges : cases) {
+  do {
       try {
         // Each guard decided in turn: the domain and the case must say whether it is taken.
         Script probe(printed, kernel, format, ranges);
@@ -460,13 +637,11 @@ std::vector<KernelProblem> prove_rounding(const CppFunction& printed, const Kern
         for (const CppExpression* condition : conditions) {
           std::optional<bool> decided;
           for (const bool branch : {false, true}) {
+            // The steps before the guarded one, as the guards decided so far make them.
             Script attempt(printed, kernel, format, ranges);
-            std::vector<bool> trial = taken;
-            trial.resize(conditions.size(), false);
-            trial[taken.size()] = branch;
             std::vector<std::string> unused;
             std::vector<std::pair<std::string, std::string>> no_outputs;
-            const std::string definitions = attempt.definitions(trial, unused, no_outputs);
+            const std::string definitions = attempt.definitions(taken, unused, no_outputs, true);
             std::string sides;
             const std::string goal = attempt.decision_goal(*condition, branch, sides);
             if (run_gappa(definitions + sides + "{ " + hypotheses + " -> " + goal + " }\n").first == 0) {
@@ -502,7 +677,7 @@ std::vector<KernelProblem> prove_rounding(const CppFunction& printed, const Kern
                ", Gappa does not prove every intermediate and output finite and normal with a bounded "
                "error: " +
                gappa_failure(output));
-          continue;
+          break;
         }
         RoundingBound bound{kernel.name, format.type, hypotheses, {}, {}, {}};
         const GiNaC::numeric epsilon = GiNaC::numeric(2).power(1 - format.digits);
@@ -526,13 +701,126 @@ std::vector<KernelProblem> prove_rounding(const CppFunction& printed, const Kern
           bound.relative.push_back(*largest);
           bound.in_epsilons.push_back(std::ceil((*largest / epsilon).to_double() * 100) / 100);
         }
-        if (bound.relative.size() != bound.outputs.size() || bound.outputs.empty()) continue;
+        if (bound.relative.size() != bound.outputs.size() || bound.outputs.empty()) break;
         bounds.push_back(std::move(bound));
       } catch (const std::exception& error) {
         fail(error.what());
       }
+  } while (false);
+}
+
+// What a proof found, as text through a pipe: fields apart by 0x1f, records by 0x1e.
+constexpr char field_end = '\x1f', record_end = '\x1e';
+
+std::string serialized(const std::vector<KernelProblem>& problems, const std::vector<RoundingBound>& bounds) {
+  std::ostringstream out;
+  for (const KernelProblem& p : problems) out << 'P' << field_end << p.reason << record_end;
+  for (const RoundingBound& b : bounds) {
+    out << 'B' << field_end << b.hypotheses;
+    for (std::size_t i = 0; i < b.outputs.size(); ++i)
+      out << field_end << b.outputs[i] << field_end << b.relative[i] << field_end << b.in_epsilons[i];
+    out << record_end;
+  }
+  return out.str();
+}
+
+void deserialize(const std::string& text, const Kernel& kernel, const BinaryFormat& format,
+                 std::vector<KernelProblem>& problems, std::vector<RoundingBound>& bounds) {
+  std::istringstream records(text);
+  std::string record;
+  while (std::getline(records, record, record_end)) {
+    std::vector<std::string> fields;
+    std::istringstream in(record);
+    for (std::string field; std::getline(in, field, field_end);) fields.push_back(field);
+    if (fields.size() == 2 && fields[0] == "P") {
+      problems.push_back({kernel.name, kernel.equals, fields[1]});
+    } else if (fields.size() >= 2 && fields[0] == "B" && (fields.size() - 2) % 3 == 0) {
+      RoundingBound bound{kernel.name, format.type, fields[1], {}, {}, {}};
+      for (std::size_t i = 2; i < fields.size(); i += 3) {
+        bound.outputs.push_back(fields[i]);
+        bound.relative.push_back(GiNaC::numeric(fields[i + 1].c_str()));
+        bound.in_epsilons.push_back(std::stod(fields[i + 2]));
+      }
+      bounds.push_back(std::move(bound));
     }
   }
+}
+
+}  // namespace
+
+std::vector<KernelProblem> prove_rounding(const CppFunction& printed, const Kernel& kernel,
+                                          std::vector<RoundingBound>& bounds) {
+  struct Job {
+    const BinaryFormat* format;
+    std::vector<ex> ranges;
+    pid_t child = -1;
+    int pipe = -1;
+    std::string found;
+  };
+  std::vector<std::vector<ex>> cases = kernel.rounding_cases;
+  if (cases.empty()) cases.push_back({});
+  std::vector<Job> jobs;
+  for (const BinaryFormat& format : emitted_formats()) {
+    for (const std::vector<ex>& ranges : cases) jobs.push_back({&format, ranges, -1, -1, {}});
+  }
+  // Each format and case in a process of its own (GiNaC is not thread-safe; the work is Gappa's),
+  // as many at once as there are processors; the results gathered in the order of the jobs.
+  const long processors = std::max(1L, sysconf(_SC_NPROCESSORS_ONLN));
+  std::vector<KernelProblem> problems;
+  std::vector<RoundingBound> found;
+  const auto finish = [&](Job& job) {
+    char buffer[4096];
+    for (ssize_t n; (n = read(job.pipe, buffer, sizeof buffer)) > 0;) job.found.append(buffer, static_cast<std::size_t>(n));
+    close(job.pipe);
+    int status = 0;
+    waitpid(job.child, &status, 0);
+    if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
+      job.found = std::string("P") + field_end + "its rounding proof: the proof's process failed" + record_end;
+  };
+  std::size_t next_to_finish = 0;
+  for (std::size_t i = 0; i < jobs.size(); ++i) {
+    Job& job = jobs[i];
+    int ends[2];
+    if (jobs.size() > 1 && pipe(ends) == 0) {
+      std::fflush(nullptr);
+      job.child = fork();
+      if (job.child == 0) {
+        close(ends[0]);
+        std::vector<KernelProblem> p;
+        std::vector<RoundingBound> b;
+        prove_case(printed, kernel, *job.format, job.ranges, p, b);
+        const std::string text = serialized(p, b);
+        for (std::size_t at = 0; at < text.size();) {
+          const ssize_t n = write(ends[1], text.data() + at, text.size() - at);
+          if (n <= 0) _exit(1);
+          at += static_cast<std::size_t>(n);
+        }
+        _exit(0);
+      }
+      close(ends[1]);
+      if (job.child > 0) {
+        job.pipe = ends[0];
+      } else {
+        close(ends[0]);
+      }
+    }
+    if (job.pipe < 0) {
+      // No process to spare: proven here.
+      std::vector<KernelProblem> p;
+      std::vector<RoundingBound> b;
+      prove_case(printed, kernel, *job.format, job.ranges, p, b);
+      job.found = serialized(p, b);
+    }
+    while (static_cast<long>(i + 1 - next_to_finish) >= processors) {
+      if (jobs[next_to_finish].pipe >= 0) finish(jobs[next_to_finish]);
+      ++next_to_finish;
+    }
+  }
+  for (; next_to_finish < jobs.size(); ++next_to_finish) {
+    if (jobs[next_to_finish].pipe >= 0) finish(jobs[next_to_finish]);
+  }
+  for (const Job& job : jobs) deserialize(job.found, kernel, *job.format, problems, found);
+  bounds.insert(bounds.end(), found.begin(), found.end());
   return problems;
 }
 

@@ -154,6 +154,13 @@ const std::vector<Mutation>& paper_class_mutations() {
       // number, and no relative bound.
       {"rounding_range_through_zero", "cushion_normal_velocity_change",
        [](Kernel& k) { k.rounding_cases.at(0).at(0) = 0 <= k.parameters.at(0); }},
+      // A full form's small-mass case with the light mass down to 1/4: m_heavy/m_light then overflows.
+      {"rounding_case_where_a_mass_ratio_overflows", "elastic_normal_velocity_change",
+       [](Kernel& k) { k.rounding_cases.at(2).at(0) = GiNaC::numeric(1, 4) <= k.parameters.at(0); }},
+      // time_of_impact's case down to p·p = 1, where the balls may already touch (p·p − r² of either
+      // sign): the guard is no longer decided.
+      {"rounding_case_through_a_touch", "time_of_impact",
+       [](Kernel& k) { k.rounding_cases.at(0).at(0) = 1 <= k.parameters.at(0); }},
       // A claim that no kernel cites.
       uncited_claim_wrong("uncited_claim_momentum_along_n", "along_n.momentum"),
       // A comment changes nothing that is proven.
@@ -186,6 +193,12 @@ const std::vector<Mutation>& spin_class_mutations() {
       // A scaled kernel's range beyond one binade, where its exponents are no longer 0.
       {"rounding_range_beyond_one_binade", "spin_change_per_impulse",
        [](Kernel& k) { k.rounding_cases.at(0).at(1) = k.parameters.at(0) < 4; }},
+      // A kernel that states no rounding cases has no proven error bound.
+      {"rounding_cases_dropped", "spin_change", [](Kernel& k) { k.rounding_cases.clear(); }},
+      // The full tangential form's sticking case with the slip down to 7/4: the bound 2|u_t|/7 then spans
+      // two binades, and its binary exponent is no longer fixed.
+      {"rounding_case_exponent_not_fixed", "tangential_velocity_change",
+       [](Kernel& k) { k.rounding_cases.at(0).at(4) = GiNaC::numeric(7, 4) <= k.parameters.at(5); }},
       // The phase times' moderate range widened up to 2^509 (double) from 2^254: a quotient of three
       // inputs then overflows.
       domain_widened("domain_moderate_range_to_the_plain_mass_range", "plain_slide_time", moderate_high(),

@@ -60,7 +60,8 @@ Derivation tiny_model(bool drifted) {
                                 .parameters = {a, b},
                                 .steps = {{sum, a + b}},
                                 .outputs = {drifted ? ex(sum * sum + 1) : ex(sum * sum)},
-                                .equals = "expansion.square_of_sum"});
+                                .equals = "expansion.square_of_sum",
+                                .rounding_cases = {{1 <= a, a <= 2, 1 <= b, b <= 2}}});
   return derivation;
 }
 

@@ -153,14 +153,23 @@ TEST_CASE("Gappa proves each fast path's domain safe, from the plain form as pri
   std::vector<RoundingBound> bounds;
   REQUIRE(reasons(billiards::derive::prove_printed(header, derivation.kernels, derivation.claims, bounds))
               .empty());
-  // Four plain forms and the cushion, float and double, one case each.
-  CHECK(bounds.size() == 10);
+  // Every kernel, in float and double: the four plain forms, the cushion and time_of_impact in one case
+  // each, the four full forms in four (beyond_plain_mass_cases).
+  CHECK(bounds.size() == 2 * (4 + 1 + 1 + 4 * 4));
+  for (const Kernel& kernel : derivation.kernels) {
+    for (const std::string format : {"float", "double"}) {
+      INFO(kernel.name << " in " << format);
+      CHECK(std::count_if(bounds.begin(), bounds.end(), [&](const RoundingBound& b) {
+              return b.kernel == kernel.name && b.format == format;
+            }) == (kernel.fast_path ? 4 : 1));
+    }
+  }
   for (const RoundingBound& bound : bounds) {
     INFO(bound.kernel << " in " << bound.format);
-    CHECK((bound.kernel.rfind("plain_", 0) == 0 || bound.kernel == "cushion_normal_velocity_change"));
     // −2 v·n is exact: a doubling and a negation.
     if (bound.kernel == "cushion_normal_velocity_change") CHECK(bound.relative.front() == 0);
-    if (bound.kernel.rfind("plain_", 0) == 0) CHECK(bound.outputs.size() == 2);
+    if (bound.kernel.find("velocity_change") != std::string::npos && bound.kernel.rfind("cushion", 0) != 0)
+      CHECK(bound.outputs.size() == 2);
     if (bound.kernel != "plain_elastic_normal_velocity_change") continue;
     // By hand: m1 + m2, 2 m2 over it, v2n − v1n and their product round once each (2 m2 is exact), so
     // the relative error is at most (1 + u)^4 − 1, u = ε/2: just over 2 ε.
@@ -186,6 +195,24 @@ TEST_CASE("Gappa proves each fast path's domain safe, from the plain form as pri
     CHECK_THAT(script, Catch::Contains("p_m1 in [1b-509, 1b509]"));
     CHECK_THAT(script, Catch::Contains("(p_v2n - p_v1n) in [1, 2]"));
     CHECK_THAT(script, Catch::Contains("(c_first_change - e_first_change) / e_first_change in ?"));
+  }
+  SECTION("a full form's case: its masses in the type, its guards as decided, its intermediates finite") {
+    const std::vector<CppFunction> functions = read_functions(header);
+    const auto full = std::find_if(functions.begin(), functions.end(), [](const CppFunction& f) {
+      return f.name == "full_elastic_normal_velocity_change";
+    });
+    REQUIRE(full != functions.end());
+    const Kernel& kernel = derivation.kernels.at(1);
+    REQUIRE(kernel.name == "elastic_normal_velocity_change");
+    // The light first ball beside a heavy second one whose share underflows: the second change from the
+    // impulse per total mass times m1.
+    const std::string script = gappa_script(*full, kernel, emitted_formats().back(),
+                                            kernel.rounding_cases.at(2), {false, false, true, true});
+    CHECK_THAT(script, Catch::Contains("p_m1 in [1b-1, 5b-3] /\\ p_m2 in [3b1021, 7b1020]"));
+    CHECK_THAT(script, Catch::Contains("c_second_factor rnd= c_impulse_per_total_mass;"));
+    CHECK_THAT(script, Catch::Contains("c_second_multiplier rnd= p_m1;"));
+    CHECK_THAT(script, Catch::Contains("|c_first_mass_ratio| <= "));
+    CHECK_THAT(script, Catch::Contains("|c_o_1| in [1b-1022, "));  // the output, −second_change
   }
   SECTION("a domain widened past what is safe is not proven") {
     Derivation widened = derivation;

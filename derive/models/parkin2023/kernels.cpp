@@ -8,6 +8,8 @@
 #include "core/named_constants.hpp"
 #include "print/printer.hpp"
 
+#include <functional>
+
 namespace billiards::derive::parkin2023 {
 
 namespace {
@@ -83,7 +85,7 @@ std::vector<KernelStep> change_steps(const ChangeNames& names, const MassRatios&
 // (beyond.plain_range.one_division_form), each times the speed `by`; `full` takes it first there.
 std::vector<Kernel> with_fast_path(Kernel full, const PlainRange& plain, const MassRatios& ratios,
                                    const ex& restitution, const ex& by, std::size_t speed_steps,
-                                   const std::vector<ex>& rounding_ranges) {
+                                   const std::function<std::vector<ex>(int)>& rounding_ranges) {
   const Symbols& s = symbols();
   const ex e = s.restitution;
   const GiNaC::symbol first_coefficient("first_impulse_coefficient"),
@@ -107,12 +109,20 @@ std::vector<Kernel> with_fast_path(Kernel full, const PlainRange& plain, const M
       .claims = {"beyond.plain_range.one_division_form", "beyond.plain_range.smallest_share"},
       .names = {{"total_mass", s.m1 + s.m2}, {"restitution_factor", 1 + e}},
       .domain = plain_mass_range(s.m1, s.m2),
-      .rounding_cases = {rounding_ranges},
+      .rounding_cases = {rounding_ranges(1)},
   };
   fast.steps.push_back({first_coefficient, plain.first_mass_form.subs(e == restitution)});
   fast.steps.push_back({second_coefficient, plain.second_mass_form.subs(e == restitution)});
   fast.steps.push_back({first_change, first_coefficient * by});
   fast.steps.push_back({second_change, second_coefficient * by});
+  // The full form where it is taken: masses beyond the plain range, each way round, and past where the
+  // light ball's share leaves the normal range.
+  for (const MassCase& masses : beyond_plain_mass_cases(s.m1, s.m2)) {
+    std::vector<ex> ranges = masses.masses;
+    const std::vector<ex> rest = rounding_ranges(masses.speed_scale);
+    ranges.insert(ranges.end(), rest.begin(), rest.end());
+    full.rounding_cases.push_back(ranges);
+  }
   full.fast_path = FastPath{
       .predicate = "within_plain_mass_range",
       .brief =
@@ -160,10 +170,11 @@ std::vector<Kernel> collision_kernels(const Setting& setting, const KernelPieces
     first.insert(first.end(), then.begin(), then.end());
     return first;
   };
-  const std::vector<ex> in_restitution = between(0, e, 1), in_normal_speed = between(1, s.v2n - s.v1n, 2),
-                        in_direction = joined(between(1, ddot, 2), in_restitution);
+  // Each speed range from one binade, [k, 2k] for a scale k (1 for the plain forms).
+  const std::vector<ex> in_restitution = between(0, e, 1), in_direction = joined(between(1, ddot, 2), in_restitution);
+  const auto in_normal_speed = [&](int k) { return between(k, s.v2n - s.v1n, 2 * k); };
   const auto add = [&](const Kernel& full, const ex& restitution, const ex& by, std::size_t speed_steps,
-                       const std::vector<ex>& ranges) {
+                       const std::function<std::vector<ex>(int)>& ranges) {
     for (const Kernel& kernel : with_fast_path(full, plain, ratios, restitution, by, speed_steps, ranges))
       kernels.push_back(kernel);
   };
@@ -195,7 +206,7 @@ std::vector<Kernel> collision_kernels(const Setting& setting, const KernelPieces
                      "beyond.restitution.energy_loss"},
           .names = {{"restitution_factor", 1 + e}},
       },
-      e, speed_name, 1, joined(in_normal_speed, in_restitution));
+      e, speed_name, 1, [&](int k) { return joined(in_normal_speed(k), in_restitution); });
   add(
       {
           .name = "direction_velocity_change",
@@ -211,7 +222,7 @@ std::vector<Kernel> collision_kernels(const Setting& setting, const KernelPieces
                      "beyond.immovable.mass_ratio_form"},
           .names = {{"restitution_factor", 1 + e}},
       },
-      e, direction_speed, 1, joined(between(1, v2d - v1d, 2), in_direction));
+      e, direction_speed, 1, [&](int k) { return joined(between(k, v2d - v1d, 2 * k), in_direction); });
   add(
       {
           .name = "approaching_direction_velocity_change",
@@ -229,7 +240,7 @@ std::vector<Kernel> collision_kernels(const Setting& setting, const KernelPieces
                      "beyond.any_normal.direction_form", "beyond.immovable.mass_ratio_form"},
           .names = {{"restitution_factor", 1 + e}},
       },
-      e, approach_name, 2, joined(between(-2, v2d - v1d, -1), in_direction));
+      e, approach_name, 2, [&](int k) { return joined(between(-2 * k, v2d - v1d, -k), in_direction); });
   const GiNaC::realsymbol vn("vn");
   kernels.push_back({
       .name = "cushion_normal_velocity_change",
@@ -351,6 +362,11 @@ Kernel time_of_impact_kernel(const TimeOfImpact& toi) {
       .equals = "beyond.time_of_impact.stable_form",
       .in_claim_terms = time_terms,
       .claims = {"beyond.time_of_impact.quadratic", "beyond.time_of_impact.discriminant"},
+      // Rounding proven where the balls approach from apart and the paths cross well inside the contact
+      // distance: p·p − r² and r² w·w − |p × w|² then keep their digits (near a graze or a touch they
+      // cancel, and the time's relative error grows as they do).
+      .rounding_cases = {{16 <= pp, pp <= 32, -8 <= pv, pv <= -4, 4 <= vv, vv <= 8, 0 <= cross_squared,
+                          cross_squared <= 1, 1 <= contact_distance, contact_distance <= 2}},
   };
 }
 

@@ -143,6 +143,25 @@ std::vector<ex> in_one_binade(const std::vector<ex>& parameters) {
   return ranges;
 }
 
+// normal_impulse's rounding cases: masses in neighbouring binades, [1, 2) and [2, 4), and beyond the
+// plain range (beyond_plain_mass_cases), either way round (either branch of the lighter mass); e in
+// [0, 1] and the approaching speed in one binade, (−2k, −k], so that every exponent is fixed.
+std::vector<std::vector<ex>> normal_impulse_cases(const ex& speed) {
+  const Symbols& s = symbols();
+  std::vector<MassCase> masses = {{{1 <= s.m1, s.m1 < 2, 2 <= s.m2, s.m2 < 4}},
+                                  {{2 <= s.m1, s.m1 < 4, 1 <= s.m2, s.m2 < 2}}};
+  for (const MassCase& beyond : beyond_plain_mass_cases(s.m1, s.m2)) masses.push_back(beyond);
+  std::vector<std::vector<ex>> cases;
+  for (const MassCase& mass : masses) {
+    std::vector<ex> ranges = mass.masses;
+    const ex k = mass.speed_scale;
+    for (const ex r : {-2 * k < speed, speed <= -k, 0 <= s.restitution, s.restitution <= 1})
+      ranges.push_back(r);
+    cases.push_back(ranges);
+  }
+  return cases;
+}
+
 // `plain`, a faster form of `full`'s claim where every one of `conditions` holds (its domain), and `full`
 // taking it there first through the predicate `predicate`: both appended, `plain` first.
 void push_with_fast_path(std::vector<Kernel>& kernels, Kernel plain, Kernel full,
@@ -209,6 +228,7 @@ void impulse_kernels(std::vector<Kernel>& kernels) {
         .outputs = {-(1 + s.restitution) * product.value},
         .equals = "friction.normal_impulse",
         .in_claim_terms = {{speed, s.normal_slip}},
+        .rounding_cases = normal_impulse_cases(speed),
     });
   }
   {
@@ -334,6 +354,27 @@ void tangential_velocity_kernels(std::vector<Kernel>& kernels) {
                              0 <= s.restitution, s.restitution <= 1};
     };
     plain.rounding_cases = {ranges(ex(1) / 2), ranges(16)};
+    // The full form where it is taken, masses beyond the plain range (beyond_plain_mass_cases), in each
+    // branch with the bound in one binade [k, 2k), so that its exponent is fixed: sticking (2|u_t|/7 in
+    // [k, 13k/7], the sliding bound at least 2k) and sliding ((1 + e) μ |(v2 − v1)·n| in [k, 1.96k], the
+    // sticking bound at least 2k).
+    const auto branch = [&](bool sticking, const ex& k) {
+      if (sticking)
+        return std::vector<ex>{ex(7) / 2 * k <= slip,      slip <= ex(13) / 2 * k, ex(1) / 2 <= s.friction,
+                               s.friction <= 1,            -8 * k <= speed,        speed <= -4 * k,
+                               0 <= s.restitution,         s.restitution <= 1};
+      return std::vector<ex>{7 * k <= slip,           slip <= 14 * k,          ex(1) / 2 <= s.friction,
+                             s.friction <= ex(5) / 8, -ex(5) / 2 * k <= speed, speed <= -2 * k,
+                             0 <= s.restitution,      s.restitution <= ex(1) / 4};
+    };
+    for (const MassCase& masses : beyond_plain_mass_cases(s.m1, s.m2)) {
+      for (const bool sticking : {true, false}) {
+        std::vector<ex> ranges = masses.masses;
+        const std::vector<ex> rest = branch(sticking, masses.speed_scale);
+        ranges.insert(ranges.end(), rest.begin(), rest.end());
+        full.rounding_cases.push_back(ranges);
+      }
+    }
     push_with_fast_path(
         kernels, plain, full, plain_range, "within_plain_mass_range",
         "True when both masses lie in [plain_mass_low<Scalar>(), plain_mass_high<Scalar>()], "
@@ -359,6 +400,8 @@ void spin_change_kernels(std::vector<Kernel>& kernels) {
         .equals = "kernel.spin_change",
         .in_claim_terms = {{change, s.velocity_change}, {radius, s.R1}},
         .claims = {"kernel.spin_change_second_ball"},
+        // Δv and R in one binade: the output scales exactly with each.
+        .rounding_cases = {in_one_binade({change, radius})},
     });
   }
   {
