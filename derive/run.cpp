@@ -75,9 +75,11 @@ int run_model(const ModelEntry& entry, const fs::path& folder) {
   const bool verified = problems.empty() && summarize(derivation.claims).failed == 0;
   if (verified) {
     for (const Header& header : headers("")) {
-      if (header.kernels == nullptr) continue;
       const std::vector<KernelProblem> found =
-          prove_printed(header.text, *header.kernels, derivation.claims, derivation.rounding);
+          header.kernels == nullptr
+              ? prove_kernel_list(header.text, derivation.kernels, derivation.reference_kernels,
+                                  model.reference_namespace)
+              : prove_printed(header.text, *header.kernels, derivation.claims, derivation.rounding);
       problems.insert(problems.end(), found.begin(), found.end());
     }
   }

@@ -221,6 +221,11 @@ class Parser {
     std::vector<std::string> head;
     while (peek().text != "(") {
       const Token& t = take_any("a function's '('");
+      // A variable at namespace scope (`inline constexpr std::size_t largest_arity = 6;`) is no function.
+      if (t.text == "=" && !head.empty()) {
+        skip_past(";");
+        return std::nullopt;
+      }
       if (t.text == ";" || t.text == "{") throw CppReadError(t.line, "expected a function definition");
       head.push_back(t.text);
     }
@@ -296,6 +301,12 @@ class Parser {
       s.body.push_back(step);
       expect(")");
       s.body.push_back(statement());
+      return s;
+    }
+    if (accept("throw")) {
+      s.kind = CppStatement::Kind::throw_;
+      s.value = expression();
+      expect(";");
       return s;
     }
     if (accept("return")) {
@@ -416,7 +427,7 @@ class Parser {
   CppExpression primary() {
     CppExpression e;
     e.line = peek().line;
-    if (peek().kind == Token::Kind::number) {
+    if (peek().kind == Token::Kind::number || peek().kind == Token::Kind::string) {
       e.kind = CppExpression::Kind::literal;
       e.text = tokens_[at_++].text;
       return e;
@@ -435,6 +446,17 @@ class Parser {
       at_ += 3;
       if (peek().kind == Token::Kind::identifier && peek().text.rfind("::", 0) == 0)
         e.text += tokens_[at_++].text;
+    }
+    // A member, `r.first`, is one name.
+    while (peek().text == "." && peek().kind == Token::Kind::punctuation && peek(1).kind == Token::Kind::identifier) {
+      e.text += "." + peek(1).text;
+      at_ += 2;
+    }
+    if (accept("[")) {
+      e.kind = CppExpression::Kind::index;
+      e.operands.push_back(expression());
+      expect("]");
+      return e;
     }
     if (!accept("(")) {
       e.kind = CppExpression::Kind::name;
@@ -472,6 +494,7 @@ std::string spelled(const CppExpression& e) {
     case Kind::conditional:
       return "(" + spelled(e.operands.at(0)) + " ? " + spelled(e.operands.at(1)) + " : " +
              spelled(e.operands.at(2)) + ")";
+    case Kind::index: return e.text + "[" + spelled(e.operands.at(0)) + "]";
     case Kind::call:
     case Kind::braced:
       for (const CppExpression& operand : e.operands) out += (out.empty() ? "" : ", ") + spelled(operand);

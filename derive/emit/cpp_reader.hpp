@@ -27,14 +27,16 @@ class CppReadError : public std::runtime_error {
 /// An expression.
 struct CppExpression {
   enum class Kind {
-    literal,      ///< a number as spelled: 4096, 3.5, 0x1p-61f
-    name,         ///< an identifier, possibly qualified: m1, std::numeric_limits<Scalar>::min_exponent
+    literal,      ///< a number or a string as spelled: 4096, 3.5, 0x1p-61f, "m1"
+    name,         ///< an identifier, possibly qualified, or a member: m1, r.first,
+                  ///< std::numeric_limits<Scalar>::min_exponent
     call,         ///< `text(operands…)`; text is the callee with its template arguments: Scalar, std::sqrt,
                   ///< smallest_normal<Scalar>, static_cast<Bits>
     unary,        ///< `text operand`: - or !
     binary,       ///< `operand text operand`: + - * / < <= > >= == != && || & << >>
     conditional,  ///< `a ? b : c`
     braced,       ///< `{a, b}` (a returned pair)
+    index,        ///< `text[operand]`: a[0]
   };
   Kind kind = Kind::literal;
   std::string text;
@@ -53,6 +55,7 @@ struct CppStatement {
     if_,          ///< `if (condition) body` or `if constexpr (condition) { body }`
     for_,         ///< `for (body[0]; condition; body[1]) body[2]`
     return_,      ///< `return value;`
+    throw_,       ///< `throw value;`
     block,        ///< `{ body }`
   };
   Kind kind = Kind::block;

@@ -96,7 +96,8 @@ ex to_expression(const CppExpression& e, const std::map<std::string, ex>& names)
       throw CppReadError(e.line, "the call " + spelled(e) + " in a kernel expression");
     }
     case Kind::conditional:
-    case Kind::braced: break;
+    case Kind::braced:
+    case Kind::index: break;
   }
   throw CppReadError(e.line, spelled(e) + " in a kernel expression");
 }
@@ -716,6 +717,200 @@ std::vector<KernelProblem> prove_printed(const std::string& header, const std::v
   } catch (const std::exception& error) {
     return {{"(the printed header)", "", std::string("cannot be read back: ") + error.what()}};
   }
+}
+
+}  // namespace billiards::derive
+
+namespace billiards::derive {
+
+namespace {
+
+// What a kernel list's functions must call: each kernel by the name the list spells it with, and how
+// many outputs it returns.
+struct Listed {
+  std::string spelled;
+  const Kernel* kernel;
+};
+
+class ListReadBack {
+ public:
+  ListReadBack(const std::vector<CppFunction>& functions, std::vector<Listed> listed)
+      : functions_(functions), listed_(std::move(listed)) {}
+
+  std::vector<KernelProblem> run() {
+    bool called = false, summed = false;
+    for (const CppFunction& f : functions_) {
+      if (f.name == "call") {
+        called = true;
+        prove_call(f);
+      } else if (f.name == "sum_of_every_kernel") {
+        summed = true;
+        prove_sum(f);
+      } else {
+        fail(f.name, "a function of the kernel list that nothing proves");
+      }
+    }
+    if (!called) fail("call", "the kernel list has no call");
+    if (!summed) fail("sum_of_every_kernel", "the kernel list has no sum_of_every_kernel");
+    return problems_;
+  }
+
+ private:
+  void fail(const std::string& where, const std::string& reason) {
+    problems_.push_back({where, "", "in the kernel list: " + reason});
+  }
+
+  // The kernel an expression calls, with its arguments each as `argument(i)` spells it; nullptr (and a
+  // problem) otherwise.
+  const Listed* called(const std::string& where, const CppExpression& e,
+                       const std::function<std::string(std::size_t)>& argument) {
+    using Kind = CppExpression::Kind;
+    if (e.kind != Kind::call) {
+      fail(where, spelled(e) + " is no call of a kernel");
+      return nullptr;
+    }
+    const auto found = std::find_if(listed_.begin(), listed_.end(),
+                                    [&](const Listed& l) { return l.spelled == e.text; });
+    if (found == listed_.end()) {
+      fail(where, "calls " + e.text + ", which is no kernel of the model");
+      return nullptr;
+    }
+    const Kernel& kernel = *found->kernel;
+    std::vector<std::string> expected, printed;
+    for (std::size_t i = 0; i < kernel.parameters.size(); ++i) expected.push_back(argument(i));
+    for (const CppExpression& operand : e.operands) printed.push_back(spelled(operand));
+    if (printed != expected) {
+      std::string list;
+      for (const std::string& a : expected) list += (list.empty() ? "" : ", ") + a;
+      fail(where, spelled(e) + " does not pass (" + list + ")");
+      return nullptr;
+    }
+    return &*found;
+  }
+
+  // `if (name == "K") { const auto r = K(at("p1"), …); return {r.first, r.second}; }` for every kernel,
+  // in order, then the throw.
+  void prove_call(const CppFunction& f) {
+    using Kind = CppStatement::Kind;
+    std::size_t next = 0;
+    for (const CppStatement& s : f.body) {
+      if (s.kind == Kind::throw_) continue;
+      const CppExpression* condition = s.kind == Kind::if_ ? &*s.condition : nullptr;
+      const bool block = s.kind == Kind::if_ && s.body.size() == 1 && s.body[0].kind == Kind::block &&
+                         s.body[0].body.size() == 2 && s.body[0].body[0].kind == Kind::declaration &&
+                         s.body[0].body[1].kind == Kind::return_;
+      if (!block || condition->kind != CppExpression::Kind::binary || condition->text != "==" ||
+          spelled(condition->operands[0]) != "name" || next >= listed_.size()) {
+        fail("call", "a statement other than the next kernel's branch, at line " + std::to_string(s.line));
+        return;
+      }
+      const Listed& expected = listed_[next++];
+      const std::string label = "\"" + expected.spelled.substr(expected.spelled.rfind(':') == std::string::npos
+                                                                   ? 0
+                                                                   : expected.spelled.rfind(':') + 1) +
+                                "\"";
+      if (condition->operands[1].text != label) {
+        fail("call", "the branch " + condition->operands[1].text + " where " + label + " is listed");
+        continue;
+      }
+      const CppStatement& declared = s.body[0].body[0];
+      const Kernel& kernel = *expected.kernel;
+      const Listed* found = called("call", *declared.value, [&](std::size_t i) {
+        return "at(\"" + symbol_name(kernel.parameters[i]) + "\")";
+      });
+      if (found == nullptr) continue;
+      if (found != &expected) fail("call", "the branch " + label + " calls " + found->spelled);
+      prove_outputs("call", *found->kernel, declared.name, *s.body[0].body[1].value);
+    }
+    if (next != listed_.size()) fail("call", "lists " + std::to_string(next) + " of the kernels");
+  }
+
+  // `return {r.first, r.second};` or `return {r};`: every output, in order.
+  void prove_outputs(const std::string& where, const Kernel& kernel, const std::string& r,
+                     const CppExpression& value) {
+    std::vector<std::string> expected, printed;
+    if (kernel.outputs.size() == 1) {
+      expected = {r};
+    } else {
+      expected = {r + ".first", r + ".second"};
+    }
+    for (const CppExpression& operand : value.operands) printed.push_back(spelled(operand));
+    if (value.kind != CppExpression::Kind::braced || printed != expected)
+      fail(where, kernel.name + "'s outputs returned as " + spelled(value));
+  }
+
+  // `sum += K(a[0], …);` or `{ const auto r = K(a[0], …); sum += r.first + r.second; }` for every kernel
+  // (reference kernels aside), in order.
+  void prove_sum(const CppFunction& f) {
+    using Kind = CppStatement::Kind;
+    std::size_t next = 0;
+    std::vector<const Listed*> kernels;
+    for (const Listed& l : listed_) {
+      if (l.spelled.find("::") == std::string::npos) kernels.push_back(&l);
+    }
+    for (const CppStatement& s : f.body) {
+      if (s.kind == Kind::declaration || s.kind == Kind::return_) continue;  // sum = 0 and return sum
+      const auto argument = [](std::size_t i) { return "a[" + std::to_string(i) + "]"; };
+      const Listed* found = nullptr;
+      std::string summed;
+      if (s.kind == Kind::assignment && s.op == "+=" && s.name == "sum") {
+        found = called("sum_of_every_kernel", *s.value, argument);
+        summed = found && found->kernel->outputs.size() == 1 ? "ok" : "";
+      } else if (s.kind == Kind::block && s.body.size() == 2 && s.body[0].kind == Kind::declaration &&
+                 s.body[1].kind == Kind::assignment && s.body[1].op == "+=") {
+        found = called("sum_of_every_kernel", *s.body[0].value, argument);
+        const std::string r = s.body[0].name;
+        summed = found && found->kernel->outputs.size() == 2 &&
+                         spelled(*s.body[1].value) == "(" + r + ".first + " + r + ".second)"
+                     ? "ok"
+                     : "";
+      } else {
+        fail("sum_of_every_kernel", "a statement other than a kernel's sum, at line " + std::to_string(s.line));
+        return;
+      }
+      if (found == nullptr) {
+        ++next;  // its problem told; the next statement is the next kernel's
+        continue;
+      }
+      if (next >= kernels.size() || found != kernels[next]) {
+        fail("sum_of_every_kernel", "calls " + found->spelled + " out of the kernels' order");
+        return;
+      }
+      ++next;
+      if (summed.empty()) fail("sum_of_every_kernel", "does not add each output of " + found->spelled);
+    }
+    if (next != kernels.size()) fail("sum_of_every_kernel", "sums " + std::to_string(next) + " of the kernels");
+  }
+
+  const std::vector<CppFunction>& functions_;
+  std::vector<Listed> listed_;
+  std::vector<KernelProblem> problems_;
+};
+
+}  // namespace
+
+std::vector<KernelProblem> prove_kernel_list(const std::string& header, const std::vector<Kernel>& kernels,
+                                             const std::vector<Kernel>& reference_kernels,
+                                             const std::string& reference_namespace) {
+  std::vector<Listed> listed;
+  std::size_t largest_arity = 0;
+  for (const Kernel& k : kernels) {
+    listed.push_back({k.name, &k});
+    largest_arity = std::max(largest_arity, k.parameters.size());
+  }
+  for (const Kernel& k : reference_kernels) listed.push_back({reference_namespace + "::" + k.name, &k});
+  std::vector<KernelProblem> problems;
+  // The one variable: the most parameters any kernel takes.
+  const std::string arity = "largest_arity = " + std::to_string(largest_arity) + ";";
+  if (header.find(arity) == std::string::npos)
+    problems.push_back({"largest_arity", "", "in the kernel list: not " + arity});
+  try {
+    const std::vector<KernelProblem> found = ListReadBack(read_functions(header), listed).run();
+    problems.insert(problems.end(), found.begin(), found.end());
+  } catch (const std::exception& error) {
+    problems.push_back({"(the kernel list)", "", std::string("cannot be read back: ") + error.what()});
+  }
+  return problems;
 }
 
 }  // namespace billiards::derive

@@ -38,4 +38,14 @@ std::vector<KernelProblem> prove_printed(const std::string& header, const std::v
                                          const std::vector<Claim>& claims,
                                          std::vector<RoundingBound>& bounds);
 
+/// Reads back a kernel list (kernel_list_header: for tests, not installed) and proves it calls what it
+/// says: `call` has one branch per kernel and reference kernel, in order, labelled with its name, calling
+/// it with `at("p")` for each parameter p in order and returning each output in order, then the throw;
+/// `sum_of_every_kernel` calls every kernel (reference kernels aside), in order, with a[0], a[1], … and
+/// adds each output; `largest_arity` is the most parameters any kernel takes. Nothing else is defined.
+/// Never throws.
+std::vector<KernelProblem> prove_kernel_list(const std::string& header, const std::vector<Kernel>& kernels,
+                                             const std::vector<Kernel>& reference_kernels,
+                                             const std::string& reference_namespace);
+
 }  // namespace billiards::derive

@@ -26,6 +26,8 @@ Mutation printed(const std::string& name, const std::string& culprit, const std:
 
 const std::string kernels_header = "billiards/kernels.hpp";
 const std::string spin_header = "billiards/spin_kernels.hpp";
+const std::string list_header = "billiards/kernel_list.hpp";
+const std::string spin_list_header = "billiards/spin_kernel_list.hpp";
 
 // The claim `id` with its paper side changed, checked again: a slip in a claim that no kernel cites.
 Mutation uncited_claim_wrong(const std::string& name, const std::string& id) {
@@ -161,6 +163,13 @@ const std::vector<Mutation>& paper_class_mutations() {
       // sign): the guard is no longer decided.
       {"rounding_case_through_a_touch", "time_of_impact",
        [](Kernel& k) { k.rounding_cases.at(0).at(0) = 1 <= k.parameters.at(0); }},
+      // The kernel list, which the tests call the kernels through: a branch's arguments swapped, and the
+      // sum of every kernel passing a[1] for a[0].
+      printed("list_call_arguments_swapped", "call", list_header, "call",
+              "elastic_normal_velocity_change(at(\"m1\"), at(\"m2\"), at(\"v1n\"), at(\"v2n\"))",
+              "elastic_normal_velocity_change(at(\"m1\"), at(\"m2\"), at(\"v2n\"), at(\"v1n\"))"),
+      printed("list_sum_argument_shifted", "sum_of_every_kernel", list_header, "sum_of_every_kernel",
+              "cushion_normal_velocity_change(a[0])", "cushion_normal_velocity_change(a[1])"),
       // A claim that no kernel cites.
       uncited_claim_wrong("uncited_claim_momentum_along_n", "along_n.momentum"),
       // A comment changes nothing that is proven.
@@ -193,6 +202,9 @@ const std::vector<Mutation>& spin_class_mutations() {
       // A scaled kernel's range beyond one binade, where its exponents are no longer 0.
       {"rounding_range_beyond_one_binade", "spin_change_per_impulse",
        [](Kernel& k) { k.rounding_cases.at(0).at(1) = k.parameters.at(0) < 4; }},
+      // The spin kernel list returning a kernel's two outputs swapped.
+      printed("list_call_outputs_swapped", "call", spin_list_header, "call", "return {r.first, r.second};",
+              "return {r.second, r.first};"),
       // A kernel that states no rounding cases has no proven error bound.
       {"rounding_cases_dropped", "spin_change", [](Kernel& k) { k.rounding_cases.clear(); }},
       // The full tangential form's sticking case with the slip down to 7/4: the bound 2|u_t|/7 then spans

@@ -236,11 +236,11 @@ void apply(const Mutation& mutation, Derivation& derivation) {
 
 std::string edit_function(const std::string& text, const std::string& name, const std::string& from,
                           const std::string& to) {
-  // The definition: " name(" on a line that ends its signature with "noexcept {", the body up to the
-  // "}" that starts a line.
+  // The definition: " name(" on a line that ends its signature with ") noexcept {" or ") {", the body up
+  // to the "}" that starts a line.
   for (std::size_t at = text.find(" " + name + "("); at != std::string::npos;
        at = text.find(" " + name + "(", at + 1)) {
-    const std::size_t open = text.find(") noexcept {\n", at);
+    const std::size_t open = std::min(text.find(") noexcept {\n", at), text.find(") {\n", at));
     if (open == std::string::npos || text.find(';', at) < open) continue;
     const std::size_t end = text.find("\n}\n", open);
     std::string body = text.substr(open, end - open);

@@ -69,6 +69,20 @@ TEST_CASE("The reader of the emitted C++", "[derive][read_back]") {
     CHECK(functions[1].specialization == "float");
     CHECK(spelled(*functions[1].body[0].value) == "0x1p-61f");
   }
+  SECTION("a kernel list's strings, members, indices, throw and variable") {
+    CHECK(spelled(read_expression("name == \"m1\"")) == "(name == \"m1\")");
+    CHECK(spelled(read_expression("r.first + a[2]")) == "(r.first + a[2])");
+    const std::vector<CppFunction> functions = read_functions(
+        "inline constexpr std::size_t largest_arity = 6;\n"
+        "template <typename Scalar, typename Arguments>\n"
+        "std::vector<Scalar> call(const std::string& name, const Arguments& at) {\n"
+        "  if (name == \"k\") {\n    const auto r = k(at(\"x\"));\n    return {r};\n  }\n"
+        "  throw std::invalid_argument(\"no kernel named \" + name);\n}\n");
+    REQUIRE(functions.size() == 1);
+    REQUIRE(functions[0].body.size() == 2);
+    CHECK(functions[0].body[0].body.at(0).kind == CppStatement::Kind::block);
+    CHECK(functions[0].body[1].kind == CppStatement::Kind::throw_);
+  }
   SECTION("anything outside the subset is an error naming the line") {
     CHECK_THROWS_AS(read_functions("int f() {\n  return 1 +;\n}\n"), CppReadError);
     CHECK_THROWS_WITH(read_functions("int f() {\n  while (1) {}\n}\n"), Catch::Contains("line 2"));
