@@ -19,6 +19,7 @@ from atomic_write import write_atomically  # noqa: E402
 PAGES = {
     "generated/AUDIT.md": "audit/parkin2023.html",
     "generated/spinning/AUDIT.md": "audit/spinning_balls.html",
+    "generated/shot/AUDIT.md": "audit/shot.html",
     "generated/billiards/kernels.hpp": "namespacebilliards_1_1kernels.html",
     "generated/billiards/spin_kernels.hpp": "namespacebilliards_1_1kernels_1_1spin.html",
     "bench/RESULTS.md": "results.html",

@@ -82,6 +82,14 @@ GiNaC::lst to_lst(const Vec& a) {
   return components;
 }
 
+GiNaC::lst concatenate(const std::vector<Vec>& vectors) {
+  GiNaC::lst all;
+  for (const Vec& v : vectors) {
+    for (const GiNaC::ex& component : v) all.append(component);
+  }
+  return all;
+}
+
 Vec parallel_part(const Vec& a, const Vec& n) { return scale(dot(a, n), n); }
 
 Vec perpendicular_part(const Vec& a, const Vec& n) { return subtract(a, parallel_part(a, n)); }

@@ -28,6 +28,8 @@ GiNaC::ex dot(const Vec& a, const Vec& b);
 Vec cross(const Vec& a, const Vec& b);
 /// The components as a GiNaC list, the form a claim compares.
 GiNaC::lst to_lst(const Vec& a);
+/// The components of each vector in turn, as one list.
+GiNaC::lst concatenate(const std::vector<Vec>& vectors);
 
 /// a∥ = (a·n) n: the part along n.
 Vec parallel_part(const Vec& a, const Vec& n);

@@ -31,15 +31,7 @@ const std::string spin_list_header = "billiards/spin_kernel_list.hpp";
 
 // The claim `id` with its paper side changed, checked again: a slip in a claim that no kernel cites.
 Mutation uncited_claim_wrong(const std::string& name, const std::string& id) {
-  return {.name = name, .kernel = id, .edit_derivation = [id](Derivation& derivation) {
-            for (Claim& claim : derivation.claims) {
-              if (claim.id != id) continue;
-              claim.paper_expression = claim.paper_expression + GiNaC::symbol("slip");
-              check(claim);
-              return;
-            }
-            throw std::invalid_argument("no claim " + id);
-          }};
+  return claim_retyped(name, id, [](const GiNaC::ex& typed) { return typed + GiNaC::symbol("slip"); });
 }
 
 // Every kernel named `kernel` or `plain_<kernel>` with the meanings of parameters `a` and `b` swapped.
@@ -219,6 +211,19 @@ const std::vector<Mutation>& spin_class_mutations() {
                      plain_mass_high(), infinity()),
   };
   return mutations;
+}
+
+Mutation claim_retyped(const std::string& name, const std::string& id,
+                       const std::function<GiNaC::ex(const GiNaC::ex&)>& retype) {
+  return {.name = name, .kernel = id, .edit_derivation = [id, retype](Derivation& derivation) {
+            for (Claim& claim : derivation.claims) {
+              if (claim.id != id) continue;
+              claim.paper_expression = retype(claim.paper_expression);
+              check(claim);
+              return;
+            }
+            throw std::invalid_argument("no claim " + id);
+          }};
 }
 
 }  // namespace billiards::derive::testing

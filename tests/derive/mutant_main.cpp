@@ -3,6 +3,7 @@
 // options]; `--list` prints the mutations, one "name culprit" line each ("name culprit harmless" for
 // one that must pass).
 #include "models/parkin2023/paper.hpp"
+#include "models/shot/shot.hpp"
 #include "models/spinning/spinning.hpp"
 #include "mutations.hpp"
 #include "run.hpp"
@@ -26,7 +27,8 @@ int main(int argc, char** argv) {
   const std::vector<Suite> suites = {{"parkin2023", [] { return parkin2023::derive(); },
                                       both(testing::paper_mutations(), testing::paper_class_mutations())},
                                      {"spinning", [] { return spinning::derive(); },
-                                      both(testing::spin_mutations(), testing::spin_class_mutations())}};
+                                      both(testing::spin_mutations(), testing::spin_class_mutations())},
+                                     {"shot", [] { return shot::derive(); }, testing::shot_mutations()}};
   const std::string wanted = argc > 1 ? argv[1] : "";
   if (wanted == "--list") {
     for (const Suite& suite : suites) {

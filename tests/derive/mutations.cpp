@@ -1,6 +1,7 @@
 #include "mutations.hpp"
 
 #include "core/named_constants.hpp"
+#include "models/shot/steps.hpp"
 #include "core/powers_of_two.hpp"
 
 #include <stdexcept>
@@ -251,6 +252,28 @@ std::string edit_function(const std::string& text, const std::string& name, cons
     return text.substr(0, open) + body + text.substr(end);
   }
   throw std::invalid_argument("no function " + name + " in the header");
+}
+
+}  // namespace billiards::derive::testing
+
+namespace billiards::derive::testing {
+
+const std::vector<Mutation>& shot_mutations() {
+  const shot::Symbols& s = shot::symbols();
+  static const std::vector<Mutation> mutations = {
+      // The cue's mass where the ball's belongs (an impulse of 2 M V over the denominator, not 2 m V).
+      claim_retyped("shot_speed_cue_mass_for_ball_mass", "strike.speed",
+                    [&s](const GiNaC::ex& typed) { return typed * s.M / s.m; }),
+      // A cos for a sin in TP A-30's offset terms: (c cos θ)² for (c sin θ)².
+      claim_retyped("shot_offset_terms_cos_for_sin", "strike.tp_a30_offset_terms",
+                    [&s](const GiNaC::ex& typed) {
+                      return typed - GiNaC::pow(s.c_horizontal * s.sin_theta, 2) +
+                             GiNaC::pow(s.c_horizontal * s.cos_theta, 2);
+                    }),
+      // The spin typed with the wrong sense: r × J d turned round.
+      claim_retyped("shot_spin_sign_turned", "strike.spin", [](const GiNaC::ex& typed) { return -typed; }),
+  };
+  return mutations;
 }
 
 }  // namespace billiards::derive::testing

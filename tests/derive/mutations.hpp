@@ -35,6 +35,14 @@ const std::vector<Mutation>& spin_mutations();
 const std::vector<Mutation>& paper_class_mutations();
 const std::vector<Mutation>& spin_class_mutations();
 
+/// Every mutation of the shot model.
+const std::vector<Mutation>& shot_mutations();
+
+/// The claim `id` with its typed (paper) side retyped by `retype` and checked again: a slip in typing a
+/// published formula, which must fail the run naming the claim.
+Mutation claim_retyped(const std::string& name, const std::string& id,
+                       const std::function<GiNaC::ex(const GiNaC::ex&)>& retype);
+
 /// `text` with `from` replaced by `to` (every occurrence, at least one) inside the body of the function
 /// defined as `name(` (e.g. "plain_mass_low<double>"). Throws std::invalid_argument when there is
 /// none.

@@ -39,12 +39,4 @@ ex Contact::kinetic_energy(const std::vector<Vec>& state) const {
 
 Vec Contact::tangent() const { return cross(n, a); }
 
-lst concatenate(const std::vector<Vec>& vectors) {
-  lst all;
-  for (const Vec& v : vectors) {
-    for (const ex& component : v) all.append(component);
-  }
-  return all;
-}
-
 }  // namespace billiards::derive::spinning

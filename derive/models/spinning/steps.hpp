@@ -82,8 +82,6 @@ struct Contact {
   Vec tangent() const;
 };
 
-lst concatenate(const std::vector<Vec>& vectors);
-
 // ---- The steps ------------------------------------------------------------------------------------
 
 void record_premises(Recorder& record);

@@ -1,0 +1,41 @@
+// The shot model as a pipeline: the cue strike.
+#include "models/shot/shot.hpp"
+
+#include "models/shot/steps.hpp"
+
+namespace billiards::derive::shot {
+
+ModelInfo info() {
+  ModelInfo model;
+  model.name = "shot";
+  model.title = "The shot: the cue strike";
+  model.citation = "the cue strike, from the impulse equations (after Alciatore, TP A-30)";
+  model.scope = "a rigid cue tip striking a rigid solid sphere: one instantaneous impulse along the cue";
+  model.notation =
+      "Vectors are 3-D, in symbolic components: $v_x$ is `v_x`, $\\omega_x$ is `w_x`. The cue's direction "
+      "is written with $\\cos\\theta$, $\\sin\\theta$, $\\cos\\varphi$, $\\sin\\varphi$ as symbols, and "
+      "$\\cos^2 + \\sin^2 = 1$ and $a^2 + b^2 + c^2 = 1$ are imposed by substitution where a claim says so.";
+  model.remarks = {
+      "The tip is frictionless on the ball and the impulse acts along the cue (the instantaneous point model "
+      "of TP A-30, as common simulators use it); the cue's deflection and the ball's squirt are not in it.",
+      "TP A-30 is the case e_tip = 1 with the ball at rest; the derivation keeps e_tip and the ball's state "
+      "before the strike.",
+  };
+  model.markdown_path = "shot/AUDIT.md";
+  model.json_path = "shot/audit.json";
+  model.kernels_path = "";
+  return model;
+}
+
+Derivation derive() {
+  Derivation derivation;
+  derivation.model = info();
+  record_steps(derivation, [&](Recorder& record) {
+    const Strike strike;
+    record_premises(record);
+    the_cue_strike(record, strike);
+  });
+  return derivation;
+}
+
+}  // namespace billiards::derive::shot
