@@ -59,6 +59,8 @@ struct ModelEntry {
   /// For the mutation suite only: an edit of each header's printed text (its path relative to the
   /// output folder, its text) before it is read back and proven, as a slip in the printer would make.
   std::function<std::string(const std::string&, const std::string&)> edit_printed = {};
+  /// For the mutation suite only: the kernels whose rounding Gappa proves (every kernel when empty).
+  std::function<bool(const std::string&)> proves_rounding_of = {};
 };
 
 /// Every registered model, in the order billiards-derive runs them (models/registry.cpp).

@@ -79,7 +79,8 @@ int run_model(const ModelEntry& entry, const fs::path& folder) {
           header.kernels == nullptr
               ? prove_kernel_list(header.text, derivation.kernels, derivation.reference_kernels,
                                   model.reference_namespace)
-              : prove_printed(header.text, *header.kernels, derivation.claims, derivation.rounding);
+              : prove_printed(header.text, *header.kernels, derivation.claims, derivation.rounding,
+                              entry.proves_rounding_of);
       problems.insert(problems.end(), found.begin(), found.end());
     }
   }

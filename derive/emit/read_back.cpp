@@ -125,8 +125,13 @@ bool same_relational(const ex& a, const ex& b) {
 class ReadBack {
  public:
   ReadBack(const std::vector<CppFunction>& functions, const std::vector<Kernel>& kernels,
-           const std::vector<Claim>& claims, std::vector<RoundingBound>& bounds)
-      : functions_(functions), kernels_(kernels), claims_(claims), bounds_(bounds) {}
+           const std::vector<Claim>& claims, std::vector<RoundingBound>& bounds,
+           const std::function<bool(const std::string&)>& proves_rounding_of)
+      : functions_(functions),
+        kernels_(kernels),
+        claims_(claims),
+        bounds_(bounds),
+        proves_rounding_of_(proves_rounding_of) {}
 
   std::vector<KernelProblem> run() {
     for (const Kernel& kernel : kernels_) {
@@ -219,7 +224,8 @@ class ReadBack {
       problems_.push_back(problem);
     }
     // Where the kernel is a fast path's plain form, its domain proven safe from the same text.
-    if (!kernel.domain.empty() || !kernel.rounding_cases.empty()) {
+    if ((!kernel.domain.empty() || !kernel.rounding_cases.empty()) &&
+        (!proves_rounding_of_ || proves_rounding_of_(kernel.name) || proves_rounding_of_(name))) {
       const std::vector<KernelProblem> rounding = prove_rounding(*f, kernel, bounds_);
       problems_.insert(problems_.end(), rounding.begin(), rounding.end());
     }
@@ -702,6 +708,7 @@ class ReadBack {
   const std::vector<Kernel>& kernels_;
   const std::vector<Claim>& claims_;
   std::vector<RoundingBound>& bounds_;
+  const std::function<bool(const std::string&)>& proves_rounding_of_;
   std::set<std::string> proven_, predicates_done_;
   std::vector<KernelProblem> problems_;
 };
@@ -709,11 +716,11 @@ class ReadBack {
 }  // namespace
 
 std::vector<KernelProblem> prove_printed(const std::string& header, const std::vector<Kernel>& kernels,
-                                         const std::vector<Claim>& claims,
-                                         std::vector<RoundingBound>& bounds) {
+                                         const std::vector<Claim>& claims, std::vector<RoundingBound>& bounds,
+                                         const std::function<bool(const std::string&)>& proves_rounding_of) {
   try {
     const std::vector<CppFunction> functions = read_functions(header);
-    return ReadBack(functions, kernels, claims, bounds).run();
+    return ReadBack(functions, kernels, claims, bounds, proves_rounding_of).run();
   } catch (const std::exception& error) {
     return {{"(the printed header)", "", std::string("cannot be read back: ") + error.what()}};
   }

@@ -8,6 +8,7 @@
 #include "emit/rounding.hpp"
 #include "emit/validate.hpp"
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -33,10 +34,12 @@ namespace billiards::derive {
 /// over every exponent, on the host path and the device path, by the support-code tests).
 /// Each kernel with a domain (a fast path's plain form) or rounding cases is also proven safe there from
 /// its text, by Gappa (prove_rounding), its bounds appended to `bounds`. `kernels` are the ones printed into this header.
-/// Never throws.
-std::vector<KernelProblem> prove_printed(const std::string& header, const std::vector<Kernel>& kernels,
-                                         const std::vector<Claim>& claims,
-                                         std::vector<RoundingBound>& bounds);
+/// `proves_rounding_of`, when given, limits the Gappa proofs to the kernels it accepts (by the kernel's
+/// name or the name the header spells it with); the mutation suite uses it to prove only its culprit. Never throws.
+std::vector<KernelProblem> prove_printed(
+    const std::string& header, const std::vector<Kernel>& kernels, const std::vector<Claim>& claims,
+    std::vector<RoundingBound>& bounds,
+    const std::function<bool(const std::string&)>& proves_rounding_of = {});
 
 /// Reads back a kernel list (kernel_list_header: for tests, not installed) and proves it calls what it
 /// says: `call` has one branch per kernel and reference kernel, in order, labelled with its name, calling

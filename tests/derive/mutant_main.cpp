@@ -45,6 +45,9 @@ int main(int argc, char** argv) {
                                            testing::apply(mutation, derivation);
                                            return derivation;
                                          }}};
+      // Gappa proves the rounding of the culprit alone: the suite asks that the culprit be named, and a
+      // rounding proof names only its own kernel, so the other kernels' proofs cannot bear on it.
+      models.front().proves_rounding_of = [&mutation](const std::string& name) { return name == mutation.kernel; };
       if (mutation.edit_printed) {
         models.front().edit_printed = [&mutation](const std::string& path, const std::string& text) {
           return path == mutation.header ? mutation.edit_printed(text) : text;

@@ -127,21 +127,35 @@ CueStrike the_cue_strike(Recorder& record, const Strike& k) {
       .constraints = k.unit,
       .depends_on = {"strike.speed", "strike.spin"},
   });
-  const std::vector<Vec> struck_any = k.after(impulse);
-  const ex energy_change =
-      kinetic_energy(s.V - impulse / s.M, struck_any[0], struck_any[1]) - kinetic_energy(s.V, k.v, k.w);
+  // The energy change is a quadratic in J: written so, with J a symbol, it is a polynomial identity; the
+  // impulse of strike.impulse then enters a small rational expression.
+  const std::vector<Vec> struck_any = k.after(s.impulse);
+  const ex energy_in_impulse =
+      kinetic_energy(s.V - s.impulse / s.M, struck_any[0], struck_any[1]) - kinetic_energy(s.V, k.v, k.w);
   const ex approach = s.V - before_speed;
+  record.add({
+      .id = "strike.energy_in_impulse",
+      .statement = "An impulse J along d changes the kinetic energy of cue and ball by −J (V − (v + ω × r)·d) + "
+                   "(J²/2)(1/M + 1/m + (5/2)(a² + b²)/m): the work on the tip's approach plus J² over twice the "
+                   "effective mass.",
+      .method = "½ M V² + ½ m v² + ½ I ω² after minus before, J a symbol; identity, the unit relations imposed",
+      .comparison = Comparison::identity,
+      .paper_expression = -s.impulse * approach + s.impulse * s.impulse * inverse_mass / 2,
+      .derived_expression = energy_in_impulse,
+      .constraints = k.unit,
+      .depends_on = {"definition.cue_impulse", "definition.solid_sphere", "strike.frame"},
+  });
+  const ex energy_change = (-s.impulse * approach + s.impulse * s.impulse * inverse_mass / 2)
+                               .subs(s.impulse == (1 + e) * approach / inverse_mass);
   record.add({
       .id = "strike.energy",
       .statement = "The strike changes the kinetic energy of cue and ball by −(1 − e_tip²) (V − (v + ω × r)·d)² "
                    "/ (2 (1/M + 1/m + (5/2)(a² + b²)/m)).",
-      .method = "½ M V² + ½ m v² + ½ I ω² after minus before, J substituted; identity, the unit relations "
-                "imposed",
+      .method = "strike.energy_in_impulse with the J of strike.impulse substituted; identity",
       .comparison = Comparison::identity,
       .paper_expression = -(1 - e * e) * approach * approach / (2 * inverse_mass),
       .derived_expression = energy_change,
-      .constraints = k.unit,
-      .depends_on = {"strike.impulse"},
+      .depends_on = {"strike.impulse", "strike.energy_in_impulse"},
   });
   record.add({
       .id = "strike.energy_conserved_elastic",
@@ -151,7 +165,6 @@ CueStrike the_cue_strike(Recorder& record, const Strike& k) {
       .comparison = Comparison::identity,
       .paper_expression = 0,
       .derived_expression = energy_change.subs(e == 1),
-      .constraints = k.unit,
       .depends_on = {"strike.energy"},
   });
   record.add({
