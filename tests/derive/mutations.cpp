@@ -217,6 +217,19 @@ const std::vector<Mutation>& spin_mutations() {
              5 * symbol(k, "scaled_radius") * symbol(k, "scaled_spin_speed") /
              (2 * symbol(k, "scaled_spinning_friction") * symbol(k, "scaled_gravity"));
        }},
+      // The event polynomials as hands type them: c1 without its 2, and the cushion's ½ a_n as a_n.
+      claim_retyped("events_contact_linear_term_halved", "events.contact_polynomial",
+                    [](const GiNaC::ex& typed) {
+                      GiNaC::lst coefficients = GiNaC::ex_to<GiNaC::lst>(typed);
+                      coefficients.let_op(1) = coefficients.op(1) / 2;
+                      return GiNaC::ex(coefficients);
+                    }),
+      claim_retyped("events_cushion_acceleration_not_halved", "events.cushion_polynomial",
+                    [](const GiNaC::ex& typed) {
+                      GiNaC::lst coefficients = GiNaC::ex_to<GiNaC::lst>(typed);
+                      coefficients.let_op(2) = 2 * coefficients.op(2);
+                      return GiNaC::ex(coefficients);
+                    }),
   };
   return mutations;
 }
@@ -272,6 +285,19 @@ const std::vector<Mutation>& shot_mutations() {
                     }),
       // The spin typed with the wrong sense: r × J d turned round.
       claim_retyped("shot_spin_sign_turned", "strike.spin", [](const GiNaC::ex& typed) { return -typed; }),
+      // The end mass and the ball's mass swapped in TP A-31's ratio: m_e/m for m/m_e.
+      claim_retyped("shot_squirt_mass_ratio_inverted", "squirt.angle",
+                    [&s](const GiNaC::ex& typed) {
+                      return typed.subs(GiNaC::exmap{{s.m, s.end_mass}, {s.end_mass, s.m}});
+                    }),
+      // Han (2005)'s stick/slip test as printed, without μ.
+      claim_retyped("shot_han_stick_test_without_mu", "cushion.regime",
+                    [&s](const GiNaC::ex& typed) { return typed.subs(s.cushion_friction == 1); }),
+      // The nose's angle misread: θ_a measured from the vertical, cos and sin swapped in Han's equations.
+      claim_retyped("shot_han_angle_misread", "cushion.han_2005_sticking",
+                    [&s](const GiNaC::ex& typed) {
+                      return typed.subs(GiNaC::exmap{{s.cos_a, s.sin_a}, {s.sin_a, s.cos_a}});
+                    }),
   };
   return mutations;
 }

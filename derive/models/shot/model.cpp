@@ -8,16 +8,24 @@ namespace billiards::derive::shot {
 ModelInfo info() {
   ModelInfo model;
   model.name = "shot";
-  model.title = "The shot: the cue strike";
-  model.citation = "the cue strike, from the impulse equations (after Alciatore, TP A-30)";
-  model.scope = "a rigid cue tip striking a rigid solid sphere: one instantaneous impulse along the cue";
+  model.title = "The shot: the cue strike, squirt and the cushion";
+  model.citation =
+      "the cue strike, squirt and the cushion with spin, from the impulse equations (after Alciatore, TP A-30 "
+      "and A-31, and Han 2005)";
+  model.scope =
+      "a rigid cue tip striking a rigid solid sphere, and the sphere meeting a rigid cushion: each one "
+      "instantaneous impulse";
   model.notation =
       "Vectors are 3-D, in symbolic components: $v_x$ is `v_x`, $\\omega_x$ is `w_x`. The cue's direction "
       "is written with $\\cos\\theta$, $\\sin\\theta$, $\\cos\\varphi$, $\\sin\\varphi$ as symbols, and "
       "$\\cos^2 + \\sin^2 = 1$ and $a^2 + b^2 + c^2 = 1$ are imposed by substitution where a claim says so.";
   model.remarks = {
-      "The tip is frictionless on the ball and the impulse acts along the cue (the instantaneous point model "
-      "of TP A-30, as common simulators use it); the cue's deflection and the ball's squirt are not in it.",
+      "For the strike the tip is frictionless on the ball and the impulse acts along the cue (the "
+      "instantaneous point model of TP A-30, as common simulators use it); squirt is derived apart, from a "
+      "tip that grips the ball across the cue (TP A-31).",
+      "At the cushion the ball's own impulse equations hold with the cushion immovable, and the table keeps "
+      "the ball on the cloth by a vertical impulse through its centre that takes no part in the contact at "
+      "the nose (Han 2005's convention): no hop, no friction with the cloth during the impact.",
       "TP A-30 is the case e_tip = 1 with the ball at rest; the derivation keeps e_tip and the ball's state "
       "before the strike.",
   };
@@ -34,6 +42,8 @@ Derivation derive() {
     const Strike strike;
     record_premises(record);
     the_cue_strike(record, strike);
+    the_squirt(record, strike);
+    the_cushion(record, strike);
   });
   return derivation;
 }

@@ -34,6 +34,17 @@ struct Symbols {
   GiNaC::realsymbol sin_phi{"sin_phi", "\\sin\\varphi"};
   GiNaC::realsymbol b_vertical{"b_v", "b_v"};  ///< TP A-30's offset: vertical, in units of R
   GiNaC::realsymbol c_horizontal{"c_h", "c_h"};  ///< TP A-30's depth: horizontal, along the aim
+  GiNaC::possymbol end_mass{"m_e", "m_e"};   ///< the cue's end mass: what moves across the cue with the tip
+  GiNaC::realsymbol side_impulse{"J_s", "J_s"};  ///< the impulse on the ball across the cue, along s
+  // The cushion, in its own frame: x̂ its normal into the cushion, ŷ along it, ẑ up.
+  GiNaC::possymbol cos_a{"cos_theta_a", "\\cos\\theta_a"};  ///< the nose's angle above the equator, |θ_a| < 90°
+  GiNaC::realsymbol sin_a{"sin_theta_a", "\\sin\\theta_a"};  ///< sin θ_a = h/R − 1
+  GiNaC::possymbol nose_height{"h", "h"};  ///< the cushion's nose above the table, 0 < h < 2R
+  GiNaC::realsymbol cushion_restitution{"e_c", "e_c"};
+  GiNaC::possymbol cushion_friction{"mu_c", "\\mu_c"};
+  GiNaC::possymbol normal_impulse{"P_n", "P_n"};  ///< the cushion's impulse on the ball along −n
+  GiNaC::possymbol friction_impulse{"j", "j"};    ///< its size across n, against the slip
+  GiNaC::possymbol slip{"sigma", "\\sigma"};    ///< |u_t|, the contact point's slip across n
 };
 
 const Symbols& symbols();
@@ -62,5 +73,7 @@ struct CueStrike {
   ex impulse;  ///< J, solved from the tip's restitution
 };
 CueStrike the_cue_strike(Recorder& record, const Strike& strike);
+void the_squirt(Recorder& record, const Strike& strike);
+void the_cushion(Recorder& record, const Strike& strike);
 
 }  // namespace billiards::derive::shot

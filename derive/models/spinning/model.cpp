@@ -53,6 +53,7 @@ Derivation derive() {
     const Friction friction = the_friction(record, contact, impulse);
     the_throw(record, contact, friction);
     const Cloth cloth = the_cloth(record);
+    event_times(record);
     kernel_claims(record, contact, impulse, friction);
     derivation.kernels = spin_kernels(cloth);
   });

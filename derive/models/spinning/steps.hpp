@@ -131,6 +131,25 @@ struct Cloth {
 /// The three phases in the audit's order.
 Cloth the_cloth(Recorder& record);
 
+/// The event polynomials' symbols: the differences of two motions (or of a ball's and a fixed point's),
+/// the contact distance, and a ball's motion along a cushion's normal.
+struct EventSymbols {
+  GiNaC::realsymbol dx, dy, dvx, dvy, dax, day;
+  GiNaC::possymbol distance;                                ///< D: R1 + R2, R + ρ or ρ
+  GiNaC::realsymbol gap, normal_speed, normal_acceleration;  ///< s0 = n·r0 − d, n·v0, n·a
+  GiNaC::possymbol radius;                                  ///< the ball's R, for the cushion
+  GiNaC::possymbol separation;                              ///< |Δr|
+  EventSymbols();
+};
+const EventSymbols& event_symbols();
+
+struct EventPolynomials {
+  std::vector<ex> contact;  ///< c0 … c4 of |Δr(t)|² − D², in EventSymbols
+  std::vector<ex> cushion;  ///< c0 … c2 of n·r(t) − d − R
+};
+/// The section "Event times on the cloth".
+EventPolynomials event_times(Recorder& record);
+
 // ---- The kernels ----------------------------------------------------------------------------------
 
 /// The claims the kernels are proven against where the steps do not state the emitted quantity alone.
