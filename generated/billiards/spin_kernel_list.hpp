@@ -4,7 +4,7 @@
 // (throw after Alciatore, TP A-14), listed by the derivation, so that tests call, measure and compile each
 // one without a list kept by hand.
 //
-// Fingerprint: fnv1a64:41c518787a4e4a96 (of this header and the audit)
+// Fingerprint: fnv1a64:ff0e1ba7f4ee5972 (of this header and the audit)
 #pragma once
 
 #include <billiards/spin_kernels.hpp>
@@ -78,6 +78,34 @@ std::vector<Scalar> call(const std::string& name, const Arguments& at) {
     const auto r = spin_time(at("spin_speed"), at("radius"), at("spinning_friction"), at("gravity"));
     return {r};
   }
+  if (name == "contact_constant_term") {
+    const auto r = contact_constant_term(at("dx"), at("dy"), at("distance"));
+    return {r};
+  }
+  if (name == "contact_linear_term") {
+    const auto r = contact_linear_term(at("dx"), at("dy"), at("dvx"), at("dvy"));
+    return {r};
+  }
+  if (name == "contact_quadratic_term") {
+    const auto r = contact_quadratic_term(at("dx"), at("dy"), at("dvx"), at("dvy"), at("dax"), at("day"));
+    return {r};
+  }
+  if (name == "contact_cubic_term") {
+    const auto r = contact_cubic_term(at("dvx"), at("dvy"), at("dax"), at("day"));
+    return {r};
+  }
+  if (name == "contact_quartic_term") {
+    const auto r = contact_quartic_term(at("dax"), at("day"));
+    return {r};
+  }
+  if (name == "cushion_contact_constant_term") {
+    const auto r = cushion_contact_constant_term(at("gap"), at("radius"));
+    return {r};
+  }
+  if (name == "cushion_contact_quadratic_term") {
+    const auto r = cushion_contact_quadratic_term(at("normal_acceleration"));
+    return {r};
+  }
   throw std::invalid_argument("no kernel named " + name);
 }
 
@@ -105,6 +133,13 @@ BILLIARDS_HOST_DEVICE Scalar sum_of_every_kernel(const Scalar* a) noexcept {
   sum += roll_time(a[0], a[1], a[2]);
   sum += plain_spin_time(a[0], a[1], a[2], a[3]);
   sum += spin_time(a[0], a[1], a[2], a[3]);
+  sum += contact_constant_term(a[0], a[1], a[2]);
+  sum += contact_linear_term(a[0], a[1], a[2], a[3]);
+  sum += contact_quadratic_term(a[0], a[1], a[2], a[3], a[4], a[5]);
+  sum += contact_cubic_term(a[0], a[1], a[2], a[3]);
+  sum += contact_quartic_term(a[0], a[1]);
+  sum += cushion_contact_constant_term(a[0], a[1]);
+  sum += cushion_contact_quadratic_term(a[0]);
   return sum;
 }
 

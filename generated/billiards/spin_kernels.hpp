@@ -5,7 +5,7 @@
 // verified claim of the derivation audit before it was printed, and names the claims it implements. They take
 // masses and dot products, so they serve vectors of any dimension and need no Eigen.
 //
-// Fingerprint: fnv1a64:716a729838c8c0d3 (of this header and the audit)
+// Fingerprint: fnv1a64:59a684b8a3ab7797 (of this header and the audit)
 #pragma once
 
 #include <bit>
@@ -618,6 +618,97 @@ BILLIARDS_HOST_DEVICE Scalar spin_time(Scalar spin_speed, Scalar radius, Scalar 
   if (spin_time_is_moderate(spin_speed, radius, spinning_friction, gravity))
     return plain_spin_time(spin_speed, radius, spinning_friction, gravity);
   return full_spin_time(spin_speed, radius, spinning_friction, gravity);
+}
+
+/// c0 = Δr·Δr − D², the coefficient of t⁰ of the contact polynomial |Δr + Δv t + ½ Δa
+/// t²|² − D² of two balls (Δ: ball 2 less ball 1, D = R1 + R2) or of a ball and a circle (Δ: the
+/// ball less the circle's centre, D = R + ρ or ρ): its sign is the gap's.
+///
+/// Proven equal to the derived expression of the audit claim `events.contact_constant_term` before it
+/// was printed; also implements `events.contact_now_and_approach`.
+///
+/// Total ops: 5
+template <typename Scalar>
+BILLIARDS_HOST_DEVICE constexpr Scalar contact_constant_term(Scalar dx, Scalar dy, Scalar distance) noexcept {
+  return dx * dx + dy * dy - distance * distance;
+}
+
+/// c1 = 2 Δr·Δv, the coefficient of t of the contact polynomial |Δr + Δv t + ½ Δa t²|² − D²
+/// of two balls (Δ: ball 2 less ball 1, D = R1 + R2) or of a ball and a circle (Δ: the ball less the
+/// circle's centre, D = R + ρ or ρ): negative iff the bodies approach.
+///
+/// Proven equal to the derived expression of the audit claim `events.contact_linear_term` before it was
+/// printed; also implements `events.contact_now_and_approach`.
+///
+/// Total ops: 5
+template <typename Scalar>
+BILLIARDS_HOST_DEVICE constexpr Scalar contact_linear_term(Scalar dx, Scalar dy, Scalar dvx,
+                                                           Scalar dvy) noexcept {
+  return Scalar(2) * dvx * dx + Scalar(2) * dvy * dy;
+}
+
+/// c2 = Δv·Δv + Δr·Δa, the coefficient of t² of the contact polynomial |Δr + Δv t + ½ Δa
+/// t²|² − D² of two balls (Δ: ball 2 less ball 1, D = R1 + R2) or of a ball and a circle (Δ: the
+/// ball less the circle's centre, D = R + ρ or ρ).
+///
+/// Proven equal to the derived expression of the audit claim `events.contact_quadratic_term` before it
+/// was printed; also implements `events.contact_degree`.
+///
+/// Total ops: 7
+template <typename Scalar>
+BILLIARDS_HOST_DEVICE constexpr Scalar contact_quadratic_term(Scalar dx, Scalar dy, Scalar dvx, Scalar dvy,
+                                                              Scalar dax, Scalar day) noexcept {
+  return dax * dx + day * dy + dvx * dvx + dvy * dvy;
+}
+
+/// c3 = Δv·Δa, the coefficient of t³ of the contact polynomial |Δr + Δv t + ½ Δa t²|² − D²
+/// of two balls (Δ: ball 2 less ball 1, D = R1 + R2) or of a ball and a circle (Δ: the ball less the
+/// circle's centre, D = R + ρ or ρ).
+///
+/// Proven equal to the derived expression of the audit claim `events.contact_cubic_term` before it was
+/// printed; also implements `events.contact_degree`.
+///
+/// Total ops: 3
+template <typename Scalar>
+BILLIARDS_HOST_DEVICE constexpr Scalar contact_cubic_term(Scalar dvx, Scalar dvy, Scalar dax,
+                                                          Scalar day) noexcept {
+  return dax * dvx + day * dvy;
+}
+
+/// c4 = ¼ Δa·Δa, the coefficient of t⁴ of the contact polynomial |Δr + Δv t + ½ Δa t²|² −
+/// D² of two balls (Δ: ball 2 less ball 1, D = R1 + R2) or of a ball and a circle (Δ: the ball less
+/// the circle's centre, D = R + ρ or ρ): zero exactly where the accelerations are equal.
+///
+/// Proven equal to the derived expression of the audit claim `events.contact_quartic_term` before it
+/// was printed; also implements `events.contact_degree`.
+///
+/// Total ops: 4
+template <typename Scalar>
+BILLIARDS_HOST_DEVICE constexpr Scalar contact_quartic_term(Scalar dax, Scalar day) noexcept {
+  return (dax * dax + day * day) / Scalar(4);
+}
+
+/// c0 = s0 − R of the cushion polynomial s0 − R + v_n t + ½ a_n t² (s0 the centre's distance from
+/// the cushion's line, v_n and a_n along its normal into the table, c1 = v_n): the gap.
+///
+/// Proven equal to the derived expression of the audit claim `events.cushion_constant_term` before it
+/// was printed.
+///
+/// Total ops: 1
+template <typename Scalar>
+BILLIARDS_HOST_DEVICE constexpr Scalar cushion_contact_constant_term(Scalar gap, Scalar radius) noexcept {
+  return gap - radius;
+}
+
+/// c2 = ½ a_n of the cushion polynomial s0 − R + v_n t + ½ a_n t².
+///
+/// Proven equal to the derived expression of the audit claim `events.cushion_quadratic_term` before it
+/// was printed.
+///
+/// Total ops: 1
+template <typename Scalar>
+BILLIARDS_HOST_DEVICE constexpr Scalar cushion_contact_quadratic_term(Scalar normal_acceleration) noexcept {
+  return Scalar(0.5) * normal_acceleration;
 }
 
 }  // namespace billiards::kernels::spin

@@ -217,19 +217,41 @@ const std::vector<Mutation>& spin_mutations() {
              5 * symbol(k, "scaled_radius") * symbol(k, "scaled_spin_speed") /
              (2 * symbol(k, "scaled_spinning_friction") * symbol(k, "scaled_gravity"));
        }},
-      // The event polynomials as hands type them: c1 without its 2, and the cushion's ½ a_n as a_n.
-      claim_retyped("events_contact_linear_term_halved", "events.contact_polynomial",
-                    [](const GiNaC::ex& typed) {
-                      GiNaC::lst coefficients = GiNaC::ex_to<GiNaC::lst>(typed);
-                      coefficients.let_op(1) = coefficients.op(1) / 2;
-                      return GiNaC::ex(coefficients);
-                    }),
-      claim_retyped("events_cushion_acceleration_not_halved", "events.cushion_polynomial",
-                    [](const GiNaC::ex& typed) {
-                      GiNaC::lst coefficients = GiNaC::ex_to<GiNaC::lst>(typed);
-                      coefficients.let_op(2) = 2 * coefficients.op(2);
-                      return GiNaC::ex(coefficients);
-                    }),
+      // The event polynomials' kernels, each with a slip of its own.
+      {"contact_constant_term_distance_added", "contact_constant_term",
+       [](Kernel& k) {
+         const auto x = [&](const char* name) { return symbol(k, name); };
+         k.outputs.at(0) = x("dx") * x("dx") + x("dy") * x("dy") + x("distance") * x("distance");
+       }},
+      {"contact_linear_term_without_its_two", "contact_linear_term",
+       [](Kernel& k) {
+         const auto x = [&](const char* name) { return symbol(k, name); };
+         k.outputs.at(0) = x("dx") * x("dvx") + x("dy") * x("dvy");
+       }},
+      {"contact_quadratic_term_acceleration_halved", "contact_quadratic_term",
+       [](Kernel& k) {
+         const auto x = [&](const char* name) { return symbol(k, name); };
+         k.outputs.at(0) = x("dvx") * x("dvx") + x("dvy") * x("dvy") + (x("dx") * x("dax") + x("dy") * x("day")) / 2;
+       }},
+      {"contact_cubic_term_components_crossed", "contact_cubic_term",
+       [](Kernel& k) {
+         const auto x = [&](const char* name) { return symbol(k, name); };
+         k.outputs.at(0) = x("dvx") * x("day") + x("dvy") * x("dax");
+       }},
+      {"contact_quartic_term_half_for_quarter", "contact_quartic_term",
+       [](Kernel& k) {
+         const auto x = [&](const char* name) { return symbol(k, name); };
+         k.outputs.at(0) = (x("dax") * x("dax") + x("day") * x("day")) / 2;
+       }},
+      {"cushion_contact_constant_term_radius_added", "cushion_contact_constant_term",
+       [](Kernel& k) { k.outputs.at(0) = symbol(k, "gap") + symbol(k, "radius"); }},
+      {"cushion_contact_quadratic_term_not_halved", "cushion_contact_quadratic_term",
+       [](Kernel& k) { k.outputs.at(0) = symbol(k, "normal_acceleration"); }},
+      // The event polynomials' claims as hands type them: c1 without its 2, and the cushion's ½ a_n as a_n.
+      claim_retyped("events_contact_linear_term_halved", "events.contact_linear_term",
+                    [](const GiNaC::ex& typed) { return typed / 2; }),
+      claim_retyped("events_cushion_acceleration_not_halved", "events.cushion_quadratic_term",
+                    [](const GiNaC::ex& typed) { return 2 * typed; }),
   };
   return mutations;
 }

@@ -34,9 +34,9 @@ EventPolynomials event_times(Recorder& record) {
                  "roots of polynomials in t. Their coefficients are derived here and emitted as kernels; the "
                  "runtime's root finder takes the earliest root in which the bodies approach.");
   // Two balls, each r_i(t) = r_i + v_i t + ½ a_i t².
-  const Vec r1 = component_symbols("p1", "r_1", "", 2), r2 = component_symbols("p2", "r_2", "", 2);
-  const Vec v1 = component_symbols("u1", "v_1", "", 2), v2 = component_symbols("u2", "v_2", "", 2);
-  const Vec a1 = component_symbols("b1", "a_1", "", 2), a2 = component_symbols("b2", "a_2", "", 2);
+  const Vec r1 = component_symbols("p1", "r", "1", 2), r2 = component_symbols("p2", "r", "2", 2);
+  const Vec v1 = component_symbols("u1", "v", "1", 2), v2 = component_symbols("u2", "v", "2", 2);
+  const Vec a1 = component_symbols("b1", "a", "1", 2), a2 = component_symbols("b2", "a", "2", 2);
   const auto motion = [&](const Vec& r, const Vec& v, const Vec& a) {
     return add(add(r, scale(t, v)), scale(t * t / 2, a));
   };
@@ -59,11 +59,8 @@ EventPolynomials event_times(Recorder& record) {
   EventPolynomials out;
   out.contact = {dot(dr, dr) - p.distance * p.distance, 2 * dot(dr, dv), dot(dv, dv) + dot(dr, da),
                  dot(dv, da), dot(da, da) / 4};
-  lst derived_coefficients, typed_coefficients;
-  for (int k = 0; k <= 4; ++k) {
-    derived_coefficients.append(contact.coeff(t, k));
-    typed_coefficients.append(out.contact[static_cast<std::size_t>(k)]);
-  }
+  ex typed_polynomial = 0;
+  for (std::size_t k = 0; k < out.contact.size(); ++k) typed_polynomial += out.contact[k] * pow(t, static_cast<int>(k));
   record.add({
       .id = "events.contact_polynomial",
       .statement = "|Δr + Δv t + ½ Δa t²|² − D² = c0 + c1 t + c2 t² + c3 t³ + c4 t⁴ with c0 = Δr·Δr − D², c1 = "
@@ -71,12 +68,31 @@ EventPolynomials event_times(Recorder& record) {
                    "vanishes; with Δr, Δv, Δa a ball's state less a fixed point c, and D = R + ρ or ρ, it is the "
                    "contact with a circle of radius ρ about c (a cushion's rounded jaw) or the centre's entry "
                    "into it (a pocket's capture circle).",
-      .method = "the squared distance expanded in t, each coefficient read off with coeff(); identity",
+      .method = "the squared distance expanded in t against the polynomial; identity",
       .comparison = Comparison::identity,
-      .paper_expression = typed_coefficients,
-      .derived_expression = derived_coefficients,
+      .paper_expression = typed_polynomial,
+      .derived_expression = contact,
       .depends_on = {"events.relative_motion"},
   });
+  // Each coefficient read off the squared distance: the kernels' claims.
+  const std::vector<std::pair<std::string, std::string>> terms = {
+      {"events.contact_constant_term", "c0 = Δr·Δr − D², the coefficient of t⁰."},
+      {"events.contact_linear_term", "c1 = 2 Δr·Δv, the coefficient of t."},
+      {"events.contact_quadratic_term", "c2 = Δv·Δv + Δr·Δa, the coefficient of t²."},
+      {"events.contact_cubic_term", "c3 = Δv·Δa, the coefficient of t³."},
+      {"events.contact_quartic_term", "c4 = ¼ Δa·Δa, the coefficient of t⁴."},
+  };
+  for (std::size_t k = 0; k < terms.size(); ++k) {
+    record.add({
+        .id = terms[k].first,
+        .statement = terms[k].second,
+        .method = "coeff() of the expanded squared distance; identity",
+        .comparison = Comparison::identity,
+        .paper_expression = out.contact[k],
+        .derived_expression = contact.coeff(t, static_cast<int>(k)),
+        .depends_on = {"events.contact_polynomial"},
+    });
+  }
   record.add({
       .id = "events.contact_degree",
       .statement = "The degree drops exactly where the motion says: c4 = ¼ |Δa|² vanishes iff Δa = 0 (equal "
@@ -114,27 +130,37 @@ EventPolynomials event_times(Recorder& record) {
   const Vec r0 = component_symbols("rc", "r", "", 2), v0 = component_symbols("vc", "v", "", 2),
             a0 = component_symbols("ac", "a", "", 2);
   const GiNaC::realsymbol line("line_offset", "d");
-  const ex cushion_gap = (dot(n, motion(r0, v0, a0)) - line - p.radius).expand();
   out.cushion = {p.gap - p.radius, p.normal_speed, p.normal_acceleration / 2};
-  const GiNaC::exmap along_normal{{p.gap, dot(n, r0) - line}, {p.normal_speed, dot(n, v0)},
-                                  {p.normal_acceleration, dot(n, a0)}};
-  lst cushion_derived, cushion_typed;
-  for (int k = 0; k <= 2; ++k) {
-    cushion_derived.append(cushion_gap.coeff(t, k));
-    cushion_typed.append(out.cushion[static_cast<std::size_t>(k)].subs(along_normal));
-  }
   record.add({
-      .id = "events.cushion_polynomial",
-      .statement = "A ball touches the straight cushion n·x = d (n the unit normal into the table) where s0 − R + "
-                   "v_n t + ½ a_n t² = 0, s0 = n·r0 − d its centre's distance from the line, v_n = n·v0, a_n = "
-                   "n·a: a quadratic, linear where a_n = 0. Its value at t = 0 is the gap, its slope v_n: the "
-                   "ball approaches iff v_n < 0.",
-      .method = "n·r(t) − d − R expanded in t, each coefficient read off with coeff(); identity",
+      .id = "events.cushion_motion",
+      .statement = "Along a straight cushion's unit normal n (into the table), the line n·x = d, a ball's centre "
+                   "is at n·r(t) − d = s0 + v_n t + ½ a_n t² from the line, s0 = n·r0 − d, v_n = n·v0, a_n = n·a.",
+      .method = "n·r(t) − d in components, expanded; identity",
       .comparison = Comparison::identity,
-      .paper_expression = cushion_typed,
-      .derived_expression = cushion_derived,
+      .paper_expression = (dot(n, r0) - line) + dot(n, v0) * t + dot(n, a0) * t * t / 2,
+      .derived_expression = (dot(n, motion(r0, v0, a0)) - line).expand(),
       .depends_on = {"sliding.position", "rolling.position"},
   });
+  const ex cushion_gap =
+      (p.gap + p.normal_speed * t + p.normal_acceleration * t * t / 2 - p.radius).expand();
+  const std::vector<std::pair<std::string, std::string>> cushion_terms = {
+      {"events.cushion_constant_term",
+       "The ball touches the cushion where s0 − R + v_n t + ½ a_n t² = 0, a quadratic (linear where a_n = 0): "
+       "its c0 = s0 − R is the gap at t = 0."},
+      {"events.cushion_linear_term", "Its c1 = v_n, its slope at t = 0: the ball approaches iff v_n < 0."},
+      {"events.cushion_quadratic_term", "Its c2 = ½ a_n."},
+  };
+  for (std::size_t k = 0; k < cushion_terms.size(); ++k) {
+    record.add({
+        .id = cushion_terms[k].first,
+        .statement = cushion_terms[k].second,
+        .method = "coeff() of s0 + v_n t + ½ a_n t² − R; identity",
+        .comparison = Comparison::identity,
+        .paper_expression = out.cushion[k],
+        .derived_expression = cushion_gap.coeff(t, static_cast<int>(k)),
+        .depends_on = {"events.cushion_motion"},
+    });
+  }
   return out;
 }
 

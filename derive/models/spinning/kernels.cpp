@@ -504,6 +504,87 @@ void phase_time_kernels(std::vector<Kernel>& kernels, const Cloth& cloth) {
   }
 }
 
+// The coefficients of the event polynomials (the section "Event times on the cloth"), one kernel each.
+// Each is a short sum of products; its bound is proven where the terms share a sign (the case below,
+// one binade or two of each input, which scales exactly with any common power of two of the lengths,
+// speeds and accelerations); where they cancel, as c0 does near a contact, its error is a few ε of the
+// terms' size instead.
+void event_kernels(std::vector<Kernel>& kernels) {
+  const EventSymbols& p = event_symbols();
+  const auto within = [](const ex& x, const ex& low, const ex& high) { return std::vector<ex>{low <= x, x <= high}; };
+  const auto box = [](std::vector<std::vector<ex>> ranges) {
+    std::vector<ex> all;
+    for (const std::vector<ex>& range : ranges) all.insert(all.end(), range.begin(), range.end());
+    return all;
+  };
+  const std::string contact = " of the contact polynomial |Δr + Δv t + ½ Δa t²|² − D² of two balls (Δ: ball 2 "
+                              "less ball 1, D = R1 + R2) or of a ball and a circle (Δ: the ball less the "
+                              "circle's centre, D = R + ρ or ρ)";
+  kernels.push_back({
+      .name = "contact_constant_term",
+      .brief = "c0 = Δr·Δr − D², the coefficient of t⁰" + contact + ": its sign is the gap's.",
+      .parameters = {p.dx, p.dy, p.distance},
+      .outputs = {p.dx * p.dx + p.dy * p.dy - p.distance * p.distance},
+      .equals = "events.contact_constant_term",
+      .claims = {"events.contact_now_and_approach"},
+      .rounding_cases = {box({within(p.dx, 4, 8), within(p.dy, 4, 8), within(p.distance, 1, 2)})},
+  });
+  kernels.push_back({
+      .name = "contact_linear_term",
+      .brief = "c1 = 2 Δr·Δv, the coefficient of t" + contact + ": negative iff the bodies approach.",
+      .parameters = {p.dx, p.dy, p.dvx, p.dvy},
+      .outputs = {2 * (p.dx * p.dvx + p.dy * p.dvy)},
+      .equals = "events.contact_linear_term",
+      .claims = {"events.contact_now_and_approach"},
+      .rounding_cases = {box({within(p.dx, 1, 2), within(p.dy, 1, 2), within(p.dvx, 1, 2), within(p.dvy, 1, 2)})},
+  });
+  kernels.push_back({
+      .name = "contact_quadratic_term",
+      .brief = "c2 = Δv·Δv + Δr·Δa, the coefficient of t²" + contact + ".",
+      .parameters = {p.dx, p.dy, p.dvx, p.dvy, p.dax, p.day},
+      .outputs = {p.dvx * p.dvx + p.dvy * p.dvy + p.dx * p.dax + p.dy * p.day},
+      .equals = "events.contact_quadratic_term",
+      .claims = {"events.contact_degree"},
+      .rounding_cases = {box({within(p.dx, 1, 2), within(p.dy, 1, 2), within(p.dvx, 1, 2), within(p.dvy, 1, 2),
+                              within(p.dax, 1, 2), within(p.day, 1, 2)})},
+  });
+  kernels.push_back({
+      .name = "contact_cubic_term",
+      .brief = "c3 = Δv·Δa, the coefficient of t³" + contact + ".",
+      .parameters = {p.dvx, p.dvy, p.dax, p.day},
+      .outputs = {p.dvx * p.dax + p.dvy * p.day},
+      .equals = "events.contact_cubic_term",
+      .claims = {"events.contact_degree"},
+      .rounding_cases = {box({within(p.dvx, 1, 2), within(p.dvy, 1, 2), within(p.dax, 1, 2), within(p.day, 1, 2)})},
+  });
+  kernels.push_back({
+      .name = "contact_quartic_term",
+      .brief = "c4 = ¼ Δa·Δa, the coefficient of t⁴" + contact + ": zero exactly where the accelerations are equal.",
+      .parameters = {p.dax, p.day},
+      .outputs = {(p.dax * p.dax + p.day * p.day) / 4},
+      .equals = "events.contact_quartic_term",
+      .claims = {"events.contact_degree"},
+      .rounding_cases = {box({within(p.dax, 1, 2), within(p.day, 1, 2)})},
+  });
+  kernels.push_back({
+      .name = "cushion_contact_constant_term",
+      .brief = "c0 = s0 − R of the cushion polynomial s0 − R + v_n t + ½ a_n t² (s0 the centre's distance from "
+               "the cushion's line, v_n and a_n along its normal into the table, c1 = v_n): the gap.",
+      .parameters = {p.gap, p.radius},
+      .outputs = {p.gap - p.radius},
+      .equals = "events.cushion_constant_term",
+      .rounding_cases = {box({within(p.gap, 4, 8), within(p.radius, 1, 2)})},
+  });
+  kernels.push_back({
+      .name = "cushion_contact_quadratic_term",
+      .brief = "c2 = ½ a_n of the cushion polynomial s0 − R + v_n t + ½ a_n t².",
+      .parameters = {p.normal_acceleration},
+      .outputs = {p.normal_acceleration / 2},
+      .equals = "events.cushion_quadratic_term",
+      .rounding_cases = {box({within(p.normal_acceleration, 1, 2)})},
+  });
+}
+
 }  // namespace
 
 std::vector<Kernel> spin_kernels(const Cloth& cloth) {
@@ -512,6 +593,7 @@ std::vector<Kernel> spin_kernels(const Cloth& cloth) {
   tangential_velocity_kernels(kernels);
   spin_change_kernels(kernels);
   phase_time_kernels(kernels, cloth);
+  event_kernels(kernels);
   return kernels;
 }
 
