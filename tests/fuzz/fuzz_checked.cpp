@@ -1,6 +1,6 @@
 // libFuzzer harness for the checked API: every checked call (collide with and without restitution,
 // collide_along_direction, collide_if_approaching, reflect, time_of_impact; collide_with_friction,
-// motion, transition_time and evolve on the cloth). Arbitrary bytes are
+// motion, transition_time and evolve on the cloth; earliest_contact). Arbitrary bytes are
 // shaped into arguments so that most inputs are valid (masses over the whole range, finite velocities,
 // unit normals, restitution in [0, 1], lengths and speeds scaled by powers of two over the type's
 // exponent range for time_of_impact) and a few are not (NaN, infinities, zero or negative masses,
@@ -15,8 +15,10 @@
 
 #include <billiards/checked.hpp>
 #include <billiards/cloth.hpp>
+#include <billiards/events.hpp>
 #include <billiards/spin.hpp>
 
+#include <array>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -24,6 +26,7 @@
 #include <cstdlib>
 #include <limits>
 #include <map>
+#include <optional>
 #include <string>
 
 namespace {
@@ -412,11 +415,80 @@ void exercise_cloth(Shaper& shape) {
   }
 }
 
+// earliest_contact on polynomials of degree up to 4 with coefficients of any sign over 2^±32 and the
+// edge values, held in long double: the time within [0, horizon]; t = 0 only for bodies that touch and
+// approach; no overlap beyond rounding at the time reported; and no clear entry into overlap before it
+// (or anywhere, when none is reported) on a grid of 256 points. "Beyond rounding" is beyond 16 ε Σ |c_k| t^k
+// and, at the time reported, the change of p over one spacing of the type's numbers there.
+template <typename Scalar>
+void exercise_events(Shaper& shape) {
+  std::array<Scalar, 5> c{};
+  const int degree = shape.byte() % 5;
+  for (int k = 0; k <= degree; ++k) c[static_cast<std::size_t>(k)] = shape.byte() % 4 == 0 ? Scalar(0) : shape.component<Scalar>();
+  const Scalar horizon = shape.special_or(std::fabs(shape.component<Scalar>()));
+  ++all_inputs;
+  try {
+    const std::optional<Scalar> found = billiards::checked::earliest_contact(c, horizon);
+    using Long = long double;
+    const auto value = [&](Long t) {
+      Long r = 0;
+      for (int k = 4; k >= 0; --k) r = r * t + Long(c[static_cast<std::size_t>(k)]);
+      return r;
+    };
+    const auto rounding = [&](Long t) {
+      Long r = 0;
+      for (int k = 4; k >= 0; --k) r = r * t + std::fabs(Long(c[static_cast<std::size_t>(k)]));
+      return 16 * Long(std::numeric_limits<Scalar>::epsilon()) * r + 16 * Long(std::numeric_limits<Scalar>::denorm_min());
+    };
+    // The time itself is a Scalar: the contact may lie between two of them, a spacing apart, over which
+    // p changes by up to |p'| times it.
+    const auto steepness = [&](Long t) {
+      Long r = 0;
+      for (int k = 4; k >= 1; --k) r = r * t + k * std::fabs(Long(c[static_cast<std::size_t>(k)]));
+      return r;
+    };
+    const auto spacing = [](Scalar t) {
+      return Long(std::max(std::numeric_limits<Scalar>::denorm_min(), std::numeric_limits<Scalar>::epsilon() * t));
+    };
+    const auto fail = [&](const char* broken) {
+      std::fprintf(stderr, "  c = (%a, %a, %a, %a, %a), horizon = %a, found = %a\n", double(c[0]), double(c[1]),
+                   double(c[2]), double(c[3]), double(c[4]), double(horizon), found ? double(*found) : -1.0);
+      fail_spin<Scalar>("earliest_contact", broken);
+    };
+    if (found) {
+      const Scalar t = *found;
+      if (!(t >= 0 && t <= horizon)) fail("a time outside [0, horizon]");
+      if (t == 0) {
+        int first = 1;
+        while (first <= 4 && c[static_cast<std::size_t>(first)] == 0) ++first;
+        if (!(c[0] <= 0 && first <= 4 && c[static_cast<std::size_t>(first)] < 0))
+          fail("a contact at t = 0 for bodies apart or not approaching");
+      } else if (value(t) < -rounding(t) - steepness(t) * spacing(t)) {
+        fail("a time at which the bodies overlap beyond rounding");
+      }
+    }
+    // A clear entry: apart beyond rounding at one grid point, overlapping beyond it at a later one.
+    const Long end = found ? Long(*found) : Long(horizon);
+    bool apart = c[0] > 0 && Long(c[0]) > rounding(0);
+    for (int i = 1; i <= 256 && end > 0; ++i) {
+      const Long s = end * i / 256;
+      if (found && i == 256) break;  // the reported time itself
+      const Long v = value(s);
+      if (v > rounding(s)) apart = true;
+      if (apart && v < -rounding(s))
+        fail("an entry into overlap before the time reported (a missed contact)");
+    }
+    ++accepted_inputs;
+  } catch (const billiards::invalid_argument& error) {
+    ++rejected_by_argument[error.argument()];
+  }
+}
+
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   Shaper shape(data, size);
-  switch (shape.byte() % 8) {
+  switch (shape.byte() % 10) {
     case 0: exercise<Eigen::Vector3d>(shape); break;
     case 1: exercise<Eigen::Vector2d>(shape); break;
     case 2: exercise<Eigen::Vector3f>(shape); break;
@@ -424,7 +496,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     case 4: exercise_spin<double>(shape); break;
     case 5: exercise_spin<float>(shape); break;
     case 6: exercise_cloth<double>(shape); break;
-    default: exercise_cloth<float>(shape); break;
+    case 7: exercise_cloth<float>(shape); break;
+    case 8: exercise_events<double>(shape); break;
+    default: exercise_events<float>(shape); break;
   }
   return 0;
 }

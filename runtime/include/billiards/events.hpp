@@ -1,0 +1,276 @@
+// Event times on the cloth (the spinning-ball model's audit, section "Event times on the cloth"): the
+// polynomials in t whose roots are contacts while each ball moves as r0 + v0 t + ½ a t², built from the
+// generated kernels of billiards/spin_kernels.hpp, and the earliest contact they hold.
+#pragma once
+
+#include <billiards/checked.hpp>
+#include <billiards/spin_kernels.hpp>
+
+#include <Eigen/Core>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <limits>
+#include <optional>
+
+namespace billiards {
+
+/// The contact polynomial c[0] + c[1] t + c[2] t² + c[3] t³ + c[4] t⁴ = |Δr + Δv t + ½ Δa t²|² − D² of
+/// two balls (Δ: ball 2 less ball 1, D = R1 + R2), or of a ball and a circle (Δ: the ball less the
+/// circle's centre; D = R + ρ for a rounded jaw of radius ρ, D = ρ for a pocket's capture circle that the
+/// centre enters). Negative where they overlap, zero where they touch. Each coefficient is a generated
+/// kernel (`events.contact_*_term`).
+template <typename Scalar>
+[[nodiscard]] std::array<Scalar, 5> contact_polynomial(const Eigen::Matrix<Scalar, 2, 1>& dr,
+                                                       const Eigen::Matrix<Scalar, 2, 1>& dv,
+                                                       const Eigen::Matrix<Scalar, 2, 1>& da,
+                                                       Scalar distance) noexcept {
+  namespace k = kernels::spin;
+  return {k::contact_constant_term(dr.x(), dr.y(), distance), k::contact_linear_term(dr.x(), dr.y(), dv.x(), dv.y()),
+          k::contact_quadratic_term(dr.x(), dr.y(), dv.x(), dv.y(), da.x(), da.y()),
+          k::contact_cubic_term(dv.x(), dv.y(), da.x(), da.y()), k::contact_quartic_term(da.x(), da.y())};
+}
+
+/// The cushion polynomial c[0] + c[1] t + c[2] t² = s0 − R + v_n t + ½ a_n t² of a ball and a straight
+/// cushion: `gap` s0 the distance of the ball's centre from the cushion's line (positive on the table's
+/// side), `normal_speed` v_n and `normal_acceleration` a_n along the cushion's unit normal into the table.
+/// Zero where the ball touches the cushion (`events.cushion_*_term`).
+template <typename Scalar>
+[[nodiscard]] std::array<Scalar, 3> cushion_polynomial(Scalar gap, Scalar normal_speed, Scalar normal_acceleration,
+                                                       Scalar radius) noexcept {
+  namespace k = kernels::spin;
+  return {k::cushion_contact_constant_term(gap, radius), normal_speed,
+          k::cushion_contact_quadratic_term(normal_acceleration)};
+}
+
+namespace detail {
+
+/// A polynomial of degree at most 4 as the root finder holds it: coefficients by power, and its degree
+/// (the highest power whose coefficient is not zero; −1 for the zero polynomial).
+template <typename Scalar>
+struct EventPolynomial {
+  std::array<Scalar, 5> c{};
+  int degree = -1;
+};
+
+template <typename Scalar>
+[[nodiscard]] EventPolynomial<Scalar> trimmed(EventPolynomial<Scalar> p) noexcept {
+  while (p.degree >= 0 && p.c[static_cast<std::size_t>(p.degree)] == 0) --p.degree;
+  return p;
+}
+
+/// p'(t) up to a positive factor, which changes neither its roots nor its signs: coefficients k c_k,
+/// exact, or (k/d) c_k where a k c_k would overflow (d the degree).
+template <typename Scalar>
+[[nodiscard]] EventPolynomial<Scalar> derivative(const EventPolynomial<Scalar>& p) noexcept {
+  EventPolynomial<Scalar> d;
+  bool large = false;
+  for (int k = 1; k <= p.degree; ++k)
+    large = large || std::fabs(p.c[static_cast<std::size_t>(k)]) > std::numeric_limits<Scalar>::max() / Scalar(2 * p.degree);
+  for (int k = 1; k <= p.degree; ++k) {
+    const Scalar factor = large ? Scalar(k) / Scalar(p.degree) : Scalar(k);
+    d.c[static_cast<std::size_t>(k - 1)] = factor * p.c[static_cast<std::size_t>(k)];
+  }
+  d.degree = p.degree - 1;
+  return trimmed(d);
+}
+
+/// p(t) by Horner's rule: for finite coefficients and a finite t ≥ 0 never NaN (an overflow gives the
+/// sign of the terms that overflowed).
+template <typename Scalar>
+[[nodiscard]] Scalar evaluate(const EventPolynomial<Scalar>& p, Scalar t) noexcept {
+  if (p.degree < 0) return Scalar(0);
+  Scalar r = p.c[static_cast<std::size_t>(p.degree)];
+  for (int k = p.degree - 1; k >= 0; --k) r = r * t + p.c[static_cast<std::size_t>(k)];
+  return r;
+}
+
+/// A bound on the rounding error of evaluate(p, t): 2 d ε Σ |c_k| t^k (Horner's running error bound,
+/// γ_2d ≤ 2 d ε for d ≤ 4), plus 2 d times the smallest subnormal for the products that underflow.
+template <typename Scalar>
+[[nodiscard]] Scalar evaluation_error(const EventPolynomial<Scalar>& p, Scalar t) noexcept {
+  if (p.degree < 1) return Scalar(0);
+  Scalar r = std::fabs(p.c[static_cast<std::size_t>(p.degree)]);
+  for (int k = p.degree - 1; k >= 0; --k) r = r * t + std::fabs(p.c[static_cast<std::size_t>(k)]);
+  return Scalar(2 * p.degree) *
+         (std::numeric_limits<Scalar>::epsilon() * r + std::numeric_limits<Scalar>::denorm_min());
+}
+
+/// A point strictly inside (a, b) for bisection: the midpoint, or the geometric mean where b/a > 8 and
+/// b·2⁻³² where a = 0, so that a root many decades below b is reached in few steps. Returns a or b once
+/// the interval cannot be split.
+template <typename Scalar>
+[[nodiscard]] Scalar split(Scalar a, Scalar b) noexcept {
+  if (a == 0) {
+    const Scalar low = b * Scalar(0x1p-32);
+    return low > 0 ? low : b / 2;
+  }
+  if (b > 8 * a) return std::sqrt(a) * std::sqrt(b);
+  return a + (b - a) / 2;
+}
+
+/// The point of (a, b] where p changes sign, given that sign(p(a)) = `before` (±1) and p(b) has the
+/// other sign or is 0, p monotone on [a, b]. Newton's steps where they stay inside the bracket and
+/// shrink it fast, bisection otherwise; returns the bracket's left end once it cannot shrink further, so
+/// that p at the result still has the sign `before` (or the point where p is exactly 0).
+template <typename Scalar>
+[[nodiscard]] Scalar sign_change(const EventPolynomial<Scalar>& p, const EventPolynomial<Scalar>& slope, Scalar a,
+                                 Scalar b, int before) noexcept {
+  Scalar x = split(a, b);
+  Scalar previous_width = b - a;
+  for (int step = 0; step < 300; ++step) {
+    if (!(x > a && x < b)) break;
+    const Scalar value = evaluate(p, x);
+    if (value == 0) return x;
+    if ((value > 0) == (before > 0)) {
+      a = x;
+    } else {
+      b = x;
+    }
+    const Scalar width = b - a;
+    if (!(width > 2 * std::numeric_limits<Scalar>::epsilon() * b)) break;
+    const Scalar gradient = evaluate(slope, x);
+    const Scalar newton = gradient != 0 ? x - value / gradient : x;
+    // Newton's step once the bracket spans less than a factor of 8 (before that the geometric split
+    // closes in on a root many decades below b faster), where it lands inside and the bracket halved at
+    // least in the last step.
+    if (a > 0 && b <= 8 * a && newton > a && newton < b && width <= previous_width / 2) {
+      x = newton;
+    } else {
+      x = split(a, b);
+    }
+    previous_width = width;
+  }
+  return a;
+}
+
+/// The points of (lo, hi) where p changes sign, in increasing order, written to `out` (at most
+/// p.degree of them); returns how many. p is split into monotone pieces at the sign changes of p'
+/// (found the same way, down to a linear p'), and each piece holds at most one.
+template <typename Scalar>
+int sign_changes(const EventPolynomial<Scalar>& p, Scalar lo, Scalar hi, Scalar* out) noexcept {
+  if (p.degree < 1) return 0;
+  if (p.degree == 1) {
+    const Scalar root = -p.c[0] / p.c[1];
+    if (root > lo && root < hi) {
+      out[0] = root;
+      return 1;
+    }
+    return 0;
+  }
+  const EventPolynomial<Scalar> slope = derivative(p);
+  std::array<Scalar, 6> breaks{};
+  breaks[0] = lo;
+  const int turns = sign_changes(slope, lo, hi, breaks.data() + 1);
+  breaks[static_cast<std::size_t>(turns + 1)] = hi;
+  int found = 0;
+  Scalar left = evaluate(p, lo);
+  for (int i = 0; i <= turns; ++i) {
+    const Scalar a = breaks[static_cast<std::size_t>(i)], b = breaks[static_cast<std::size_t>(i + 1)];
+    const Scalar right = evaluate(p, b);
+    if (left != 0 && right != 0 && (left > 0) != (right > 0)) out[found++] = sign_change(p, slope, a, b, left > 0 ? 1 : -1);
+    left = right;
+  }
+  return found;
+}
+
+}  // namespace detail
+
+/// The earliest time t in [0, horizon] at which the bodies whose contact polynomial is `c` (c[k] the
+/// coefficient of t^k: contact_polynomial, cushion_polynomial, or any polynomial of degree at most 4
+/// that is negative where they overlap) come into contact while approaching; empty when they do not.
+///
+/// - At t = 0 a contact is reported only where the bodies touch or overlap (c[0] ≤ 0) and approach: the
+///   first of c[1], c[2], … that is not zero is negative. Bodies that touch while separating, or at exact
+///   tangency (c[0] = c[1] = 0, c[2] > 0), have none there.
+/// - Later, a contact is the first t where the polynomial reaches 0 from above: a simple root where it
+///   decreases, or a graze, a local minimum whose value is within the rounding error of evaluating it
+///   (2 d ε Σ |c_k| t^k, detail::evaluation_error) — so that no graze that exact arithmetic would find is missed, at the price of
+///   reporting as contacts the misses closer than rounding can tell. The time returned is where the
+///   polynomial is still ≥ 0 as evaluated: never after the bodies start to overlap.
+/// - The polynomial's degree is what its coefficients make it: a zero leading coefficient lowers it, and
+///   nothing divides by one.
+///
+/// Expects finite coefficients and a finite horizon ≥ 0 (billiards::checked::earliest_contact checks
+/// them). Never throws; always ends, in at most a few hundred evaluations.
+template <typename Scalar, std::size_t N>
+[[nodiscard]] std::optional<Scalar> earliest_contact(const std::array<Scalar, N>& c, Scalar horizon) noexcept {
+  static_assert(N >= 1 && N <= 5, "earliest_contact: a polynomial of degree at most 4");
+  static_assert(std::is_floating_point_v<Scalar>, "earliest_contact: float or double coefficients");
+  detail::EventPolynomial<Scalar> p;
+  for (std::size_t k = 0; k < N; ++k) p.c[k] = c[k];
+  p.degree = static_cast<int>(N) - 1;
+  p = detail::trimmed(p);
+  if (p.degree < 1) return std::nullopt;  // a constant: nothing changes
+  // Touching or overlapping now: a contact iff the first non-zero change is an approach.
+  if (p.c[0] <= 0) {
+    for (int k = 1; k <= p.degree; ++k) {
+      if (p.c[static_cast<std::size_t>(k)] != 0) {
+        if (p.c[static_cast<std::size_t>(k)] < 0) return Scalar(0);
+        break;
+      }
+    }
+  } else {
+    // No contact where the polynomial stays above its rounding on all of [0, horizon]: c0 less every
+    // negative term at the horizon.
+    Scalar lowest = p.c[0], size = std::fabs(p.c[0]), power = 1;
+    for (int k = 1; k <= p.degree; ++k) {
+      power *= horizon;
+      const Scalar term = p.c[static_cast<std::size_t>(k)] * power;
+      if (term < 0) lowest += term;
+      size += std::fabs(term);
+    }
+    if (lowest > Scalar(4 * p.degree + 4) * std::numeric_limits<Scalar>::epsilon() * size) return std::nullopt;
+  }
+  if (!(horizon > 0)) return std::nullopt;
+  // The turning points of p in (0, horizon) split it into monotone pieces; walk them in order.
+  const detail::EventPolynomial<Scalar> slope = detail::derivative(p);
+  std::array<Scalar, 6> breaks{};
+  breaks[0] = 0;
+  const int turns = detail::sign_changes(slope, Scalar(0), horizon, breaks.data() + 1);
+  breaks[static_cast<std::size_t>(turns + 1)] = horizon;
+  Scalar left = p.c[0];
+  for (int i = 0; i <= turns; ++i) {
+    const Scalar a = breaks[static_cast<std::size_t>(i)], b = breaks[static_cast<std::size_t>(i + 1)];
+    const Scalar right = detail::evaluate(p, b);
+    if (left > 0 && right <= 0) {
+      const Scalar t = detail::sign_change(p, slope, a, b, 1);
+      // Not t = 0 where the bodies are apart at 0: the root lies below the smallest step of the type.
+      return t > 0 ? t : std::numeric_limits<Scalar>::denorm_min();
+    }
+    if (i < turns) {
+      const Scalar rounding = detail::evaluation_error(p, b);
+      // A graze: a local minimum (p falls into b and rises after it) within rounding of 0.
+      if (left > right && right > 0 && right <= rounding) return b;
+      // Overlapping bodies that part by less than rounding can tell and close again: a local maximum
+      // within rounding of 0, after which p falls.
+      if (left <= 0 && left < right && right <= 0 && right >= -rounding) return b;
+    }
+    left = right;
+  }
+  return std::nullopt;
+}
+
+namespace checked {
+
+/// billiards::earliest_contact with its arguments validated: every coefficient finite, the horizon
+/// finite and ≥ 0. Throws billiards::invalid_argument naming the argument ("c[2]", "horizon").
+template <typename Scalar, std::size_t N>
+[[nodiscard]] std::optional<Scalar> earliest_contact(const std::array<Scalar, N>& c, Scalar horizon) {
+  constexpr const char* function = "billiards::checked::earliest_contact";
+  for (std::size_t k = 0; k < N; ++k) {
+    if (!std::isfinite(c[k])) {
+      throw invalid_argument(function, "c[" + std::to_string(k) + "]", detail::to_text(c[k]),
+                             "a finite coefficient");
+    }
+  }
+  if (!(horizon >= 0) || !std::isfinite(horizon))
+    throw invalid_argument(function, "horizon", detail::to_text(horizon), "a time >= 0, finite");
+  return billiards::earliest_contact(c, horizon);
+}
+
+}  // namespace checked
+
+}  // namespace billiards
