@@ -21,7 +21,7 @@ namespace billiards {
 /// two balls (Δ: ball 2 less ball 1, D = R1 + R2), or of a ball and a circle (Δ: the ball less the
 /// circle's centre; D = R + ρ for a rounded jaw of radius ρ, D = ρ for a pocket's capture circle that the
 /// centre enters). Negative where they overlap, zero where they touch. Each coefficient is a generated
-/// kernel (`events.contact_*_term`).
+/// kernel (`events.contact_constant_term` … `events.contact_quartic_term`).
 template <typename Scalar>
 [[nodiscard]] std::array<Scalar, 5> contact_polynomial(const Eigen::Matrix<Scalar, 2, 1>& dr,
                                                        const Eigen::Matrix<Scalar, 2, 1>& dv,
@@ -36,7 +36,8 @@ template <typename Scalar>
 /// The cushion polynomial c[0] + c[1] t + c[2] t² = s0 − R + v_n t + ½ a_n t² of a ball and a straight
 /// cushion: `gap` s0 the distance of the ball's centre from the cushion's line (positive on the table's
 /// side), `normal_speed` v_n and `normal_acceleration` a_n along the cushion's unit normal into the table.
-/// Zero where the ball touches the cushion (`events.cushion_*_term`).
+/// Zero where the ball touches the cushion (`events.cushion_constant_term`, `events.cushion_linear_term`,
+/// `events.cushion_quadratic_term`).
 template <typename Scalar>
 [[nodiscard]] std::array<Scalar, 3> cushion_polynomial(Scalar gap, Scalar normal_speed, Scalar normal_acceleration,
                                                        Scalar radius) noexcept {
