@@ -22,6 +22,7 @@ PAGES = {
     "generated/shot/AUDIT.md": "audit/shot.html",
     "generated/billiards/kernels.hpp": "namespacebilliards_1_1kernels.html",
     "generated/billiards/spin_kernels.hpp": "namespacebilliards_1_1kernels_1_1spin.html",
+    "generated/billiards/shot_kernels.hpp": "namespacebilliards_1_1kernels_1_1shot.html",
     "bench/RESULTS.md": "results.html",
     "CHANGELOG.md": "changelog.html",
     "examples/README.md": "examples_page.html",

@@ -182,14 +182,14 @@ bool needs_runtime_math(const Kernel& kernel) {
 }
 
 // A function signature as clang-format lays it out in the project's style: on one line when it fits,
-// else on two or three lines aligned under the "(", else broken after the "(" with the parameters on a line
+// else on two to four lines aligned under the "(", else broken after the "(" with the parameters on a line
 // of their own, indented by 4, or on as many such lines as they fill.
 std::string signature(const std::string& head, const std::vector<std::string>& parameters,
                       const std::string& tail) {
   std::string list;
   for (const std::string& parameter : parameters) list += (list.empty() ? "" : ", ") + parameter;
   if (head.size() + list.size() + tail.size() <= column_limit) return head + list + tail;
-  // Aligned under the "(" when that takes two or three lines, as clang-format prefers it then.
+  // Aligned under the "(" when that takes two to four lines, as clang-format prefers it then.
   const std::string aligned = wrapped_list(head, parameters, tail);
   const std::size_t line_break = aligned.find('\n');
   std::size_t lines = 0, longest = 0;
@@ -198,7 +198,7 @@ std::string signature(const std::string& head, const std::vector<std::string>& p
     longest = std::max(longest, end - start);
     start = end + 1;
   }
-  if (line_break != std::string::npos && lines <= 3 && longest <= column_limit) return aligned;
+  if (line_break != std::string::npos && lines <= 4 && longest <= column_limit) return aligned;
   if (4 + list.size() + tail.size() <= column_limit) return head + "\n    " + list + tail;
   // Else broken after the "(", the parameters filling lines of their own, indented by 4.
   return head + "\n    " + wrapped_terms(4, "", parameters, ",", "    ", tail);

@@ -28,9 +28,11 @@
 #include "core/named_constants.hpp"
 #include "exact.hpp"
 #include "models/parkin2023/paper.hpp"
+#include "models/shot/shot.hpp"
 #include "models/spinning/spinning.hpp"
 
 #include <billiards/kernel_list.hpp>
+#include <billiards/shot_kernel_list.hpp>
 #include <billiards/spin_kernel_list.hpp>
 
 #include <CLI/CLI.hpp>
@@ -477,7 +479,10 @@ class SpinInputGenerator {
     // The event polynomials' coefficients are measured where their bound is proven: inside their case
     // (every term of one sign), scaled by one power of two common to every input, which their terms
     // follow exactly; where the terms cancel their relative error has no bound.
-    if (kernel.name.find("contact_") != std::string::npos) return in_scaled_case(kernel);
+    if (kernel.name.find("contact_") != std::string::npos) return in_scaled_case(kernel, true);
+    // The strike's kernels mix lengths with ratios (offsets in units of R, restitution): measured over the
+    // case they are proven over, unscaled.
+    if (kernel.name.rfind("strike_", 0) == 0) return in_scaled_case(kernel, false);
     // A fast path's plain form is measured inside its domain only: the moderate range (every input) or
     // the plain mass range (the masses; checked, so that a new domain is not silently ignored).
     const bool moderate = std::any_of(kernel.domain.begin(), kernel.domain.end(), [](const ex& condition) {
@@ -542,9 +547,9 @@ class SpinInputGenerator {
   }
 
   // Each parameter uniform within its bounds in the kernel's first rounding case (relationals low <= x
-  // and x <= high with numeric bounds), all times one 2^k, k drawn so that squares and products of the
-  // scaled inputs stay normal numbers.
-  Inputs<Scalar> in_scaled_case(const billiards::derive::Kernel& kernel) {
+  // and x <= high with numeric bounds), where `scaled`, all times one 2^k, k drawn so that squares and
+  // products of the scaled inputs stay normal numbers.
+  Inputs<Scalar> in_scaled_case(const billiards::derive::Kernel& kernel, bool scaled) {
     if (kernel.rounding_cases.empty()) throw std::logic_error("kernel " + kernel.name + ": no rounding case");
     std::map<std::string, std::pair<double, double>> bounds;
     for (const ex& relation : kernel.rounding_cases.front()) {
@@ -557,7 +562,7 @@ class SpinInputGenerator {
         throw std::logic_error("kernel " + kernel.name + ": a case bound other than a number");
     }
     const int reach = std::numeric_limits<Scalar>::max_exponent / 2 - 8;
-    const int exponent = static_cast<int>(std::floor((2 * unit_(random_) - 1) * reach));
+    const int exponent = scaled ? static_cast<int>(std::floor((2 * unit_(random_) - 1) * reach)) : 0;
     Inputs<Scalar> in;
     for (const ex& parameter : kernel.parameters) {
       const std::string name = GiNaC::ex_to<GiNaC::symbol>(parameter).get_name();
@@ -573,16 +578,20 @@ class SpinInputGenerator {
   std::uniform_real_distribution<double> unit_{0.0, 1.0};
 };
 
+// A spinning-ball kernel (prefix "spin::") or a shot kernel ("shot::"), called through its model's list.
 template <typename Scalar>
-Row measure_spin(const billiards::derive::Kernel& kernel, const char* type, long samples) {
+Row measure_spin(const billiards::derive::Kernel& kernel, const char* type, long samples,
+                 const std::string& prefix = "spin::") {
   Row row;
-  row.kernel = "spin::" + kernel.name;
+  row.kernel = prefix + kernel.name;
   row.type = type;
   SpinInputGenerator<Scalar> generate(0x5B1A5ULL + kernel.name.size());
   for (long sample = 0; sample < samples; ++sample) {
     const Inputs<Scalar> in = generate(kernel, static_cast<int>(sample));
-    const std::vector<Scalar> computed = billiards::kernels::spin::list::call<Scalar>(
-        kernel.name, [&](const char* key) { return in.at(key); });
+    const auto at = [&](const char* key) { return in.at(key); };
+    const std::vector<Scalar> computed = prefix == "shot::"
+                                             ? billiards::kernels::shot::list::call<Scalar>(kernel.name, at)
+                                             : billiards::kernels::spin::list::call<Scalar>(kernel.name, at);
     bool normal = false;
     const std::vector<Exact> exact = exact_outputs(kernel, in, &normal);
     for (std::size_t i = 0; i < computed.size(); ++i) {
@@ -665,6 +674,10 @@ int main(int argc, char** argv) {
   for (const billiards::derive::Kernel& kernel : billiards::derive::spinning::derive().kernels) {
     rows.push_back(measure_spin<float>(kernel, "float", samples));
     rows.push_back(measure_spin<double>(kernel, "double", samples));
+  }
+  for (const billiards::derive::Kernel& kernel : billiards::derive::shot::derive().kernels) {
+    rows.push_back(measure_spin<float>(kernel, "float", samples, "shot::"));
+    rows.push_back(measure_spin<double>(kernel, "double", samples, "shot::"));
   }
   // The benchmark's reference kernel (finite masses only) for comparison, not held to the limit.
   for (const billiards::derive::Kernel& kernel : derivation.reference_kernels) {

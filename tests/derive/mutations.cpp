@@ -296,6 +296,13 @@ namespace billiards::derive::testing {
 const std::vector<Mutation>& shot_mutations() {
   const shot::Symbols& s = shot::symbols();
   static const std::vector<Mutation> mutations = {
+      // The strike's kernels: the cue's mass ratio inverted, and the spin's 5/2 as 5/7.
+      {"strike_velocity_change_mass_ratio_inverted", "strike_velocity_change",
+       [](Kernel& k) { step(k, "mass_ratio").expression = symbol(k, "cue_mass") / symbol(k, "ball_mass"); }},
+      {"strike_spin_five_sevenths", "strike_spin",
+       [](Kernel& k) {
+         step(k, "spin_factor").expression = GiNaC::numeric(5, 7) * symbol(k, "velocity_change") / symbol(k, "radius");
+       }},
       // The cue's mass where the ball's belongs (an impulse of 2 M V over the denominator, not 2 m V).
       claim_retyped("shot_speed_cue_mass_for_ball_mass", "strike.speed",
                     [&s](const GiNaC::ex& typed) { return typed * s.M / s.m; }),

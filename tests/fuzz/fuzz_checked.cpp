@@ -1,6 +1,6 @@
 // libFuzzer harness for the checked API: every checked call (collide with and without restitution,
 // collide_along_direction, collide_if_approaching, reflect, time_of_impact; collide_with_friction,
-// motion, transition_time and evolve on the cloth; earliest_contact). Arbitrary bytes are
+// motion, transition_time and evolve on the cloth; earliest_contact; strike). Arbitrary bytes are
 // shaped into arguments so that most inputs are valid (masses over the whole range, finite velocities,
 // unit normals, restitution in [0, 1], lengths and speeds scaled by powers of two over the type's
 // exponent range for time_of_impact) and a few are not (NaN, infinities, zero or negative masses,
@@ -16,6 +16,7 @@
 #include <billiards/checked.hpp>
 #include <billiards/cloth.hpp>
 #include <billiards/events.hpp>
+#include <billiards/shot.hpp>
 #include <billiards/spin.hpp>
 
 #include <array>
@@ -415,6 +416,63 @@ void exercise_cloth(Shaper& shape) {
   }
 }
 
+// strike: the ball in any state, the cue with any of its fields now and then invalid; held to the
+// impulse equations solved in long double (J from the tip's restitution along d), each component within
+// 64 ε of the speeds involved (the spin's over R), plus 64 times the smallest normal number where a
+// component falls below the normal range.
+template <typename Scalar>
+void exercise_strike(Shaper& shape) {
+  using V = Eigen::Matrix<Scalar, 3, 1>;
+  using Long = long double;
+  using L3 = Eigen::Matrix<Long, 3, 1>;
+  const Scalar radius = shape.moderate<Scalar>(), mass = shape.moderate<Scalar>();
+  const billiards::SpinningBall<Scalar> ball{shape.vector<V>(), shape.vector<V>(), mass, radius};
+  const auto offset = [&] { return shape.special_or(Scalar(int(shape.byte()) - 128) / Scalar(181)); };
+  const billiards::Cue<Scalar> cue{shape.moderate<Scalar>(), shape.special_or(std::fabs(shape.component<Scalar>())),
+                                   shape.special_or(Scalar(shape.byte()) / Scalar(40)),
+                                   shape.special_or(Scalar(shape.byte()) / Scalar(170)), offset(), offset(),
+                                   shape.special_or(Scalar(shape.byte()) / Scalar(255))};
+  ++all_inputs;
+  try {
+    const billiards::SpinningBall<Scalar> struck = billiards::checked::strike(ball, cue);
+    const Long phi = cue.azimuth, theta = cue.elevation, a = cue.side_offset, b = cue.up_offset;
+    const L3 d(std::cos(theta) * std::cos(phi), std::cos(theta) * std::sin(phi), -std::sin(theta));
+    const L3 s(std::sin(phi), -std::cos(phi), 0), u = s.cross(d);
+    const Long m = mass, R = radius, M = cue.mass, inertia = Long(2) / 5 * m * R * R;
+    const L3 r = R * (a * s + b * u - std::sqrt(std::max(Long(0), 1 - a * a - b * b)) * d);
+    const L3 v = ball.velocity.template cast<Long>(), w = ball.angular_velocity.template cast<Long>();
+    const Long approach = Long(cue.speed) - (v + w.cross(r)).dot(d);
+    L3 v_after = v, w_after = w;
+    Long J = 0;
+    if (approach > 0) {
+      J = (1 + Long(cue.tip_restitution)) * approach / (1 / m + 1 / M + r.cross(d).squaredNorm() / inertia);
+      v_after = v + J / m * d;
+      w_after = w + r.cross(J * d) / inertia;
+    }
+    const Long speeds = Long(cue.speed) + v.norm() + R * w.norm() + (v_after - v).norm();
+    const Long bound = 64 * Long(std::numeric_limits<Scalar>::epsilon()) * speeds + 64 * Long(std::numeric_limits<Scalar>::min());
+    const char* broken = nullptr;
+    if (!struck.velocity.allFinite() || !struck.angular_velocity.allFinite()) broken = "a state that is not finite";
+    else if (!((struck.velocity.template cast<Long>() - v_after).norm() <= bound))
+      broken = "a velocity farther from the impulse equations than rounding allows";
+    // The spin's own underflow: its components are rounded below the normal range on their own scale.
+    else if (!((struck.angular_velocity.template cast<Long>() - w_after).norm() <=
+               bound / R + 64 * Long(std::numeric_limits<Scalar>::min())))
+      broken = "a spin farther from the impulse equations than rounding allows";
+    if (broken) {
+      std::fprintf(stderr, "  cue = (M %a, V %a, phi %a, theta %a, a %a, b %a, e %a)\n", double(cue.mass),
+                   double(cue.speed), double(cue.azimuth), double(cue.elevation), double(cue.side_offset),
+                   double(cue.up_offset), double(cue.tip_restitution));
+      print_ball("ball", ball.velocity, ball.angular_velocity, radius);
+      print_ball("struck", struck.velocity, struck.angular_velocity, radius);
+      fail_spin<Scalar>("strike", broken);
+    }
+    ++accepted_inputs;
+  } catch (const billiards::invalid_argument& error) {
+    ++rejected_by_argument[error.argument()];
+  }
+}
+
 // earliest_contact on polynomials of degree up to 4 with coefficients of any sign over 2^±32 and the
 // edge values, held in long double: the time within [0, horizon]; t = 0 only for bodies that touch and
 // approach; no overlap beyond rounding at the time reported; and no clear entry into overlap before it
@@ -488,7 +546,7 @@ void exercise_events(Shaper& shape) {
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   Shaper shape(data, size);
-  switch (shape.byte() % 10) {
+  switch (shape.byte() % 12) {
     case 0: exercise<Eigen::Vector3d>(shape); break;
     case 1: exercise<Eigen::Vector2d>(shape); break;
     case 2: exercise<Eigen::Vector3f>(shape); break;
@@ -498,7 +556,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     case 6: exercise_cloth<double>(shape); break;
     case 7: exercise_cloth<float>(shape); break;
     case 8: exercise_events<double>(shape); break;
-    default: exercise_events<float>(shape); break;
+    case 9: exercise_events<float>(shape); break;
+    case 10: exercise_strike<double>(shape); break;
+    default: exercise_strike<float>(shape); break;
   }
   return 0;
 }

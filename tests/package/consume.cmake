@@ -17,7 +17,7 @@ if(STEP STREQUAL "install")
   foreach(f IN ITEMS share/cmake/billiards/billiardsConfig.cmake share/cmake/billiards/billiardsConfigVersion.cmake
                      share/cmake/billiards/billiardsTargets.cmake share/pkgconfig/billiards.pc
                      include/billiards/collision.hpp include/billiards/kernels.hpp include/billiards/version.hpp
-                     include/billiards/spin.hpp include/billiards/cloth.hpp include/billiards/spin_kernels.hpp
+                     include/billiards/spin.hpp include/billiards/cloth.hpp include/billiards/spin_kernels.hpp include/billiards/shot_kernels.hpp
                      include/billiards/simulation/table.hpp include/billiards/simulation/gas.hpp
                      include/billiards/simulation/event_calendar.hpp)
     if(NOT EXISTS ${prefix}/${f})

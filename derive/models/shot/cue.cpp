@@ -64,6 +64,17 @@ CueStrike the_cue_strike(Recorder& record, const Strike& k) {
       .depends_on = {"definition.cue_impulse", "definition.tip_restitution", "definition.solid_sphere",
                      "strike.frame"},
   });
+  record.add({
+      .id = "strike.velocity_change",
+      .statement = "The ball's velocity changes by (J/m) d, J/m = (1 + e_tip)(V − (v + ω × r)·d)/(1 + m/M + "
+                   "(5/2)(a² + b²)): for a ball at rest, its speed.",
+      .method = "J of strike.impulse over m; identity, the unit relations imposed",
+      .comparison = Comparison::identity,
+      .paper_expression = (1 + e) * (s.V - before_speed) / (1 + s.m / s.M + numeric(5, 2) * (s.a * s.a + s.b * s.b)),
+      .derived_expression = impulse / s.m,
+      .constraints = k.unit,
+      .depends_on = {"strike.impulse"},
+  });
   const GiNaC::exmap at_rest = [&] {
     GiNaC::exmap rest;
     for (std::size_t i = 0; i < 3; ++i) {
@@ -97,6 +108,17 @@ CueStrike the_cue_strike(Recorder& record, const Strike& k) {
       .derived_expression = to_lst(spin_change),
       .constraints = k.unit,
       .depends_on = {"definition.cue_impulse", "strike.frame"},
+  });
+  record.add({
+      .id = "strike.spin_in_cue_frame",
+      .statement = "In the cue's frame the spin changes by (5 a/(2R)) (J/m) about u and −(5 b/(2R)) (J/m) about s "
+                   "(and, by strike.spin, not at all about d).",
+      .method = "Δω dotted with u and s; identity, the unit relations imposed",
+      .comparison = Comparison::identity,
+      .paper_expression = lst{5 * s.a * s.impulse / (2 * s.m * s.R), -5 * s.b * s.impulse / (2 * s.m * s.R)},
+      .derived_expression = lst{dot(spin_change, k.up), dot(spin_change, k.side)},
+      .constraints = k.unit,
+      .depends_on = {"strike.spin"},
   });
   const GiNaC::exmap centre{{s.a, 0}, {s.b, 0}, {s.c, 1}};
   record.add({

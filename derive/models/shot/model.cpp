@@ -31,7 +31,11 @@ ModelInfo info() {
   };
   model.markdown_path = "shot/AUDIT.md";
   model.json_path = "shot/audit.json";
-  model.kernels_path = "";
+  model.pair_result = {"StrikeSpin", "The change of a struck ball's spin in the cue's frame.",
+                       "ω·u, about u: up, perpendicular to the cue", "ω·s, about s: to the cue's right"};
+  model.kernels_namespace = "billiards::kernels::shot";
+  model.kernels_path = "billiards/shot_kernels.hpp";
+  model.kernel_list_path = "billiards/shot_kernel_list.hpp";
   return model;
 }
 
@@ -44,6 +48,7 @@ Derivation derive() {
     the_cue_strike(record, strike);
     the_squirt(record, strike);
     the_cushion(record, strike);
+    derivation.kernels = shot_kernels(strike);
   });
   return derivation;
 }

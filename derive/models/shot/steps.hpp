@@ -4,6 +4,7 @@
 
 #include "core/algebra.hpp"
 #include "core/record.hpp"
+#include "emit/kernel.hpp"
 
 #include <ginac/ginac.h>
 
@@ -75,5 +76,8 @@ struct CueStrike {
 CueStrike the_cue_strike(Recorder& record, const Strike& strike);
 void the_squirt(Recorder& record, const Strike& strike);
 void the_cushion(Recorder& record, const Strike& strike);
+
+/// The strike's kernels: the velocity change J/m and the spin change in the cue's frame.
+std::vector<Kernel> shot_kernels(const Strike& strike);
 
 }  // namespace billiards::derive::shot
