@@ -151,7 +151,7 @@ ExactContact exact_earliest(Rational p, const numeric& horizon) {
 struct Row {
   long polynomials = 0, contacts = 0, misses = 0, false_contacts = 0, grazes_reported = 0, wrong_at_zero = 0;
   double worst = 0;
-  std::string worst_case, first_failure;
+  std::string first_failure;
 };
 
 template <typename Scalar>
@@ -223,10 +223,7 @@ void check(const std::array<Scalar, 5>& c, Scalar horizon, Row& row) {
   }
   const numeric middle = (exact.low + exact.high) / 2;
   const double error = (GiNaC::abs(t - middle) / middle).to_double();
-  if (error > row.worst) {
-    row.worst = error;
-    row.worst_case = describe(c, horizon);
-  }
+  row.worst = std::max(row.worst, error);
 }
 
 // The families of polynomials, each drawn in double (and rounded to float for the float runs).
@@ -329,8 +326,9 @@ class Families {
     return {{q[0], q[1], q[2], 0, 0}, uniform(0, 4)};
   }
 
-  // The product of (t − r) over `roots` and of the quadratic `rest` (c0, c1, c2; empty for 1), times a
-  // random sign where `signs` is 0, +1 for 1, a random positive scale for 2.
+  // The product of (t − r) over `roots` and of the quadratic `rest` (c0, c1, c2; all zero for none), times
+  // a random positive scale over 20 decades where `scaling` is 2 (else 1); negated, mostly, where it is
+  // negative at t = 0.
   std::pair<std::array<double, 5>, double> from_roots(const std::vector<double>& roots, std::array<double, 3> rest,
                                                       int scaling) {
     std::vector<double> p{1.0};
@@ -346,7 +344,7 @@ class Families {
       while (!q.empty() && q.back() == 0) q.pop_back();
       times(q);
     }
-    const double scale = scaling == 2 ? std::pow(10.0, uniform(-10, 10)) : scaling == 0 ? 1.0 : 1.0;
+    const double scale = scaling == 2 ? std::pow(10.0, uniform(-10, 10)) : 1.0;
     std::array<double, 5> c{};
     for (std::size_t k = 0; k < p.size() && k < 5; ++k) c[k] = scale * p[k];
     if (c[0] < 0 && unit_(random_) < 0.8)
