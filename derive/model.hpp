@@ -21,13 +21,8 @@ struct ModelInfo {
   std::string scope;                 ///< what the model covers, one phrase
   std::string notation;              ///< how the audit writes symbols, a paragraph of Markdown
   std::vector<std::string> remarks;  ///< where the source is imprecise, one Markdown bullet each
-  /// The struct a kernel with two outputs returns: its name and what it and its members hold.
-  struct PairResult {
-    std::string name = "NormalVelocityChange";
-    std::string brief;
-    std::string first = "the first output";
-    std::string second = "the second output";
-  } pair_result;
+  /// The struct a kernel with two outputs returns where the kernel names none of its own.
+  PairResult pair_result;
   std::string kernels_namespace = "billiards::kernels";
   std::string reference_namespace = "billiards::reference_kernels";
   /// Output paths relative to the output folder; an empty header path writes no header.

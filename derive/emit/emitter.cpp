@@ -301,7 +301,7 @@ std::string predicate_function(const Kernel& kernel) {
 // Every kernel as a documented `template <typename Scalar>` function: its brief, the audit claims it
 // implements, its operation count and its body; before the first kernel with a fast path, that path's
 // predicate.
-std::string functions(const std::vector<Kernel>& kernels, const std::string& pair_result) {
+std::string functions(const std::vector<Kernel>& kernels, const PairResult& model_pair) {
   std::ostringstream out;
   std::vector<std::string> predicates;
   for (const Kernel& kernel : kernels) {
@@ -319,7 +319,8 @@ std::string functions(const std::vector<Kernel>& kernels, const std::string& pai
     for (const ex& parameter : kernel.parameters) {
       parameters.push_back("Scalar " + GiNaC::ex_to<GiNaC::symbol>(parameter).get_name());
     }
-    const std::string result = kernel.outputs.size() == 1 ? "Scalar" : pair_result + "<Scalar>";
+    const std::string result =
+        kernel.outputs.size() == 1 ? "Scalar" : kernel.pair.value_or(model_pair).name + "<Scalar>";
     const std::string proven =
         doc_comment("Proven equal to the derived expression of the audit claim `" + kernel.equals +
                     "` before it was printed" + (claims.empty() ? "" : "; also implements " + claims) + ".");
@@ -584,15 +585,24 @@ std::string power_of_two_range(const std::string& doc, const std::string& name, 
          high + "() noexcept {\n  return Scalar(1) / " + low + "<Scalar>();\n}\n";
 }
 
+// The structs the kernels with two outputs return, each once, in the order the kernels first return them
+// (the model's own where a kernel names none).
+std::vector<PairResult> pair_results(const std::vector<Kernel>& kernels, const PairResult& model_pair) {
+  std::vector<PairResult> pairs;
+  for (const Kernel& kernel : kernels) {
+    if (kernel.outputs.size() != 2) continue;
+    const PairResult pair = kernel.pair.value_or(model_pair);
+    const auto same = [&](const PairResult& p) { return p.name == pair.name; };
+    if (std::none_of(pairs.begin(), pairs.end(), same)) pairs.push_back(pair);
+  }
+  return pairs;
+}
+
 }  // namespace
 
 std::string kernels_header(const Derivation& derivation, const std::string& audit_text) {
   const bool runtime_math =
       std::any_of(derivation.kernels.begin(), derivation.kernels.end(), needs_runtime_math);
-  const ModelInfo::PairResult& pair = derivation.model.pair_result;
-  // The pair struct only where a kernel returns two values.
-  const bool has_pair = std::any_of(derivation.kernels.begin(), derivation.kernels.end(),
-                                    [](const Kernel& kernel) { return kernel.outputs.size() == 2; });
   // The bit-comparison helpers only where a fast path's predicate compares bits.
   const bool compares_bits =
       std::any_of(derivation.kernels.begin(), derivation.kernels.end(), [](const Kernel& kernel) {
@@ -627,7 +637,7 @@ std::string kernels_header(const Derivation& derivation, const std::string& audi
       << "#endif\n"
       << "#endif\n\n"
       << "namespace " << derivation.model.kernels_namespace << " {\n\n";
-  if (has_pair) {
+  for (const PairResult& pair : pair_results(derivation.kernels, derivation.model.pair_result)) {
     out << doc_comment(pair.brief) << "template <typename Scalar>\n"
         << "struct " << pair.name << " {\n"
         << "  Scalar first;   ///< " << pair.first << "\n"
@@ -713,7 +723,7 @@ std::string kernels_header(const Derivation& derivation, const std::string& audi
         << "}\n";
   }
   if (scaling) out << scaling_helpers();
-  out << functions(derivation.kernels, derivation.model.pair_result.name) << "\n}  // namespace "
+  out << functions(derivation.kernels, derivation.model.pair_result) << "\n}  // namespace "
       << derivation.model.kernels_namespace << "\n";
   return with_fingerprint(out.str(), audit_text);
 }
@@ -732,7 +742,7 @@ std::string reference_kernels_header(const Derivation& derivation, const std::st
       << "#include <cmath>\n\n"
       << "namespace " << derivation.model.reference_namespace << " {\n\n"
       << "using " << derivation.model.kernels_namespace << "::" << derivation.model.pair_result.name << ";\n"
-      << functions(derivation.reference_kernels, derivation.model.pair_result.name) << "\n}  // namespace "
+      << functions(derivation.reference_kernels, derivation.model.pair_result) << "\n}  // namespace "
       << derivation.model.reference_namespace << "\n";
   return with_fingerprint(out.str(), audit_text);
 }

@@ -62,13 +62,23 @@ struct FastPath {
   std::string claim;                  ///< the audit claim that vouches for that kernel's form there
 };
 
+/// The struct a kernel with two outputs returns: its name and what it and its members hold.
+struct PairResult {
+  std::string name = "NormalVelocityChange";
+  std::string brief;
+  std::string first = "the first output";
+  std::string second = "the second output";
+};
+
 /// A scalar kernel for the emitter.
 struct Kernel {
   std::string name;                   ///< the C++ function name
   std::string brief;                  ///< one sentence for its comment
   std::vector<GiNaC::ex> parameters;  ///< symbols, in signature order; their names are the C++ names
   std::vector<KernelStep> steps;
-  std::vector<GiNaC::ex> outputs;  ///< one: returns Scalar; two: NormalVelocityChange {first, second}
+  std::vector<GiNaC::ex> outputs;  ///< one: returns Scalar; two: a PairResult {first, second}
+  /// The struct it returns when it has two outputs; unset, the model's (ModelInfo::pair_result).
+  std::optional<PairResult> pair = {};
   /// The verified claim whose derived expression (a list, one element per output) the outputs equal.
   std::string equals = {};
   /// The kernel's parameters in the claims' terms (e.g. v1d → v1·d in components), applied to both

@@ -4,7 +4,7 @@
 // impulse equations (after Alciatore, TP, and Han 2005), listed by the derivation, so that
 // tests call, measure and compile each one without a list kept by hand.
 //
-// Fingerprint: fnv1a64:9a10656e49508271 (of this header and the audit)
+// Fingerprint: fnv1a64:968f2b7fbefd1ddd (of this header and the audit)
 #pragma once
 
 #include <billiards/shot_kernels.hpp>
@@ -17,7 +17,7 @@
 namespace billiards::kernels::shot::list {
 
 /// The most parameters any kernel takes.
-inline constexpr std::size_t largest_arity = 6;
+inline constexpr std::size_t largest_arity = 8;
 
 /// Calls the kernel or reference kernel `name` with its arguments looked up by parameter name,
 /// `at("m1")`; returns its outputs in order. Throws std::invalid_argument for an unknown name.
@@ -32,6 +32,25 @@ std::vector<Scalar> call(const std::string& name, const Arguments& at) {
     const auto r = strike_spin(at("velocity_change"), at("radius"), at("side_offset"), at("up_offset"));
     return {r.first, r.second};
   }
+  if (name == "cushion_slip") {
+    const auto r = cushion_slip(at("approach_speed"), at("along_speed"), at("spin_normal"), at("spin_along"),
+                                at("spin_up"), at("radius"), at("cos_nose"), at("sin_nose"));
+    return {r.first, r.second};
+  }
+  if (name == "cushion_normal_impulse") {
+    const auto r = cushion_normal_impulse(at("approach_speed"), at("cos_nose"), at("restitution"));
+    return {r};
+  }
+  if (name == "cushion_velocity_change") {
+    const auto r = cushion_velocity_change(at("normal_impulse"), at("friction_ratio"), at("slip_tangent"),
+                                           at("slip_along"), at("cos_nose"), at("sin_nose"));
+    return {r.first, r.second};
+  }
+  if (name == "cushion_spin_change") {
+    const auto r =
+        cushion_spin_change(at("friction_ratio"), at("slip_tangent"), at("slip_along"), at("radius"));
+    return {r.first, r.second};
+  }
   throw std::invalid_argument("no kernel named " + name);
 }
 
@@ -43,6 +62,19 @@ BILLIARDS_HOST_DEVICE Scalar sum_of_every_kernel(const Scalar* a) noexcept {
   sum += strike_velocity_change(a[0], a[1], a[2], a[3], a[4], a[5]);
   {
     const auto r = strike_spin(a[0], a[1], a[2], a[3]);
+    sum += r.first + r.second;
+  }
+  {
+    const auto r = cushion_slip(a[0], a[1], a[2], a[3], a[4], a[5], a[6], a[7]);
+    sum += r.first + r.second;
+  }
+  sum += cushion_normal_impulse(a[0], a[1], a[2]);
+  {
+    const auto r = cushion_velocity_change(a[0], a[1], a[2], a[3], a[4], a[5]);
+    sum += r.first + r.second;
+  }
+  {
+    const auto r = cushion_spin_change(a[0], a[1], a[2], a[3]);
     sum += r.first + r.second;
   }
   return sum;

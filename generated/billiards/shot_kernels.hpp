@@ -6,7 +6,7 @@
 // claims it implements. They take masses and dot products, so they serve vectors of any dimension and need no
 // Eigen.
 //
-// Fingerprint: fnv1a64:5ba10e419624abb7 (of this header and the audit)
+// Fingerprint: fnv1a64:8b5e81ce07cbc988 (of this header and the audit)
 #pragma once
 
 #include <limits>
@@ -33,6 +33,27 @@ template <typename Scalar>
 struct StrikeSpin {
   Scalar first;   ///< ω·u, about u: up, perpendicular to the cue
   Scalar second;  ///< ω·s, about s: to the cue's right
+};
+
+/// The contact point's slip across the cushion's normal, in the cushion's frame.
+template <typename Scalar>
+struct CushionSlip {
+  Scalar first;   ///< s_t, along t = (sin θ_a, 0, −cos θ_a): down the nose, into the cushion
+  Scalar second;  ///< s_y, along ŷ: along the cushion
+};
+
+/// The change of a ball's velocity at the cushion, in its frame.
+template <typename Scalar>
+struct CushionVelocityChange {
+  Scalar first;   ///< Δv_x, along x̂: the cushion's normal into it
+  Scalar second;  ///< Δv_y, along ŷ: along the cushion
+};
+
+/// The change of a ball's spin at the cushion, in its frame.
+template <typename Scalar>
+struct CushionSpinChange {
+  Scalar first;   ///< Δω·t, t = (sin θ_a, 0, −cos θ_a)
+  Scalar second;  ///< Δω·ŷ, along the cushion
 };
 
 /// |x|, constexpr (std::abs is not before C++23).
@@ -106,6 +127,70 @@ BILLIARDS_HOST_DEVICE constexpr StrikeSpin<Scalar> strike_spin(Scalar velocity_c
                                                                Scalar up_offset) noexcept {
   const Scalar spin_factor = Scalar(2.5) * velocity_change / radius;
   return {side_offset * spin_factor, -(spin_factor * up_offset)};
+}
+
+/// The slip of a ball's contact point with the cushion's nose across its normal: s_t = v_x sin θ_a + R
+/// ω_y and s_y = v_y + R ω_z cos θ_a − R ω_x sin θ_a, from the ball's velocity (v_x =
+/// approach_speed into the cushion, v_y = along_speed), its spin (ω_x, ω_y, ω_z) in the cushion's
+/// frame, its radius and the nose's angle θ_a above the equator.
+///
+/// Proven equal to the derived expression of the audit claim `cushion.slip_in_cushion_frame` before it
+/// was printed.
+///
+/// Total ops: 9
+template <typename Scalar>
+BILLIARDS_HOST_DEVICE constexpr CushionSlip<Scalar> cushion_slip(Scalar approach_speed, Scalar along_speed,
+                                                                 Scalar spin_normal, Scalar spin_along,
+                                                                 Scalar spin_up, Scalar radius,
+                                                                 Scalar cos_nose, Scalar sin_nose) noexcept {
+  return {approach_speed * sin_nose + radius * spin_along,
+          along_speed + cos_nose * radius * spin_up - radius * sin_nose * spin_normal};
+}
+
+/// P_n/m = (1 + e_c) v_x cos θ_a: the cushion's normal impulse per unit mass, from the ball's speed
+/// into the cushion, the cosine of the nose's angle and the cushion's restitution.
+///
+/// Proven equal to the derived expression of the audit claim `cushion.normal_impulse_per_unit_mass`
+/// before it was printed.
+///
+/// Total ops: 3
+template <typename Scalar>
+BILLIARDS_HOST_DEVICE constexpr Scalar cushion_normal_impulse(Scalar approach_speed, Scalar cos_nose,
+                                                              Scalar restitution) noexcept {
+  return (Scalar(1) + restitution) * approach_speed * cos_nose;
+}
+
+/// The velocity change at the cushion, Δv_x = −(P_n/m) cos θ_a − k s_t sin θ_a and Δv_y = −k
+/// s_y, from the normal impulse per unit mass (cushion_normal_impulse), the friction ratio k = j/(m σ)
+/// (2/7 sticking, μ_c (P_n/m)/σ sliding), the slip (cushion_slip) and the nose's angle.
+///
+/// Proven equal to the derived expression of the audit claim `cushion.velocity_change` before it was
+/// printed.
+///
+/// Total ops: 7
+template <typename Scalar>
+BILLIARDS_HOST_DEVICE constexpr CushionVelocityChange<Scalar> cushion_velocity_change(
+    Scalar normal_impulse, Scalar friction_ratio, Scalar slip_tangent, Scalar slip_along, Scalar cos_nose,
+    Scalar sin_nose) noexcept {
+  return {-cos_nose * normal_impulse - friction_ratio * sin_nose * slip_tangent,
+          -(friction_ratio * slip_along)};
+}
+
+/// The spin change at the cushion, (5 k/(2R)) s_y about t = (sin θ_a, 0, −cos θ_a) and −(5
+/// k/(2R)) s_t about ŷ (none about the normal), from the friction ratio k, the slip (cushion_slip) and
+/// the radius.
+///
+/// Proven equal to the derived expression of the audit claim `cushion.spin_change` before it was
+/// printed; also implements `cushion.no_spin_change_about_the_normal`.
+///
+/// Total ops: 5
+template <typename Scalar>
+BILLIARDS_HOST_DEVICE constexpr CushionSpinChange<Scalar> cushion_spin_change(Scalar friction_ratio,
+                                                                              Scalar slip_tangent,
+                                                                              Scalar slip_along,
+                                                                              Scalar radius) noexcept {
+  const Scalar spin_factor = Scalar(2.5) * friction_ratio / radius;
+  return {slip_along * spin_factor, -(slip_tangent * spin_factor)};
 }
 
 }  // namespace billiards::kernels::shot

@@ -480,9 +480,10 @@ class SpinInputGenerator {
     // (every term of one sign), scaled by one power of two common to every input, which their terms
     // follow exactly; where the terms cancel their relative error has no bound.
     if (kernel.name.find("contact_") != std::string::npos) return in_scaled_case(kernel, true);
-    // The strike's kernels mix lengths with ratios (offsets in units of R, restitution): measured over the
-    // case they are proven over, unscaled.
-    if (kernel.name.rfind("strike_", 0) == 0) return in_scaled_case(kernel, false);
+    // The strike's and the cushion's kernels mix lengths with ratios (offsets in units of R, restitution,
+    // the nose's cos and sin, the friction ratio): measured over the case they are proven over, unscaled.
+    if (kernel.name.rfind("strike_", 0) == 0 || kernel.name.rfind("cushion_", 0) == 0)
+      return in_scaled_case(kernel, false);
     // A fast path's plain form is measured inside its domain only: the moderate range (every input) or
     // the plain mass range (the masses; checked, so that a new domain is not silently ignored).
     const bool moderate = std::any_of(kernel.domain.begin(), kernel.domain.end(), [](const ex& condition) {

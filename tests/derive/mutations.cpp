@@ -303,6 +303,28 @@ const std::vector<Mutation>& shot_mutations() {
        [](Kernel& k) {
          step(k, "spin_factor").expression = GiNaC::numeric(5, 7) * symbol(k, "velocity_change") / symbol(k, "radius");
        }},
+      // The cushion's kernels: the spin about the normal with its sign turned in the slip along the
+      // cushion, restitution dropped from the normal impulse, the nose's cos and sin swapped in Δv_x, and
+      // the spin change's 5/2 as 5/7.
+      {"cushion_slip_normal_spin_sign_turned", "cushion_slip",
+       [](Kernel& k) {
+         k.outputs.at(1) = symbol(k, "along_speed") + symbol(k, "radius") * symbol(k, "spin_up") * symbol(k, "cos_nose") +
+                           symbol(k, "radius") * symbol(k, "spin_normal") * symbol(k, "sin_nose");
+       }},
+      {"cushion_normal_impulse_restitution_dropped", "cushion_normal_impulse",
+       [](Kernel& k) { k.outputs.at(0) = 2 * symbol(k, "approach_speed") * symbol(k, "cos_nose"); }},
+      {"cushion_velocity_change_cos_for_sin", "cushion_velocity_change",
+       [](Kernel& k) {
+         k.outputs.at(0) = -symbol(k, "normal_impulse") * symbol(k, "sin_nose") -
+                           symbol(k, "friction_ratio") * symbol(k, "slip_tangent") * symbol(k, "cos_nose");
+       }},
+      {"cushion_spin_change_five_sevenths", "cushion_spin_change",
+       [](Kernel& k) {
+         step(k, "spin_factor").expression = GiNaC::numeric(5, 7) * symbol(k, "friction_ratio") / symbol(k, "radius");
+       }},
+      // Han's s_y taken for the slip along the cushion: his eq. 14 has it turned round.
+      claim_retyped("shot_han_slip_along_sign_kept", "cushion.slip_in_cushion_frame",
+                    [](const GiNaC::ex& typed) { return GiNaC::lst{typed.op(0), -typed.op(1)}; }),
       // The cue's mass where the ball's belongs (an impulse of 2 M V over the denominator, not 2 m V).
       claim_retyped("shot_speed_cue_mass_for_ball_mass", "strike.speed",
                     [&s](const GiNaC::ex& typed) { return typed * s.M / s.m; }),

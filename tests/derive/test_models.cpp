@@ -141,6 +141,10 @@ TEST_CASE("Every claim id cited in generated/, runtime/, the README and the guid
       if (file.is_regular_file()) files.push_back(file.path());
     }
   }
+  // Arguments the checked calls name in their errors that share a section's name, and their members in
+  // code: not claims.
+  const std::set<std::string> argument_names = {"cushion.normal", "cushion.height", "cushion.restitution",
+                                                "cushion.friction"};
   int cited = 0;
   for (const fs::path& file : files) {
     const std::string text = read(file);
@@ -165,6 +169,10 @@ TEST_CASE("Every claim id cited in generated/, runtime/, the README and the guid
         candidates.push_back(id);
       }
       for (const std::string& candidate : candidates) {
+        if (std::any_of(argument_names.begin(), argument_names.end(), [&](const std::string& name) {
+              return candidate == name || candidate.rfind(name + ".", 0) == 0;
+            }))
+          continue;
         INFO(file.string() + " cites " + candidate);
         ++cited;
         if (candidate.size() > 2 && candidate.substr(candidate.size() - 2) == ".*") {

@@ -1,6 +1,6 @@
 // libFuzzer harness for the checked API: every checked call (collide with and without restitution,
 // collide_along_direction, collide_if_approaching, reflect, time_of_impact; collide_with_friction,
-// motion, transition_time and evolve on the cloth; earliest_contact; strike). Arbitrary bytes are
+// motion, transition_time and evolve on the cloth; earliest_contact; strike; collide_with_cushion). Arbitrary bytes are
 // shaped into arguments so that most inputs are valid (masses over the whole range, finite velocities,
 // unit normals, restitution in [0, 1], lengths and speeds scaled by powers of two over the type's
 // exponent range for time_of_impact) and a few are not (NaN, infinities, zero or negative masses,
@@ -11,6 +11,7 @@
 // spin_reference.hpp's long-double references the same way, with no energy created (to rounding) by a
 // collision or on the cloth. A rejected input must throw billiards::invalid_argument and nothing else.
 #include "reference.hpp"
+#include "han_2005.hpp"
 #include "spin_reference.hpp"
 
 #include <billiards/checked.hpp>
@@ -542,11 +543,64 @@ void exercise_events(Shaper& shape) {
   }
 }
 
+// collide_with_cushion: the ball in any state (on the cloth, now and then not), the cushion's normal at
+// any angle in the table's plane (now and then any vector), its nose at [R, 2R) and its coefficients now
+// and then invalid; held to Han (2005)'s eqs 14–23 with μ in long double (han_2005.hpp), each part within
+// 64 ε of the speeds involved, and to no energy created beyond rounding.
+template <typename Scalar>
+void exercise_cushion(Shaper& shape) {
+  using V = Eigen::Matrix<Scalar, 3, 1>;
+  using Long = long double;
+  using L3 = Eigen::Matrix<Long, 3, 1>;
+  const Scalar radius = shape.moderate<Scalar>(), mass = shape.moderate<Scalar>();
+  V velocity = shape.vector<V>();
+  velocity.z() = shape.special_or(Scalar(0));
+  const billiards::SpinningBall<Scalar> ball{velocity, shape.vector<V>(), mass, radius};
+  const Scalar psi = Scalar(shape.byte()) / Scalar(40);
+  V normal(std::cos(psi), std::sin(psi), 0);
+  if (shape.byte() % 16 == 0) normal = shape.vector<V>();
+  const billiards::Cushion<Scalar> cushion{normal, shape.special_or(radius * (1 + Scalar(shape.byte()) / Scalar(256))),
+                                           shape.special_or(Scalar(shape.byte()) / Scalar(255)),
+                                           shape.special_or(Scalar(shape.byte()) / Scalar(64))};
+  ++all_inputs;
+  try {
+    const billiards::SpinningBall<Scalar> after = billiards::checked::collide_with_cushion(ball, cushion);
+    const billiards::SpinningBall<Long> expected = billiards_fuzz::han_2005(ball, cushion);
+    const Long R = radius;
+    const L3 v = ball.velocity.template cast<Long>(), w = ball.angular_velocity.template cast<Long>();
+    const Long speeds = v.norm() + R * w.norm();
+    const Long bound = 64 * Long(std::numeric_limits<Scalar>::epsilon()) * speeds + 64 * Long(std::numeric_limits<Scalar>::min());
+    const auto energy = [&](const auto& b) {
+      return b.velocity.template cast<Long>().squaredNorm() + Long(2) / 5 * R * R * b.angular_velocity.template cast<Long>().squaredNorm();
+    };
+    const char* broken = nullptr;
+    if (!after.velocity.allFinite() || !after.angular_velocity.allFinite()) broken = "a state that is not finite";
+    else if (!((after.velocity.template cast<Long>() - expected.velocity).norm() <= bound))
+      broken = "a velocity farther from Han (2005) than rounding allows";
+    else if (!((after.angular_velocity.template cast<Long>() - expected.angular_velocity).norm() <=
+               bound / R + 64 * Long(std::numeric_limits<Scalar>::min())))
+      broken = "a spin farther from Han (2005) than rounding allows";
+    else if (!(energy(after) <= energy(ball) * (1 + 64 * Long(std::numeric_limits<Scalar>::epsilon())) +
+                                    64 * Long(std::numeric_limits<Scalar>::min())))
+      broken = "energy created";
+    if (broken) {
+      std::fprintf(stderr, "  cushion = (n %a %a %a, h %a, e %a, mu %a)\n", double(normal.x()), double(normal.y()),
+                   double(normal.z()), double(cushion.height), double(cushion.restitution), double(cushion.friction));
+      print_ball("ball", ball.velocity, ball.angular_velocity, radius);
+      print_ball("after", after.velocity, after.angular_velocity, radius);
+      fail_spin<Scalar>("collide_with_cushion", broken);
+    }
+    ++accepted_inputs;
+  } catch (const billiards::invalid_argument& error) {
+    ++rejected_by_argument[error.argument()];
+  }
+}
+
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   Shaper shape(data, size);
-  switch (shape.byte() % 12) {
+  switch (shape.byte() % 14) {
     case 0: exercise<Eigen::Vector3d>(shape); break;
     case 1: exercise<Eigen::Vector2d>(shape); break;
     case 2: exercise<Eigen::Vector3f>(shape); break;
@@ -558,7 +612,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     case 8: exercise_events<double>(shape); break;
     case 9: exercise_events<float>(shape); break;
     case 10: exercise_strike<double>(shape); break;
-    default: exercise_strike<float>(shape); break;
+    case 11: exercise_strike<float>(shape); break;
+    case 12: exercise_cushion<double>(shape); break;
+    default: exercise_cushion<float>(shape); break;
   }
   return 0;
 }

@@ -77,7 +77,7 @@ CueStrike the_cue_strike(Recorder& record, const Strike& strike);
 void the_squirt(Recorder& record, const Strike& strike);
 void the_cushion(Recorder& record, const Strike& strike);
 
-/// The strike's kernels: the velocity change J/m and the spin change in the cue's frame.
+/// The strike's kernels (the velocity change J/m, the spin change in the cue's frame) and the cushion's.
 std::vector<Kernel> shot_kernels(const Strike& strike);
 
 }  // namespace billiards::derive::shot

@@ -1,6 +1,8 @@
-// The cue strike (the shot model's audit, section "The cue strike"), on top of the generated kernels of
-// billiards/shot_kernels.hpp: the instantaneous point model of Alciatore's TP A-30 with the tip's
-// restitution, for a ball in any state.
+// The cue strike and the cushion with spin (the shot model's audit, sections "The cue strike" and "The
+// cushion with spin"), on top of the generated kernels of billiards/shot_kernels.hpp: the instantaneous
+// point model of Alciatore's TP A-30 with the tip's restitution, for a ball in any state, and the
+// cushion as the immovable limit of the frictional contact, at its nose (Han 2005 with μ in the
+// stick/slip test).
 #pragma once
 
 #include <billiards/checked.hpp>
@@ -69,6 +71,56 @@ template <typename Scalar>
   return struck;
 }
 
+/// A straight cushion as the ball meets it: its unit normal n in the table's plane, pointing from the ball
+/// into the cushion; the height h of its nose above the cloth, where it touches the ball (θ_a = asin(h/R −
+/// 1) above the ball's equator); restitution e_c and Coulomb friction μ_c at the nose.
+template <typename Scalar>
+struct Cushion {
+  Eigen::Matrix<Scalar, 3, 1> normal;  ///< n, horizontal (n_z = 0), from the ball into the cushion
+  Scalar height;                       ///< h, the nose's height above the cloth: R ≤ h < 2R
+  Scalar restitution = Scalar(0.85);   ///< \f$e_c \in [0, 1]\f$, along the nose's normal
+  Scalar friction = Scalar(0.2);       ///< \f$\mu_c \ge 0\f$, across it
+};
+
+/// The ball after it meets the cushion (`cushion.slip_in_cushion_frame`, `cushion.normal_impulse_per_unit_mass`,
+/// `cushion.regime`, `cushion.velocity_change`, `cushion.spin_change`). In the cushion's frame (x̂ = n, ŷ =
+/// ẑ × n along it, ẑ up) the contact point slips by s_t = v_x sin θ_a + R ω_y down the nose and s_y = v_y +
+/// R ω_z cos θ_a − R ω_x sin θ_a along the cushion, σ = |(s_t, s_y)|; the normal impulse per unit mass is
+/// p = (1 + e_c) v_x cos θ_a. The impact sticks iff 2σ/7 ≤ μ_c p (friction k = j/(m σ) = 2/7 stops the
+/// slip) and slides with k = μ_c p/σ otherwise; then Δv_x = −p cos θ_a − k s_t sin θ_a, Δv_y = −k s_y,
+/// and the spin changes by (5k/(2R)) (s_y t − s_t ŷ), t = (sin θ_a, 0, −cos θ_a). The ball's vertical
+/// velocity and its position are not changed (the table holds it on the cloth: the model is for v_z = 0);
+/// mass drops out. A ball that does not move into the cushion (v·n ≤ 0) is returned unchanged.
+template <typename Scalar>
+[[nodiscard]] SpinningBall<Scalar> collide_with_cushion(const SpinningBall<Scalar>& ball,
+                                                        const Cushion<Scalar>& cushion) noexcept {
+  using Vector = Eigen::Matrix<Scalar, 3, 1>;
+  const Vector& n = cushion.normal;
+  const Vector rail{-n.y(), n.x(), 0};
+  const Scalar approach = ball.velocity.x() * n.x() + ball.velocity.y() * n.y();
+  if (!(approach > 0)) return ball;
+  const Scalar sin_nose = cushion.height / ball.radius - 1;
+  const Scalar cos_nose = std::sqrt(std::max(Scalar(0), (1 - sin_nose) * (1 + sin_nose)));
+  const Vector& w = ball.angular_velocity;
+  const Scalar along = ball.velocity.dot(rail);
+  const kernels::shot::CushionSlip<Scalar> slip = kernels::shot::cushion_slip(
+      approach, along, w.dot(n), w.dot(rail), w.z(), ball.radius, cos_nose, sin_nose);
+  const Scalar normal_impulse = kernels::shot::cushion_normal_impulse(approach, cos_nose, cushion.restitution);
+  const Scalar slip_size = std::hypot(slip.first, slip.second);
+  const Scalar friction_impulse = cushion.friction * normal_impulse;
+  const Scalar ratio = 2 * slip_size <= 7 * friction_impulse ? Scalar(2) / Scalar(7) : friction_impulse / slip_size;
+  const kernels::shot::CushionVelocityChange<Scalar> dv =
+      kernels::shot::cushion_velocity_change(normal_impulse, ratio, slip.first, slip.second, cos_nose, sin_nose);
+  const kernels::shot::CushionSpinChange<Scalar> dw =
+      kernels::shot::cushion_spin_change(ratio, slip.first, slip.second, ball.radius);
+  const Vector tangent{sin_nose * n.x(), sin_nose * n.y(), -cos_nose};
+  SpinningBall<Scalar> after = ball;
+  after.velocity += dv.first * n + dv.second * rail;
+  after.velocity.z() = ball.velocity.z();
+  after.angular_velocity += dw.first * tangent + dw.second * rail;
+  return after;
+}
+
 namespace checked {
 
 /// billiards::strike with every argument validated: the ball's mass and radius positive and finite, its
@@ -106,6 +158,40 @@ template <typename Scalar>
                            "a coefficient of restitution in [0, 1]");
   return billiards::strike(ball, cue);
 }
+
+/// billiards::collide_with_cushion with every argument validated: the ball's mass and radius positive and
+/// finite, its velocity and spin finite within component_limit() (R |ω| too), its velocity on the cloth
+/// (v_z = 0); the cushion's normal a unit vector in the table's plane (n_z = 0), its nose's height in [R,
+/// 2R) of the ball's radius, its restitution in [0, 1] and its friction ≥ 0 and finite. Throws
+/// billiards::invalid_argument naming the argument ("cushion.height", …), also when the ball's radius is so
+/// small against its speed that the spin change would not be finite. Returns exactly what the unchecked
+/// call returns.
+template <typename Scalar>
+[[nodiscard]] SpinningBall<Scalar> collide_with_cushion(const SpinningBall<Scalar>& ball, const Cushion<Scalar>& cushion) {
+  constexpr const char* function = "billiards::checked::collide_with_cushion";
+  using detail::to_text;
+  detail::check_spinning_ball(function, "ball", ball);
+  if (ball.velocity.z() != 0)
+    throw invalid_argument(function, "ball.velocity", to_text(ball.velocity),
+                           "a velocity on the cloth (its z component 0)");
+  detail::check_unit_normal(function, "cushion.normal", cushion.normal);
+  if (cushion.normal.z() != 0)
+    throw invalid_argument(function, "cushion.normal", to_text(cushion.normal),
+                           "a normal in the table's plane (its z component 0)");
+  if (!(cushion.height >= ball.radius && cushion.height < 2 * ball.radius))
+    throw invalid_argument(function, "cushion.height", to_text(cushion.height),
+                           "a nose height in [R, 2R) for the ball's radius R = " + to_text(ball.radius));
+  if (!(cushion.restitution >= 0 && cushion.restitution <= 1))
+    throw invalid_argument(function, "cushion.restitution", to_text(cushion.restitution),
+                           "a coefficient of restitution in [0, 1]");
+  detail::check_friction(function, "cushion.friction", cushion.friction);
+  const SpinningBall<Scalar> after = billiards::collide_with_cushion(ball, cushion);
+  if (!detail::is_finite(after))
+    throw invalid_argument(function, "ball.radius", to_text(ball.radius),
+                           "a radius that keeps the spin change finite for the ball's velocity");
+  return after;
+}
+
 
 }  // namespace checked
 
