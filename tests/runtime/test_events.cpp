@@ -84,6 +84,28 @@ TEMPLATE_TEST_CASE("earliest_contact: a graze placed exactly is a contact", "[ev
   CHECK(std::fabs(*q - 1) <= std::sqrt(std::numeric_limits<S>::epsilon()) * 8);
 }
 
+TEMPLATE_TEST_CASE("earliest_contact: a polynomial within rounding of 0 at the horizon is a contact there", "[events]",
+                   float, double) {
+  using S = TestType;
+  // (r − t)(t² + 1), falling through its one root r: a horizon a few ulps past r finds it, at r to rounding
+  // or at the horizon where p evaluates within rounding of 0 there.
+  const S r = S(3.1);
+  const std::array<S, 4> c{r, -1, r, -1};
+  const S horizon = r + 4 * std::numeric_limits<S>::epsilon() * r;
+  const std::optional<S> t = billiards::earliest_contact(c, horizon);
+  REQUIRE(t);
+  CHECK(*t <= horizon);
+  CHECK(std::fabs(*t - r) <= 8 * std::numeric_limits<S>::epsilon() * r);
+  // The polynomial in float at the horizon of a cubic with three roots 3.41 ± 0.05 apart, where float
+  // reads p(T) above 0 though the exact root lies just before T.
+  if constexpr (std::is_same_v<S, float>) {
+    const std::optional<S> cluster =
+        billiards::earliest_contact(std::array<S, 5>{-39.591404f, 34.8572273f, -10.2272329f, 1, 0}, 3.45775008f);
+    REQUIRE(cluster);
+    CHECK(*cluster > 3.45f);
+  }
+}
+
 TEMPLATE_TEST_CASE("earliest_contact at t = 0: touching or overlapping, approaching or not", "[events]", float, double) {
   using S = TestType;
   // Touching and approaching: a contact now.

@@ -189,7 +189,8 @@ int sign_changes(const EventPolynomial<Scalar>& p, Scalar lo, Scalar hi, Scalar*
 /// - Later, a contact is the first t where the polynomial reaches 0 from above: a simple root where it
 ///   decreases, or a graze, a local minimum whose value is within the rounding error of evaluating it
 ///   (2 d ε Σ |c_k| t^k, detail::evaluation_error) — so that no graze that exact arithmetic would find is missed, at the price of
-///   reporting as contacts the misses closer than rounding can tell. The time returned is where the
+///   reporting as contacts the misses closer than rounding can tell. Likewise at the horizon: a
+///   polynomial that falls to within rounding of 0 there is in contact at the horizon. The time returned is where the
 ///   polynomial is still ≥ 0 as evaluated: never after the bodies start to overlap.
 /// - The polynomial's degree is what its coefficients make it: a zero leading coefficient lowers it, and
 ///   nothing divides by one.
@@ -241,8 +242,10 @@ template <typename Scalar, std::size_t N>
       // Not t = 0 where the bodies are apart at 0: the root lies below the smallest step of the type.
       return t > 0 ? t : std::numeric_limits<Scalar>::denorm_min();
     }
+    const Scalar rounding = detail::evaluation_error(p, b);
+    // At the horizon, p falling to within rounding of 0: the contact may lie at or just before it.
+    if (i == turns && left > right && right > 0 && right <= rounding) return b;
     if (i < turns) {
-      const Scalar rounding = detail::evaluation_error(p, b);
       // A graze: a local minimum (p falls into b and rises after it) within rounding of 0.
       if (left > right && right > 0 && right <= rounding) return b;
       // Overlapping bodies that part by less than rounding can tell and close again: a local maximum
