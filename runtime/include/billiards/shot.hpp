@@ -181,7 +181,7 @@ template <typename Scalar>
   if (!(cushion.height >= ball.radius && cushion.height < 2 * ball.radius))
     throw invalid_argument(function, "cushion.height", to_text(cushion.height),
                            "a nose height in [R, 2R) for the ball's radius R = " + to_text(ball.radius));
-  if (!(cushion.restitution >= 0 && cushion.restitution <= 1))
+  if (!detail::is_restitution(cushion.restitution))
     throw invalid_argument(function, "cushion.restitution", to_text(cushion.restitution),
                            "a coefficient of restitution in [0, 1]");
   detail::check_friction(function, "cushion.friction", cushion.friction);
