@@ -204,4 +204,65 @@ inline std::vector<PoolBall> rack(const PoolTable& table, const PoolPhysics& phy
   return balls;
 }
 
+/// `count` balls at rest, placed at random from `seed` on the cloth's straight part (every centre at
+/// least a radius inside the noses, away from the pockets' mouths): about a quarter of them frozen to a
+/// ball placed before (touching it: centres two radii apart, up to rounding), about a quarter frozen to
+/// a cushion (a radius from its nose), the others anywhere free. For random shots and layouts; ball 0 is
+/// the cue ball. Throws std::invalid_argument for a count of 0 or above 16, or where the balls do not
+/// fit (no place found in 10000 tries).
+inline std::vector<PoolBall> scatter(const PoolTable& table, const PoolPhysics& physics, std::size_t count,
+                                     std::uint64_t seed) {
+  if (count == 0 || count > 16)
+    throw std::invalid_argument("count is " + std::to_string(count) + ", expected 1 to 16 balls");
+  const double R = physics.radius, L = table.length, W = table.width;
+  // Clear of the mouths: a centre's along-rail coordinate beyond the jaws by a radius.
+  const double corner = table.corner_mouth / std::sqrt(2.0) + 2 * R, side = table.side_mouth / 2 + 2 * R;
+  std::mt19937_64 random(seed);
+  std::uniform_real_distribution<double> unit(0, 1);
+  const auto clear_of_mouths = [&](const TableVector& r) {
+    const bool near_long_rail = r.y() < 2 * R || r.y() > W - 2 * R;
+    const bool near_short_rail = r.x() < 2 * R || r.x() > L - 2 * R;
+    if (near_long_rail && (r.x() < corner || r.x() > L - corner || std::fabs(r.x() - L / 2) < side)) return false;
+    if (near_short_rail && (r.y() < corner || r.y() > W - corner)) return false;
+    return r.x() >= R && r.x() <= L - R && r.y() >= R && r.y() <= W - R;
+  };
+  std::vector<PoolBall> balls;
+  for (std::size_t i = 0; i < count; ++i) {
+    bool placed = false;
+    for (int attempt = 0; attempt < 10000 && !placed; ++attempt) {
+      const double kind = unit(random);
+      TableVector r;
+      if (kind < 0.25 && !balls.empty()) {
+        const std::size_t other = std::min(balls.size() - 1, static_cast<std::size_t>(unit(random) * balls.size()));
+        const double angle = 2 * M_PI * unit(random);
+        r = TableVector(balls[other].position.x(), balls[other].position.y()) +
+            2 * R * TableVector(std::cos(angle), std::sin(angle));
+      } else if (kind < 0.5) {
+        const int rail = static_cast<int>(unit(random) * 4) % 4;
+        const double along = unit(random);
+        r = rail == 0   ? TableVector(R, along * W)
+            : rail == 1 ? TableVector(L - R, along * W)
+            : rail == 2 ? TableVector(along * L, R)
+                        : TableVector(along * L, W - R);
+      } else {
+        r = TableVector(R + unit(random) * (L - 2 * R), R + unit(random) * (W - 2 * R));
+      }
+      if (!clear_of_mouths(r)) continue;
+      bool free = true;
+      for (const PoolBall& b : balls) {
+        free = free && std::hypot(b.position.x() - r.x(), b.position.y() - r.y()) >= 2 * R;
+      }
+      if (!free) continue;
+      PoolBall ball;
+      ball.position = {r.x(), r.y(), R};
+      balls.push_back(ball);
+      placed = true;
+    }
+    if (!placed)
+      throw std::invalid_argument("scatter: no place for ball " + std::to_string(i) + " of " + std::to_string(count) +
+                                  " in 10000 tries");
+  }
+  return balls;
+}
+
 }  // namespace billiards::simulation
