@@ -20,6 +20,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
+#include <algorithm>
 #include <fstream>
 #include <iomanip>
 #include <istream>
@@ -67,12 +68,12 @@ inline double parse_number(const std::string& word, const std::string& where, co
   return value;
 }
 
-/// Parses a setup (the format above) and validates it. Throws std::invalid_argument naming
-/// `source:line`, the directive and what was expected; a file that cannot be read says why.
-inline TableSetup read_setup(std::istream& in, const std::string& source) {
-  TableSetup setup;
-  setup.balls.clear();
-  setup.origin.file = source + ": ";
+/// Reads a setup's lines: for each directive, `handle(where, directive, words)` with `where` the
+/// "source:line: " prefix for messages and `words` the rest of the line ('#' starts a comment; blank
+/// lines are skipped). A line beyond longest_setup_line characters or a file beyond largest_setup_file
+/// bytes throws std::invalid_argument at once, as does a file that cannot be read.
+template <typename Handle>
+void read_directives(std::istream& in, const std::string& source, Handle handle) {
   std::string line;
   std::size_t total = 0;
   for (int number = 1;; ++number) {
@@ -106,15 +107,36 @@ inline TableSetup read_setup(std::istream& in, const std::string& source) {
       if (!ended) break;
       continue;
     }
+    handle(where, directive, words);
+    if (!ended) break;
+  }
+}
+
+/// The numbers left on a directive's line: exactly `count` of them (or, with `at_most` above `count`,
+/// any count from `count` to `at_most`), each a finite number (parse_number). Throws
+/// std::invalid_argument naming `where`, the directive and `expected`.
+inline std::vector<double> directive_numbers(std::istringstream& words, const std::string& where,
+                                             const std::string& directive, std::size_t count,
+                                             const char* expected, std::size_t at_most = 0) {
+  std::vector<double> values;
+  std::string word;
+  while (words >> word) values.push_back(parse_number(word, where + directive + ": ", expected));
+  if (values.size() < count || values.size() > std::max(count, at_most)) {
+    throw std::invalid_argument(where + directive + ": " + std::to_string(values.size()) + " numbers, expected " +
+                                expected);
+  }
+  return values;
+}
+
+/// Parses a setup (the format above) and validates it. Throws std::invalid_argument naming
+/// `source:line`, the directive and what was expected; a file that cannot be read says why.
+inline TableSetup read_setup(std::istream& in, const std::string& source) {
+  TableSetup setup;
+  setup.balls.clear();
+  setup.origin.file = source + ": ";
+  read_directives(in, source, [&](const std::string& where, const std::string& directive, std::istringstream& words) {
     const auto numbers = [&](std::size_t count, const char* expected) {
-      std::vector<double> values;
-      std::string word;
-      while (words >> word) values.push_back(parse_number(word, where + directive + ": ", expected));
-      if (values.size() != count) {
-        throw std::invalid_argument(where + directive + ": " + std::to_string(values.size()) +
-                                    " numbers, expected " + expected);
-      }
-      return values;
+      return directive_numbers(words, where, directive, count, expected);
     };
     if (directive == "table") {
       const auto v = numbers(2, "2 numbers: width height");
@@ -135,14 +157,13 @@ inline TableSetup read_setup(std::istream& in, const std::string& source) {
       throw std::invalid_argument(where + "unknown directive '" + excerpt(directive) +
                                   "', expected table, radius, mass or ball");
     }
-    if (!ended) break;
-  }
+  });
   validate(setup);
   return setup;
 }
 
-/// Opens and reads a setup file: read_setup, with an error that says why a file cannot be opened.
-inline TableSetup read_setup_file(const std::string& path) {
+/// Opens `path` for reading as a setup file; throws std::invalid_argument saying why it cannot be.
+inline std::ifstream open_setup_file(const std::string& path) {
   errno = 0;
   std::ifstream in(path, std::ios::binary);
   if (!in.is_open()) {
@@ -153,6 +174,12 @@ inline TableSetup read_setup_file(const std::string& path) {
   if (std::filesystem::is_directory(path, error)) {
     throw std::invalid_argument(path + ": is a folder, expected a setup file");
   }
+  return in;
+}
+
+/// Opens and reads a setup file: read_setup, with an error that says why a file cannot be opened.
+inline TableSetup read_setup_file(const std::string& path) {
+  std::ifstream in = open_setup_file(path);
   return read_setup(in, path);
 }
 

@@ -20,6 +20,7 @@
 
 #include <algorithm>
 #include <array>
+#include <charconv>
 #include <cmath>
 #include <cstdint>
 #include <functional>
@@ -27,10 +28,10 @@
 #include <optional>
 #include <queue>
 #include <span>
-#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <tuple>
+#include <utility>
 #include <vector>
 
 namespace billiards::simulation {
@@ -294,7 +295,7 @@ class Shot {
     double horizontal_acceleration[2] = {0, 0};
     bool moving = false;  // sliding or rolling: its centre moves
     double reach_end = std::numeric_limits<double>::infinity();  // its predictions' end (absolute time)
-    double box[4] = {0, 0, 0, 0};  // x and y ranges of its centre from its last prediction to reach_end
+    std::array<double, 4> box{};  // x and y ranges of its centre from its last prediction to reach_end
     bool pocketed = false;
     std::uint64_t version = 0;
   };
@@ -314,11 +315,11 @@ class Shot {
     }
   };
 
+  // The shortest text that reads back as x.
   static std::string number(double x) {
-    std::ostringstream text;
-    text.precision(17);
-    text << x;
-    return text.str();
+    char text[32];
+    const auto written = std::to_chars(text, text + sizeof text, x);
+    return std::string(text, written.ptr);
   }
   static double distance(const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
     return std::hypot(a.x() - b.x(), a.y() - b.y());
@@ -430,28 +431,31 @@ class Shot {
 
   // The box holding ball i's centre from now over the next `horizon` seconds of its phase (each
   // coordinate a parabola: its extremes at the ends and at its vertex).
+  // The range of x0 + v t + ½ a t² over t in [0, horizon], widened by rounding's share (a millionth of
+  // the range and of the radius).
+  [[nodiscard]] std::pair<double, double> range(double x, double v, double a, double horizon, bool moving) const {
+    double low = x, high = x;
+    if (moving) {
+      const double end = x + v * horizon + 0.5 * a * horizon * horizon;
+      low = std::min(low, end);
+      high = std::max(high, end);
+      const double vertex = a != 0 ? -v / a : 0;
+      if (vertex > 0 && vertex < horizon) {
+        const double turn = x + v * vertex + 0.5 * a * vertex * vertex;
+        low = std::min(low, turn);
+        high = std::max(high, turn);
+      }
+    }
+    const double slack = 1e-6 * (high - low + physics_.radius);
+    return {low - slack, high + slack};
+  }
   void bound(std::size_t i, double horizon) {
     Entry& e = balls_[i];
-    for (int axis = 0; axis < 2; ++axis) {
-      const double x = e.state.position[axis];
-      double lo = x, hi = x;
-      if (e.moving) {
-        const double v = e.state.velocity[axis], a = e.horizontal_acceleration[axis];
-        const double end = x + v * horizon + 0.5 * a * horizon * horizon;
-        lo = std::min(lo, end);
-        hi = std::max(hi, end);
-        const double vertex = a != 0 ? -v / a : 0;
-        if (vertex > 0 && vertex < horizon) {
-          const double turn = x + v * vertex + 0.5 * a * vertex * vertex;
-          lo = std::min(lo, turn);
-          hi = std::max(hi, turn);
-        }
-      }
-      // Widened by rounding's share (a millionth of the path and of the radius).
-      const double slack = 1e-6 * (hi - lo + physics_.radius);
-      e.box[2 * axis] = lo - slack;
-      e.box[2 * axis + 1] = hi + slack;
-    }
+    const auto [x_low, x_high] = range(e.state.position.x(), e.state.velocity.x(), e.horizontal_acceleration[0],
+                                       horizon, e.moving);
+    const auto [y_low, y_high] = range(e.state.position.y(), e.state.velocity.y(), e.horizontal_acceleration[1],
+                                       horizon, e.moving);
+    e.box = {x_low, x_high, y_low, y_high};
   }
   [[nodiscard]] bool box_near(const Entry& e, const Eigen::Vector2d& centre, double reach) const {
     return centre.x() >= e.box[0] - reach && centre.x() <= e.box[1] + reach && centre.y() >= e.box[2] - reach &&
