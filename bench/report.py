@@ -2,6 +2,10 @@
 """Turns the JSON of one billiards_bench run into bench/RESULTS.md and bench/throughput.svg.
 
 Usage: bench/report.py RESULTS_JSON [--command "how the JSON was made"] [--derive BIN] [--out-dir DIR]
+                       [--pooltool POOLTOOL_JSON]
+
+POOLTOOL_JSON is what ../shared/peers/pooltool/bench_breaks.py printed in the same run (bench/run.sh runs
+both): pooltool's breaks beside ours.
 
 Both files are written atomically (tools/atomic_write.py), into bench/ unless --out-dir names another
 folder.
@@ -237,6 +241,48 @@ def table_events(runs):
     return "\n".join(lines)
 
 
+def shot_section(runs, pooltool):
+    """Shots played to rest (billiards::simulation::Shot): breaks against pooltool's, random shots."""
+    lines = ["| break (7-ft table, 8 m/s at the apex, b = 0.25 R, 1e-3 R jitter) | ours: µs per break | events | µs per event | pooltool: ms per break (median, seeds 1–20) | events | pooltool / ours | goal |",
+             "|---|---:|---:|---:|---:|---:|---:|---:|"]
+    found = False
+    for game, name in (("9ball", "9-ball"), ("8ball", "8-ball")):
+        b = runs.get(f"shot/break/{game}")
+        if b is None:
+            continue
+        found = True
+        us = per_item_ns(b) / 1e3
+        events = b.get("events_per_break", float("nan"))
+        ours = f"| {name} | {us:,.0f} | {events:.0f} | {us / events:.2f} |"
+        if pooltool is not None:
+            peer = pooltool[f"{game}_seeds1to20"]
+            ms = 1e3 * peer["time_s"]["median"]
+            lines.append(f"{ours} {ms:,.1f} | {peer['events']['median']:.0f} | {1e3 * ms / us:,.0f}× | ≥ 300× |")
+        else:
+            lines.append(f"{ours} (pooltool not set up) | | | ≥ 300× |")
+    if not found:
+        return "(not in this run)"
+    random = runs.get("shot/random")
+    threads = sorted((int(name.split(":")[-1]), b) for name, b in runs.items()
+                     if name.startswith("shot/random/") and "threads:" in name)
+    lines.append("")
+    if random is not None:
+        lines.append(f"- Random shots (1–16 balls scattered, some frozen to a ball or a cushion; 0.1–12 m/s, any "
+                     f"direction, tip offsets within 0.7 R), one core: {random['items_per_second']:,.0f} shots/s, "
+                     f"{random.get('events_per_shot', float('nan')):.1f} events a shot.")
+    for count, b in threads:
+        per_core = b["items_per_second"] / count
+        ratio_text = f", {per_core / random['items_per_second']:.2f}× one core's rate per core" if random else ""
+        lines.append(f"- One shot per thread on {count} threads: {b['items_per_second']:,.0f} shots/s{ratio_text}.")
+    if pooltool is not None:
+        lines.append(f"- pooltool on the same machine in the same run: Python "
+                     f"{pooltool.get('python', '?')}, numba {pooltool.get('numba', '?')}; its seed-0 break repeated "
+                     f"20 times: {1e3 * pooltool['9ball_fixed_seed0']['time_s']['median']:.1f} ms (9-ball), "
+                     f"{1e3 * pooltool['8ball_fixed_seed0']['time_s']['median']:.1f} ms (8-ball); other processes' "
+                     f"load meanwhile {pooltool['9ball_seeds1to20'].get('other_processes_cpu_cores', float('nan')):.2f} cores.")
+    return "\n".join(lines)
+
+
 def gas_events(runs):
     """The hard-sphere gas (billiards::simulation::Gas): collisions per second against N, beside the table."""
     sizes = sorted({int(name.split("/")[-1]) for name in runs if name.startswith("gas/events/")})
@@ -323,11 +369,24 @@ def main():
                         "--benchmark_format=json --benchmark_out=bench.json")
     parser.add_argument("--derive", help="billiards-derive to time (five runs, the median is reported)")
     parser.add_argument("--clean-build", help="what a clean build cost, measured by the caller (text)")
+    parser.add_argument("--pooltool", help="the JSON pooltool's bench_breaks.py printed in the same run")
     parser.add_argument("--out-dir", default=HERE, help="where RESULTS.md and throughput.svg go (default: bench/)")
     args = parser.parse_args()
     if not os.path.isdir(args.out_dir):
         fail("--out-dir", args.out_dir, "an existing folder")
     context, runs = load(args.json)
+    pooltool = None
+    if args.pooltool:
+        try:
+            with open(args.pooltool, encoding="utf-8") as f:
+                pooltool = json.load(f)
+            for game in ("9ball", "8ball"):
+                float(pooltool[f"{game}_seeds1to20"]["time_s"]["median"])
+        except OSError as error:
+            fail("--pooltool", args.pooltool, f"a readable file ({error.strerror})")
+        except (UnicodeDecodeError, ValueError, KeyError, TypeError) as error:
+            fail("--pooltool", args.pooltool, f"the JSON of pooltool's bench_breaks.py ({error!r})")
+    args.pooltool_runs = pooltool
     try:
         figure, text = report(args, context, runs)
     except (KeyError, TypeError, ValueError, ZeroDivisionError) as error:
@@ -462,6 +521,17 @@ against the balls of the neighbouring cells and its next event is filed in a cal
 the cost per event should not grow with N (the caches aside). One core; the all-pairs table beside it where it ran the same N.
 
 {gas_events(runs)}
+
+## Shots to rest (billiards::simulation::Shot) against pooltool
+
+A break played to rest event by event, invariant checks off as in a release build; each iteration a new
+rack of 64 seeded ones. pooltool plays the same break (`../shared/peers/pooltool/bench_breaks.py`: its
+default 7-ft table and physics, the cue ball struck at 8 m/s at the apex with b = 0.25, its 1e-3 R
+jitter; its own racks and cue ball spot) on the same machine in the same run of `bench/run.sh`; its
+time is the median over seeds 1–20 after its JIT is warm. The models differ (docs/shot.md), so the
+event counts differ too.
+
+{shot_section(runs, args.pooltool_runs)}
 """
     return figure, text
 

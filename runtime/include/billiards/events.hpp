@@ -114,18 +114,23 @@ template <typename Scalar>
 
 /// The point of (a, b] where p changes sign, given that sign(p(a)) = `before` (±1) and p(b) has the
 /// other sign or is 0, p monotone on [a, b]. Newton's steps where they stay inside the bracket and
-/// shrink it fast, bisection otherwise; returns the bracket's left end once it cannot shrink further, so
-/// that p at the result still has the sign `before` (or the point where p is exactly 0).
+/// shrink it fast, bisection otherwise; a Newton step that moved one end only is followed by a probe
+/// twice the next Newton step's length beyond it (and beyond rounding's reach), which closes the other
+/// end on the root: Newton alone converges from one side and leaves the bracket wide. Returns the
+/// bracket's left end once it cannot shrink further, so that p at the result still has the sign
+/// `before` as evaluated (a point where p evaluates to 0 counts as past the root).
 template <typename Scalar>
 [[nodiscard]] Scalar sign_change(const EventPolynomial<Scalar>& p, const EventPolynomial<Scalar>& slope, Scalar a,
                                  Scalar b, int before) noexcept {
   Scalar x = split(a, b);
   Scalar previous_width = b - a;
+  bool after_newton = false;  // x was a Newton step's
   for (int step = 0; step < 300; ++step) {
     if (!(x > a && x < b)) break;
     const Scalar value = evaluate(p, x);
-    if (value == 0) return x;
-    if ((value > 0) == (before > 0)) {
+    // A zero as evaluated closes the bracket from the right: the exact root may lie just before it.
+    const bool moved_left_end = value != 0 && (value > 0) == (before > 0);
+    if (moved_left_end) {
       a = x;
     } else {
       b = x;
@@ -139,8 +144,17 @@ template <typename Scalar>
     // least in the last step.
     if (a > 0 && b <= 8 * a && newton > a && newton < b && width <= previous_width / 2) {
       x = newton;
+      after_newton = true;
+    } else if (after_newton && newton != x) {
+      // The probe: twice the next Newton step from the end the last one moved, towards the other end, and
+      // past the width within which rounding may give p either sign, so that it lands beyond the root.
+      const Scalar reach = 2 * std::fabs(newton - x) + evaluation_error(p, x) / std::fabs(gradient);
+      const Scalar beyond = moved_left_end ? a + reach : b - reach;
+      x = beyond > a && beyond < b ? beyond : split(a, b);
+      after_newton = false;
     } else {
       x = split(a, b);
+      after_newton = false;
     }
     previous_width = width;
   }

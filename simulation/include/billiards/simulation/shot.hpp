@@ -482,6 +482,7 @@ class Shot {
         const CushionSegment& c = cushions_[k];
         std::array<double, 3> q = cushion_polynomial((r - c.start).dot(c.normal), v.dot(c.normal), a.dot(c.normal), R);
         touching(q, 1);
+        if (stays_apart(q, horizon)) continue;
         const std::optional<double> t = earliest_contact(q, horizon);
         if (!t || excluded(ShotEvent::Kind::cushion, k, *t)) continue;
         // Within the straight part: beyond its ends the jaws take the ball.
@@ -542,6 +543,15 @@ class Shot {
       const std::optional<double> t = earliest_contact(p, pair_horizon);
       if (t && !excluded(ShotEvent::Kind::ball, j, *t)) push(now_ + *t, ShotEvent::Kind::ball, i, j);
     }
+  }
+
+  // Whether a cushion's polynomial, apart now and not convex (c2 ≤ 0: a ball moving off the cushion
+  // as the cloth slows it), stays above its rounding up to the horizon: its least value on [0, horizon]
+  // is at an end. earliest_contact finds the same, after a search for the turning point.
+  [[nodiscard]] static bool stays_apart(const std::array<double, 3>& q, double horizon) {
+    if (!(q[0] > 0 && q[2] <= 0)) return false;
+    const billiards::detail::EventPolynomial<double> p{{q[0], q[1], q[2], 0, 0}, 2};
+    return billiards::detail::evaluate(p, horizon) > billiards::detail::evaluation_error(p, horizon);
   }
 
   // Bodies overlapping by at most overlap_tolerance of a radius (rounding, after a contact) count as

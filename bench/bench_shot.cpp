@@ -1,0 +1,97 @@
+// Shots played to rest by billiards::simulation::Shot (billiards/simulation/shot.hpp), invariant checks
+// off as in a user's release build:
+// - shot/break/9ball and shot/break/8ball: the breaks pooltool's bench plays (../shared/peers/pooltool/
+//   bench_breaks.py): the 7-ft table, racks with 1e-3 R of jitter, the cue ball struck straight at the
+//   apex at 8 m/s a quarter radius above its centre. Each iteration plays the next of 64 seeded racks;
+//   the time per break and per event.
+// - shot/random and shot/random/threads:N: random shots (1–16 balls scattered, some frozen to a ball or
+//   a cushion; 0.1–12 m/s, any direction, tip offsets within 0.7 R, elevation up to 17°) on one core,
+//   and one shot per thread on every core: shots per second.
+#include <billiards/simulation/shot.hpp>
+
+#include <benchmark/benchmark.h>
+
+#include <cmath>
+#include <cstdint>
+#include <random>
+#include <thread>
+#include <vector>
+
+namespace {
+
+using namespace billiards::simulation;
+
+void breaks(benchmark::State& state, Rack kind) {
+  const PoolTable table = pool_table("7ft");
+  const PoolPhysics physics;
+  ShotOptions options;
+  options.check_invariants = false;
+  std::vector<std::vector<PoolBall>> racks;
+  for (std::uint64_t seed = 0; seed < 64; ++seed) racks.push_back(rack(table, physics, kind, 1e-3, seed));
+  const billiards::Cue<double> cue{0.567, 8.0, 0.0, 0.0, 0.0, 0.25, 1.0};
+  std::size_t next = 0;
+  std::uint64_t events = 0;
+  for (auto _ : state) {
+    Shot shot(table, physics, racks[next], options);
+    next = (next + 1) % racks.size();
+    shot.strike(0, cue);
+    shot.play();
+    events += shot.events().size();
+    benchmark::DoNotOptimize(shot.time());
+  }
+  state.SetItemsProcessed(state.iterations());
+  state.counters["events_per_break"] = static_cast<double>(events) / static_cast<double>(state.iterations());
+  state.counters["events_per_second"] = benchmark::Counter(static_cast<double>(events), benchmark::Counter::kIsRate);
+}
+
+// The random shot of `seed`: its table, balls and cue.
+struct RandomShot {
+  PoolTable table;
+  std::vector<PoolBall> balls;
+  billiards::Cue<double> cue;
+};
+RandomShot random_shot(std::uint64_t seed, const PoolPhysics& physics) {
+  static const char* const sizes[] = {"7ft", "8ft", "9ft"};
+  std::mt19937_64 random(seed);
+  std::uniform_real_distribution<double> unit(0, 1);
+  RandomShot shot{pool_table(sizes[seed % 3]), {}, {}};
+  shot.balls = scatter(shot.table, physics, 1 + static_cast<std::size_t>(unit(random) * 16) % 16, seed);
+  const double r = 0.7 * std::sqrt(unit(random)), angle = 2 * M_PI * unit(random);
+  shot.cue = {0.567, 0.1 + 11.9 * unit(random), 2 * M_PI * unit(random), 0.3 * unit(random),
+              r * std::cos(angle), r * std::sin(angle), 1.0};
+  return shot;
+}
+
+void random_shots(benchmark::State& state) {
+  const PoolPhysics physics;
+  ShotOptions options;
+  options.check_invariants = false;
+  // Each thread its own shots: seeds thread, thread + threads, …
+  std::vector<RandomShot> shots;
+  for (std::uint64_t k = 0; k < 256; ++k)
+    shots.push_back(random_shot(k * static_cast<std::uint64_t>(state.threads()) + static_cast<std::uint64_t>(state.thread_index()), physics));
+  std::size_t next = 0;
+  std::uint64_t events = 0;
+  for (auto _ : state) {
+    const RandomShot& s = shots[next];
+    next = (next + 1) % shots.size();
+    Shot shot(s.table, physics, s.balls, options);
+    shot.strike(0, s.cue);
+    shot.play();
+    events += shot.events().size();
+    benchmark::DoNotOptimize(shot.time());
+  }
+  state.SetItemsProcessed(state.iterations());
+  state.counters["events_per_shot"] = static_cast<double>(events) / static_cast<double>(state.iterations());
+}
+
+const bool shot_registered = [] {
+  benchmark::RegisterBenchmark("shot/break/9ball", breaks, Rack::nine_ball)->UseRealTime();
+  benchmark::RegisterBenchmark("shot/break/8ball", breaks, Rack::eight_ball)->UseRealTime();
+  benchmark::RegisterBenchmark("shot/random", random_shots)->UseRealTime();
+  const int cores = static_cast<int>(std::max(1U, std::thread::hardware_concurrency()));
+  if (cores > 1) benchmark::RegisterBenchmark("shot/random", random_shots)->Threads(cores)->UseRealTime();
+  return true;
+}();
+
+}  // namespace

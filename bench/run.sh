@@ -1,0 +1,39 @@
+#!/bin/sh
+# The benchmarks in one run, written to bench/RESULTS.md (and bench/throughput.svg) by bench/report.py:
+# billiards_bench pinned to one core, then — where pooltool's harness is set up (../shared/peers/pooltool:
+# setup.sh has extracted its source) — pooltool's breaks on the same core, so that the ratios compare
+# programs measured side by side.
+#
+#   bench/run.sh [BUILD_DIR] [-- extra billiards_bench arguments]     (default build/)
+#
+# BILLIARDS_BENCH_OUT names the folder RESULTS.md goes to (default bench/).
+set -eu
+here=$(cd "$(dirname "$0")" && pwd)
+root=$(dirname "$here")
+build=${1:-$root/build}
+[ $# -gt 0 ] && shift
+[ "${1:-}" = "--" ] && shift
+out=${BILLIARDS_BENCH_OUT:-$here}
+bench="$build/bench/billiards_bench"
+if [ ! -x "$bench" ]; then
+  echo "bench/run.sh: $bench is not built (cmake --build $build --target billiards_bench)" >&2
+  exit 2
+fi
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+core=0
+command="BILLIARDS_BENCH_MAX_PAIRS=10000000 taskset -c $core $bench --benchmark_min_time=0.1 --benchmark_repetitions=5 --benchmark_report_aggregates_only=true --benchmark_format=json --benchmark_out=bench.json $*"
+BILLIARDS_BENCH_MAX_PAIRS=10000000 taskset -c $core "$bench" --benchmark_min_time=0.1 --benchmark_repetitions=5 \
+  --benchmark_report_aggregates_only=true --benchmark_format=json --benchmark_out="$work/bench.json" "$@" > /dev/null
+peer="$root/../shared/peers/pooltool"
+pooltool_arguments=""
+if [ -f "$peer/env.sh" ] && [ -d "${POOLTOOL_WORK:-$HOME/.cache/pooltool-peer}/src/pooltool" ]; then
+  ( . "$peer/env.sh" && taskset -c $core "$PY" "$peer/bench_breaks.py" ) > "$work/pooltool.json"
+  pooltool_arguments="--pooltool $work/pooltool.json"
+else
+  echo "bench/run.sh: pooltool's harness is not set up ($peer/setup.sh); its breaks are left out" >&2
+fi
+# shellcheck disable=SC2086
+python3 "$here/report.py" "$work/bench.json" --command "$command" --derive "$build/derive/billiards-derive" \
+  --out-dir "$out" $pooltool_arguments
+echo "wrote $out/RESULTS.md"
