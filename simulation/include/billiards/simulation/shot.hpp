@@ -166,6 +166,7 @@ class Shot {
         jaws_(table_.jaws()),
         pockets_(table_.pockets()) {
     validate_physics();
+    close_mouths();
     const double R = physics_.radius;
     for (std::size_t i = 0; i < balls.size(); ++i) {
       const PoolBall& b = balls[i];
@@ -352,6 +353,21 @@ class Shot {
       throw billiards::invalid_argument("Shot", "table.nose_height", number(table_.nose_height),
                                         "a height in [R, 2R) = [" + number(p.radius) + ", " + number(2 * p.radius) +
                                             ")");
+  }
+
+  // Each pocket's capture circle widened, where needed, to reach into both its jaws' reach (a centre
+  // comes no nearer a jaw's axis than R + ρ_jaw), so that no ball can pass between a jaw and the pocket
+  // (pooltool's geometry leaves a gap of 0.2 mm there at the corners, which its pockets' straight walls
+  // behind the jaws close).
+  void close_mouths() {
+    const double R = physics_.radius;
+    for (Pocket& pocket : pockets_) {
+      std::vector<double> gaps;
+      for (const Jaw& jaw : jaws_) gaps.push_back((jaw.centre - pocket.centre).norm() - (R + jaw.radius));
+      std::sort(gaps.begin(), gaps.end());
+      // The two nearest jaws are the pocket's own; 1 µm of overlap.
+      pocket.radius = std::max(pocket.radius, gaps[1] + 1e-6);
+    }
   }
 
   // Ball i at time t ≥ its reference time (within its phase, or beyond it by evolve's own phases).
