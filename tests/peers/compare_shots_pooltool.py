@@ -54,6 +54,9 @@ SHOTS = [
     ("into the side cushion at 45 degrees", [(0.6, 0.5)], (1.5, -45.0, 0.0, 0.0, 0.0), True),
     ("along the length into the foot cushion and back", [(0.4, 0.3)], (2.0, 0.0, 0.0, 0.0, 0.2), True),
     ("a cut towards the corner pocket", [(1.2, 0.6), (1.7, 0.25)], (2.0, math.degrees(math.atan2(0.25 - 0.6, 1.7 - 1.2)) - 4.0, 0.0, 0.0, 0.0), True),
+    ("9-ball break, the rack spread by 1e-3 R, 8 m/s at b = 0.25", [(0.25 * L, W / 2)] + [
+        (0.75 * L + row * 2 * R * 1.001 * math.sqrt(3) / 2, W / 2 + 2 * R * 1.001 * (j - (count - 1) / 2))
+        for row, count in enumerate((1, 2, 3, 2, 1)) for j in range(count)], (8.0, 0.0, 0.0, 0.0, 0.25), False),
     ("three balls: a combination", [(0.5, 0.5), (1.0, 0.5), (1.3, 0.52)], (3.0, 0.0, 0.0, 0.0, 0.0), False),
 ]
 
