@@ -190,9 +190,10 @@ inline std::string trajectories_csv(const Shot& shot, double rate) {
   return out;
 }
 
-/// The table drawn in SVG units of millimetres (y up as on the table): the cloth, cushions, jaws and
-/// pockets; `margin` around the noses.
-inline std::string table_svg(const PoolTable& table, double margin) {
+/// The table drawn in SVG units of millimetres (y up as on the table): the cloth, cushions, jaws and the
+/// shot's pockets (Shot::pockets); `margin` around the noses.
+inline std::string table_svg(const Shot& shot, double margin) {
+  const PoolTable& table = shot.table();
   std::ostringstream out;
   out << std::fixed << std::setprecision(2);
   const auto X = [&](double x) { return 1000 * (x + margin); };
@@ -201,7 +202,7 @@ inline std::string table_svg(const PoolTable& table, double margin) {
       << 1000 * (table.width + 2 * margin) << "\" fill=\"#5d4037\"/>\n"
       << "<rect x=\"" << X(0) << "\" y=\"" << Y(table.width) << "\" width=\"" << 1000 * table.length << "\" height=\""
       << 1000 * table.width << "\" fill=\"#1e7b45\"/>\n";
-  for (const auto& pocket : table.pockets()) {
+  for (const auto& pocket : shot.pockets()) {
     out << "<circle cx=\"" << X(pocket.centre.x()) << "\" cy=\"" << Y(pocket.centre.y()) << "\" r=\""
         << 1000 * pocket.radius << "\" fill=\"#111111\"/>\n";
   }
@@ -233,7 +234,7 @@ inline std::string shot_svg(const Shot& shot, const std::string& title) {
     else if (c == '&') out << "&amp;";
     else out << c;
   }
-  out << "</title>\n" << table_svg(table, margin);
+  out << "</title>\n" << table_svg(shot, margin);
   // The sample times and every event's time, in order.
   std::vector<double> times = sample_times(shot, 200);
   for (const ShotEvent& e : shot.events()) times.push_back(e.time);
@@ -317,7 +318,7 @@ inline std::string shot_html(const Shot& shot, const std::string& title, double 
       << "<span id=\"clock\">0.000 s</span></div>\n"
       << "<svg id=\"table\" xmlns=\"http://www.w3.org/2000/svg\" width=\"" << width / 2.5 << "\" height=\""
       << height / 2.5 << "\" viewBox=\"0 0 " << width << " " << height << "\">\n"
-      << table_svg(table, margin);
+      << table_svg(shot, margin);
   for (std::size_t i = 0; i < n; ++i) {
     out << "<circle id=\"ball-" << i << "\" r=\"" << 1000 * R << "\" fill=\"" << shot_detail::colour(i)
         << "\" stroke=\"#000000\" stroke-width=\"1.5\"/>\n";

@@ -6,6 +6,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <random>
@@ -195,11 +196,36 @@ TEST_CASE("Shot: a ball rolled along the diagonal drops into the corner pocket",
   REQUIRE(shot.events().back().kind == Kind::pocket);
   CHECK(shot.events().back().other == 0);  // the corner at (0, 0)
   CHECK(shot.balls()[0].pocketed);
-  // Its centre entered the capture circle: at the capture circle's radius from its centre.
-  const auto pocket = table.pockets()[0];
+  // Its centre entered the capture circle: at the capture circle's radius from its centre, the table's
+  // circle widened (by 0.2 mm) to meet the reach of the jaws at its mouth.
+  const auto pocket = shot.pockets()[0];
+  CHECK(pocket.centre == table.pockets()[0].centre);
+  CHECK(pocket.radius > table.pockets()[0].radius);
+  CHECK(pocket.radius < table.pockets()[0].radius + 3e-4);
   const PoolBall at_capture = shot.balls_at(shot.events().back().time - 1e-12)[0];
   CHECK((at_capture.position.head<2>() - pocket.centre).norm() == Approx(pocket.radius).epsilon(1e-9));
   for (const ShotEvent& e : shot.events()) CHECK((e.kind == Kind::pocket || e.kind == Kind::transition));
+}
+
+TEST_CASE("Shot: every capture circle meets its jaws' reach; the side pockets' are the table's", "[simulation][shot]") {
+  for (const char* size : {"7ft", "8ft", "9ft"}) {
+    const PoolTable table = billiards::simulation::pool_table(size);
+    const PoolPhysics physics;
+    const Shot shot(table, physics, {});
+    const auto jaws = table.jaws();
+    for (std::size_t k = 0; k < 6; ++k) {
+      INFO(size << " pocket " << k);
+      const auto& pocket = shot.pockets()[k];
+      // The jaws at this pocket's mouth: the two nearest. A centre keeps R + ρ_jaw from a jaw's axis, so
+      // the capture circle must reach within that of both.
+      std::vector<double> gaps;
+      for (const auto& jaw : jaws) gaps.push_back((jaw.centre - pocket.centre).norm() - (physics.radius + jaw.radius));
+      std::sort(gaps.begin(), gaps.end());
+      CHECK(pocket.radius > gaps[0]);
+      CHECK(pocket.radius > gaps[1]);
+      if (k >= 4) CHECK(pocket.radius == table.pockets()[k].radius);  // the side pockets' already reach
+    }
+  }
 }
 
 TEST_CASE("Shot: a ball sent at a side pocket's jaw rebounds from it", "[simulation][shot]") {

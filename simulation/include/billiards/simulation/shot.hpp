@@ -281,6 +281,10 @@ class Shot {
   [[nodiscard]] const PoolTable& table() const noexcept { return table_; }
   /// The physics.
   [[nodiscard]] const PoolPhysics& physics() const noexcept { return physics_; }
+  /// The pockets' capture circles as the shot uses them: the table's, each widened where needed to reach
+  /// into its two jaws' reach (a ball's centre comes no nearer a jaw's axis than R + the jaw's radius), so
+  /// that no ball passes between a jaw and the pocket.
+  [[nodiscard]] const std::vector<Pocket>& pockets() const noexcept { return pockets_; }
   /// The total kinetic energy (translation and rotation) of the balls in play at the last event (J).
   [[nodiscard]] double energy() const {
     double sum = 0;
