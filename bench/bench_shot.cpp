@@ -6,13 +6,14 @@
 //   the time per break and per event.
 // - shot/random and shot/random/threads:N: random shots (1–16 balls scattered, some frozen to a ball or
 //   a cushion; 0.1–12 m/s, any direction, tip offsets within 0.7 R, elevation up to 17°) on one core,
-//   and one shot per thread on every core: shots per second.
+//   and, where BILLIARDS_BENCH_THREADS is set, one shot per thread on every core: shots per second.
 #include <billiards/simulation/shot.hpp>
 
 #include <benchmark/benchmark.h>
 
 #include <cmath>
 #include <cstdint>
+#include <cstdlib>
 #include <random>
 #include <thread>
 #include <vector>
@@ -89,8 +90,11 @@ const bool shot_registered = [] {
   benchmark::RegisterBenchmark("shot/break/9ball", breaks, Rack::nine_ball)->UseRealTime();
   benchmark::RegisterBenchmark("shot/break/8ball", breaks, Rack::eight_ball)->UseRealTime();
   benchmark::RegisterBenchmark("shot/random", random_shots)->UseRealTime();
+  // One shot per thread on every core: unpinned, so it runs where bench/run.sh runs it apart from the
+  // rest (BILLIARDS_BENCH_THREADS set; a run pinned to one core would share that core).
   const int cores = static_cast<int>(std::max(1U, std::thread::hardware_concurrency()));
-  if (cores > 1) benchmark::RegisterBenchmark("shot/random", random_shots)->Threads(cores)->UseRealTime();
+  if (cores > 1 && std::getenv("BILLIARDS_BENCH_THREADS") != nullptr)
+    benchmark::RegisterBenchmark("shot/random", random_shots)->Threads(cores)->UseRealTime();
   return true;
 }();
 

@@ -1,6 +1,6 @@
 #!/bin/sh
 # The benchmarks in one run, written to bench/RESULTS.md (and bench/throughput.svg) by bench/report.py:
-# billiards_bench pinned to one core, then — where pooltool's harness is set up (../shared/peers/pooltool:
+# billiards_bench pinned to one core (its shots on every core unpinned, after), then — where pooltool's harness is set up (../shared/peers/pooltool:
 # setup.sh has extracted its source) — pooltool's breaks on the same core, so that the ratios compare
 # programs measured side by side.
 #
@@ -25,6 +25,14 @@ core=0
 command="BILLIARDS_BENCH_MAX_PAIRS=10000000 taskset -c $core $bench --benchmark_min_time=0.1 --benchmark_repetitions=5 --benchmark_report_aggregates_only=true --benchmark_format=json --benchmark_out=bench.json $*"
 BILLIARDS_BENCH_MAX_PAIRS=10000000 taskset -c $core "$bench" --benchmark_min_time=0.1 --benchmark_repetitions=5 \
   --benchmark_report_aggregates_only=true --benchmark_format=json --benchmark_out="$work/bench.json" "$@" > /dev/null
+# One shot per thread on every core, unpinned, merged into the same results.
+BILLIARDS_BENCH_THREADS=1 "$bench" --benchmark_filter='shot/random.*threads' --benchmark_min_time=0.1 \
+  --benchmark_repetitions=5 --benchmark_report_aggregates_only=true --benchmark_format=json \
+  --benchmark_out="$work/threads.json" > /dev/null
+python3 -c 'import json, sys
+runs = json.load(open(sys.argv[1]))
+runs["benchmarks"] += json.load(open(sys.argv[2]))["benchmarks"]
+json.dump(runs, open(sys.argv[1], "w"))' "$work/bench.json" "$work/threads.json"
 peer="$root/../shared/peers/pooltool"
 pooltool_arguments=""
 if [ -f "$peer/env.sh" ] && [ -d "${POOLTOOL_WORK:-$HOME/.cache/pooltool-peer}/src/pooltool" ]; then

@@ -231,8 +231,8 @@ class Shot {
     e.state.velocity = struck.velocity;
     e.state.velocity.z() = 0;
     e.state.angular_velocity = struck.angular_velocity;
-    record(ShotEvent::Kind::strike, index, index, from);
     changed(index, balls_.size());
+    record(ShotEvent::Kind::strike, index, index, from);
     last_energy_ = energy();
     energy_scale_ = std::max(energy_scale_, last_energy_);
   }
@@ -298,6 +298,7 @@ class Shot {
     double since = 0;
     double duration = 0;  // the phase's duration from `since` (+∞ at rest)
     double horizontal_acceleration[2] = {0, 0};
+    Motion phase = Motion::stationary;  // of `state`
     bool moving = false;  // sliding or rolling: its centre moves
     double reach_end = std::numeric_limits<double>::infinity();  // its predictions' end (absolute time)
     std::array<double, 4> box{};  // x and y ranges of its centre from its last prediction to reach_end
@@ -410,12 +411,28 @@ class Shot {
   // The phase of ball i's reference state: its duration, whether it moves, its acceleration.
   void begin_phase(std::size_t i) {
     Entry& e = balls_[i];
-    const Motion phase = e.pocketed ? Motion::stationary : motion(e.state, physics_.cloth);
-    e.duration = e.pocketed ? std::numeric_limits<double>::infinity() : transition_time(e.state, physics_.cloth);
-    e.moving = phase == Motion::sliding || phase == Motion::rolling;
-    const Eigen::Vector2d a = acceleration(e.state, phase);
-    e.horizontal_acceleration[0] = a.x();
-    e.horizontal_acceleration[1] = a.y();
+    e.horizontal_acceleration[0] = e.horizontal_acceleration[1] = 0;
+    if (e.pocketed) {
+      e.phase = Motion::stationary;
+      e.duration = std::numeric_limits<double>::infinity();
+      e.moving = false;
+      return;
+    }
+    // The contact's slip once for the phase, its duration and its direction (motion, transition_time).
+    const billiards::detail::Slip<double> slip = billiards::detail::slip_of(e.state);
+    e.phase = billiards::detail::motion_with(e.state, slip);
+    e.duration = billiards::detail::phase_duration(e.state, physics_.cloth, e.phase, slip);
+    e.moving = e.phase == Motion::sliding || e.phase == Motion::rolling;
+    const Cloth<double>& cloth = physics_.cloth;
+    if (e.phase == Motion::sliding) {
+      const double k = cloth.sliding_friction * cloth.gravity / slip.speed;
+      e.horizontal_acceleration[0] = -k * slip.vector.x();
+      e.horizontal_acceleration[1] = -k * slip.vector.y();
+    } else if (e.phase == Motion::rolling) {
+      const Eigen::Vector2d a = acceleration(e.state, e.phase);
+      e.horizontal_acceleration[0] = a.x();
+      e.horizontal_acceleration[1] = a.y();
+    }
   }
 
   // Ball i's state now becomes its reference state.
@@ -598,7 +615,7 @@ class Shot {
     event.ball = i;
     event.other = other;
     event.from = from;
-    event.to = balls_[i].pocketed ? Motion::stationary : motion(balls_[i].state, physics_.cloth);
+    event.to = balls_[i].phase;
     event.ball_after = as_pool_ball(balls_[i].state, balls_[i].pocketed);
     event.other_after = kind == ShotEvent::Kind::ball ? as_pool_ball(balls_[other].state, false) : event.ball_after;
     events_.push_back(event);
@@ -621,7 +638,7 @@ class Shot {
     now_ = p.time;
     const std::size_t i = p.ball;
     Entry& e = balls_[i];
-    const Motion from = motion(e.state, physics_.cloth);
+    const Motion from = e.phase;
     std::size_t skip = balls_.size();
     switch (p.kind) {
       case ShotEvent::Kind::transition: {
@@ -688,9 +705,9 @@ class Shot {
         break;
       case ShotEvent::Kind::strike: break;
     }
-    record(p.kind, i, p.other, from);
     changed(i, skip);
     if (p.kind == ShotEvent::Kind::ball) changed(p.other, balls_.size());
+    record(p.kind, i, p.other, from);
     if (options_.check_invariants) check(energy_before_event);
   }
 
