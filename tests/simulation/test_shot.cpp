@@ -207,7 +207,7 @@ TEST_CASE("Shot: a ball rolled along the diagonal drops into the corner pocket",
   for (const ShotEvent& e : shot.events()) CHECK((e.kind == Kind::pocket || e.kind == Kind::transition));
 }
 
-TEST_CASE("Shot: every capture circle meets its jaws' reach; the side pockets' are the table's", "[simulation][shot]") {
+TEST_CASE("Shot: every capture circle meets its jaws' reach, the side pockets' are the table's", "[simulation][shot]") {
   for (const char* size : {"7ft", "8ft", "9ft"}) {
     const PoolTable table = billiards::simulation::pool_table(size);
     const PoolPhysics physics;
