@@ -82,7 +82,7 @@ bool count_argument(const char* text, std::uint64_t& value) {
 
 int main(int argc, char** argv) {
   std::uint64_t breaks = 10000, shots = 10000, first = 0;
-  for (int k = 1; k < argc; ++k) {
+  for (int k = 1; k < argc; k += 2) {
     const std::string option = argv[k];
     std::uint64_t* target = option == "--breaks" ? &breaks : option == "--shots" ? &shots : option == "--first-seed" ? &first : nullptr;
     if (target == nullptr || k + 1 >= argc || !count_argument(argv[k + 1], *target)) {
@@ -90,7 +90,6 @@ int main(int argc, char** argv) {
                    option.c_str(), target == nullptr ? "is not an option" : "needs a whole number");
       return 2;
     }
-    ++k;
   }
   const PoolPhysics physics;
   static const char* const sizes[] = {"7ft", "8ft", "9ft"};
