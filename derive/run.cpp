@@ -126,7 +126,9 @@ int derive_main(int argc, const char* const* argv, const std::vector<ModelEntry>
   app.footer(
       "Exit status: 0 when every claim is verified or an assumption and every kernel is proven, 1 when a "
       "claim failed or a kernel is not proven (each is named on stderr; the audit is still written, the "
-      "kernels are not), 2 on a usage error, 3 when an output cannot be written.");
+      "kernels are not), 2 on a usage error, 3 when an output cannot be written.\n"
+      "Environment: BILLIARDS_PROOF_CACHE=DIR keeps Gappa's answers in DIR and takes them from there on later "
+      "runs (the same Gappa version and script only); unset, every proof is run.");
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& help) {

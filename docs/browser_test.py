@@ -25,6 +25,7 @@ import tempfile
 import zlib
 
 TIME_BUDGET_MS = 20000
+WORKERS = 2
 
 
 def chromium(binary, profile, *arguments):
@@ -110,7 +111,12 @@ def check_page(binary, html_dir, page, least, work):
         if not os.path.exists(os.path.join(os.path.dirname(path), href)):
             problems.append(f"{page}: a link to {href}, which was not built")
     url = "file://" + os.path.abspath(path)
-    dump = chromium(binary, os.path.join(work, "profile"), "--dump-dom", url)
+    # One run of Chromium dumps the DOM and takes the screenshot, both after the time budget.
+    shot = os.path.join(work, "shot.png")
+    if os.path.exists(shot):
+        os.remove(shot)
+    dump = chromium(binary, os.path.join(work, "profile"), "--dump-dom", f"--screenshot={shot}",
+                    "--window-size=1200,1600", url)
     dom = dump.stdout.decode("utf-8", "replace")
     if dump.returncode != 0 or "<body" not in dom:
         return [f"{page}: Chromium failed (exit {dump.returncode}): {dump.stderr.decode()[-300:]}"]
@@ -126,12 +132,8 @@ def check_page(binary, html_dir, page, least, work):
         problems.append(f"{page}: {errors} formulas MathJax could not typeset")
     if raw:
         problems.append(f"{page}: raw TeX left in the rendered text: {', '.join(raw)}")
-    shot = os.path.join(work, "shot.png")
-    if os.path.exists(shot):
-        os.remove(shot)
-    taken = chromium(binary, os.path.join(work, "profile"), f"--screenshot={shot}", "--window-size=1200,1600", url)
     if not os.path.isfile(shot):
-        problems.append(f"{page}: no screenshot (exit {taken.returncode})")
+        problems.append(f"{page}: no screenshot (exit {dump.returncode})")
     else:
         with open(shot, "rb") as f:
             fraction = not_blank_fraction(f.read())

@@ -1,5 +1,6 @@
 #include "emit/rounding.hpp"
 
+#include "core/output_files.hpp"
 #include "core/powers_of_two.hpp"
 #include "print/printer.hpp"
 
@@ -9,11 +10,13 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <iterator>
 #include <map>
 #include <optional>
 #include <set>
@@ -198,12 +201,92 @@ std::string only_what_is_read(const std::string& script) {
   return out;
 }
 
+constexpr int not_run = -2;
+
+// What a command printed (stdout and stderr) and its exit status: −1 where it did not exit (a signal),
+// not_run where it could not be started or waited for.
+std::pair<int, std::string> run_command(const std::string& command) {
+  std::string output;
+  int status = -1;
+  if (FILE* pipe = popen((command + " 2>&1").c_str(), "r")) {
+    char buffer[4096];
+    while (const std::size_t n = std::fread(buffer, 1, sizeof buffer, pipe)) output.append(buffer, n);
+    status = pclose(pipe);
+  }
+  if (status == -1) return {not_run, output};
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, output};
+}
+
+// The proof cache (BILLIARDS_PROOF_CACHE, docs/code_generation.md): Gappa's exit status and output for a
+// script, in a file named by a hash of Gappa's version and the script, which holds both in full. An
+// answer is taken only from a file whose version and script equal this run's, byte for byte (a hash
+// collision, a truncated or foreign file is a miss), and only a proven (0) or unproven (1) answer is
+// kept. Written atomically; an unwritable cache is left alone: the run goes on without it.
+class ProofCache {
+ public:
+  static ProofCache& instance() {
+    static ProofCache cache;
+    return cache;
+  }
+  [[nodiscard]] std::optional<std::pair<int, std::string>> find(const std::string& script) const {
+    if (folder_.empty()) return std::nullopt;
+    std::ifstream file(path(script), std::ios::binary);
+    if (!file) return std::nullopt;
+    const std::string text((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+    // The entry as this run would write it, up to Gappa's output: the header, version, script and status.
+    for (const int status : {0, 1}) {
+      const std::string expected = entry(script, status, "");
+      const std::size_t fixed = expected.size() - 1;  // less the output's closing newline
+      if (text.size() > fixed && text.compare(0, fixed, expected, 0, fixed) == 0 && text.back() == '\n')
+        return std::pair<int, std::string>{status, text.substr(fixed, text.size() - fixed - 1)};
+    }
+    return std::nullopt;
+  }
+  void keep(const std::string& script, int status, const std::string& output) const {
+    if (folder_.empty() || (status != 0 && status != 1)) return;
+    try {
+      write_file_atomically(path(script), entry(script, status, output));
+    } catch (const std::exception&) {
+      // A cache that cannot be written only costs time.
+    }
+  }
+
+ private:
+  ProofCache() {
+    const char* folder = std::getenv("BILLIARDS_PROOF_CACHE");
+    if (folder == nullptr || *folder == '\0') return;
+    const auto [status, version] = run_command("gappa --version");
+    if (status != 0 || version.empty()) return;  // no Gappa to key the answers by: no cache
+    folder_ = folder;
+    version_ = version;
+  }
+  // The entry's text: a header line, the sizes, Gappa's version, the script, the status, the output.
+  [[nodiscard]] std::string entry(const std::string& script, int status, const std::string& output) const {
+    return "billiards proof cache 1\n" + std::to_string(version_.size()) + " " + std::to_string(script.size()) +
+           "\n" + version_ + script + "status " + std::to_string(status) + "\n" + output + "\n";
+  }
+  // 64-bit FNV-1a of the version and the script, in hex.
+  [[nodiscard]] std::filesystem::path path(const std::string& script) const {
+    std::uint64_t hash = 14695981039346656037ULL;
+    for (const std::string* text : {&version_, &script}) {
+      for (const char c : *text) hash = (hash ^ static_cast<unsigned char>(c)) * 1099511628211ULL;
+      hash = (hash ^ 0xffU) * 1099511628211ULL;  // a separator no character equals
+    }
+    char name[24];
+    std::snprintf(name, sizeof name, "%016llx.gappa", static_cast<unsigned long long>(hash));
+    return folder_ / name;
+  }
+  std::filesystem::path folder_;
+  std::string version_;
+};
+
 // Runs Gappa on `script`: its exit status and what it printed.
 std::pair<int, std::string> run_gappa(const std::string& whole) {
   const std::string script = only_what_is_read(whole);
   // The same script (a probe repeated for another guard or case) is answered once.
   static std::map<std::string, std::pair<int, std::string>> answered;
   if (const auto known = answered.find(script); known != answered.end()) return known->second;
+  if (auto cached = ProofCache::instance().find(script)) return answered[script] = std::move(*cached);
   std::string path = (std::filesystem::temp_directory_path() / "billiards-gappa-XXXXXX").string();
   std::vector<char> name(path.begin(), path.end());
   name.push_back('\0');
@@ -215,16 +298,11 @@ std::pair<int, std::string> run_gappa(const std::string& whole) {
     std::ofstream file(path);
     file << script;
   }
-  std::string output;
-  int status = -1;
-  if (FILE* pipe = popen(("gappa '" + path + "' 2>&1").c_str(), "r")) {
-    char buffer[4096];
-    while (const std::size_t n = std::fread(buffer, 1, sizeof buffer, pipe)) output.append(buffer, n);
-    status = pclose(pipe);
-  }
+  const auto [status, output] = run_command("gappa '" + path + "'");
   std::filesystem::remove(path);
-  if (status == -1) throw std::runtime_error("cannot run Gappa");
-  return answered[script] = {WIFEXITED(status) ? WEXITSTATUS(status) : -1, output};
+  if (status == not_run) throw std::runtime_error("cannot run Gappa");
+  ProofCache::instance().keep(script, status, output);
+  return answered[script] = {status, output};
 }
 
 // ---- the kernel as Gappa reads it ------------------------------------------------------------------
@@ -757,6 +835,7 @@ std::vector<KernelProblem> prove_rounding(const CppFunction& printed, const Kern
     int pipe = -1;
     std::string found;
   };
+  ProofCache::instance();  // opened here, once, not in each process below
   std::vector<std::vector<ex>> cases = kernel.rounding_cases;
   if (cases.empty()) cases.push_back({});
   std::vector<Job> jobs;
