@@ -57,8 +57,10 @@ elseif(STEP STREQUAL "pkg_config")
 elseif(STEP STREQUAL "examples")
   # examples/ is a project of its own that finds the installed package, as a user's program would.
   file(REMOVE_RECURSE ${SCRATCH}/examples)
+  # No build type (the compiler's defaults, unoptimised): what is checked is that the installed package
+  # is found and the programs build, link and run; the main build compiles them optimised.
   run(${CMAKE_COMMAND} -S ${SOURCE}/examples -B ${SCRATCH}/examples -DCMAKE_CXX_COMPILER=${CXX}
-      -DCMAKE_BUILD_TYPE=Release -DCMAKE_PREFIX_PATH=${prefix})
+      -DCMAKE_BUILD_TYPE= -DCMAKE_PREFIX_PATH=${prefix})
   cmake_host_system_information(RESULT processors QUERY NUMBER_OF_LOGICAL_CORES)
   run(${CMAKE_COMMAND} --build ${SCRATCH}/examples --parallel ${processors})
   run(${SCRATCH}/examples/billiards-table --collisions 1000 --max-drift 1e-12)
