@@ -7,8 +7,10 @@
 //   prints a Markdown table per family of polynomials: how many, how many contacts, misses (an exact
 //   contact in [0, T] that the finder does not report, or reports later than it is), false contacts
 //   (reported where there is none, beyond a graze closer than the rounding of p), wrong calls at t = 0,
-//   and the worst relative error of the time. Exit status 0 when there is no miss, no false contact and
-//   no wrong call at t = 0; 1 otherwise; 2 on a usage error.
+//   how many the finder's Bernstein bound proved apart (detail::stays_above) and how many of those
+//   unsoundly (the exact p within 16 ε Σ |c_k| T^k of 0 somewhere on [0, T]), and the worst relative error
+//   of the time. Exit status 0 when there is no miss, no false contact, no wrong call at t = 0 and no
+//   unsound proof; 1 otherwise; 2 on a usage error.
 #include "exact.hpp"
 
 #include <billiards/events.hpp>
@@ -150,6 +152,7 @@ ExactContact exact_earliest(Rational p, const numeric& horizon) {
 
 struct Row {
   long polynomials = 0, contacts = 0, misses = 0, false_contacts = 0, grazes_reported = 0, wrong_at_zero = 0;
+  long proven_apart = 0, unsound_proofs = 0;
   double worst = 0;
   std::string first_failure;
 };
@@ -159,6 +162,23 @@ std::string describe(const std::array<Scalar, 5>& c, Scalar horizon) {
   std::string text = "c = (";
   for (std::size_t k = 0; k < 5; ++k) text += (k ? ", " : "") + billiards::detail::to_text(c[k]);
   return text + "), T = " + billiards::detail::to_text(horizon);
+}
+
+// Whether the exact p stays above 16 ε Σ |c_k| T^k on [0, T], as detail::stays_above claims where it
+// holds: p less that bound is positive at 0 and has no root in (0, T] (its Sturm sequence).
+template <typename Scalar>
+bool exceeds_rounding_bound(const Rational& p, Scalar horizon) {
+  const numeric T = billiards::accuracy::exact_rational(horizon);
+  numeric size = 0, power = 1;
+  for (const numeric& c : p) {
+    size += GiNaC::abs(c) * power;
+    power *= T;
+  }
+  Rational q = p;
+  q[0] -= 16 * billiards::accuracy::exact_rational(std::numeric_limits<Scalar>::epsilon()) * size;
+  q = trimmed(q);
+  if (q.empty() || !(q[0] > 0)) return false;
+  return q.size() < 2 || roots_in(sturm(q), 0, T) == 0;
 }
 
 template <typename Scalar>
@@ -172,6 +192,17 @@ void check(const std::array<Scalar, 5>& c, Scalar horizon, Row& row) {
     ++counter;
     if (row.first_failure.empty()) row.first_failure = what + ": " + describe(c, horizon);
   };
+  // The polynomial as earliest_contact holds it, for its rounding bound (detail::evaluation_error) and
+  // its proof of staying apart (detail::stays_above, tried wherever earliest_contact may try it).
+  billiards::detail::EventPolynomial<Scalar> as_held;
+  for (std::size_t k = 0; k < 5; ++k) as_held.c[k] = c[k];
+  as_held.degree = 4;
+  as_held = billiards::detail::trimmed(as_held);
+  if (as_held.c[0] > 0 && as_held.degree >= 2 && horizon > 0 && billiards::detail::stays_above(as_held, horizon)) {
+    ++row.proven_apart;
+    if (!exceeds_rounding_bound(trimmed(p), horizon))
+      fail(row.unsound_proofs, "proven apart by its Bernstein coefficients, but within 16 ε Σ|c_k| T^k of 0");
+  }
   if (exact.found) ++row.contacts;
   if (exact.found && exact.low.is_zero() && exact.high.is_zero()) {
     if (!found || *found != 0) fail(row.wrong_at_zero, "a contact at t = 0 not reported");
@@ -186,11 +217,6 @@ void check(const std::array<Scalar, 5>& c, Scalar horizon, Row& row) {
     return;
   }
   Rational trimmed_p = trimmed(p);
-  // The polynomial as earliest_contact holds it, for its rounding bound (detail::evaluation_error).
-  billiards::detail::EventPolynomial<Scalar> as_held;
-  for (std::size_t k = 0; k < 5; ++k) as_held.c[k] = c[k];
-  as_held.degree = 4;
-  as_held = billiards::detail::trimmed(as_held);
   if (!exact.found && found) {
     // Only a graze closer than rounding may be reported where exact arithmetic finds none.
     const numeric value = evaluate(trimmed_p, billiards::accuracy::exact_rational(*found));
@@ -230,7 +256,7 @@ void check(const std::array<Scalar, 5>& c, Scalar horizon, Row& row) {
 class Families {
  public:
   explicit Families(std::uint64_t seed) : random_(seed) {}
-  static constexpr int count = 8;
+  static constexpr int count = 9;
   static const char* name(int family) {
     static const char* names[count] = {"two balls on the cloth (phases' accelerations)",
                                        "a ball and a straight cushion",
@@ -239,7 +265,8 @@ class Families {
                                        "roots spread over 18 decades",
                                        "a leading coefficient near zero",
                                        "touching or overlapping at t = 0",
-                                       "lower degrees (c4 = 0, c3 = 0, …)"};
+                                       "lower degrees (c4 = 0, c3 = 0, …)",
+                                       "the horizon within a few ulps of a root"};
     return names[family];
   }
 
@@ -274,6 +301,16 @@ class Families {
         c[3] = unit_(random_) < 0.5 ? 0.0 : sign() * uniform(0, 2);
         c[4] = unit_(random_) < 0.5 ? 0.0 : uniform(0, 2);
         return {c, uniform(0, 5)};
+      }
+      case 8: {
+        // Two roots and a quadratic without any, rounded; the horizon at the first root, moved by up to
+        // 4 ulps either way: p at the horizon is within rounding of 0, from either side.
+        const double r1 = uniform(0.01, 2), r2 = r1 + uniform(0, 2);
+        auto [c, horizon] = from_roots({r1, r2}, positive_quadratic(), 1);
+        double end = r1;
+        const int ulps = static_cast<int>(unit_(random_) * 9) - 4;
+        for (int k = 0; k < std::abs(ulps); ++k) end = std::nextafter(end, ulps < 0 ? 0.0 : 10.0);
+        return {c, end};
       }
       default: {
         auto [c, horizon] = pair();
@@ -386,12 +423,14 @@ int main(int argc, char** argv) {
   }
   bool failed = false;
   std::cout << "| polynomials | type | count | contacts | misses | false contacts | grazes within rounding reported | "
-               "wrong at t = 0 | worst relative error of t |\n|---|---|---:|---:|---:|---:|---:|---:|---:|\n";
+               "wrong at t = 0 | proven apart (unsound) | worst relative error of t |\n"
+               "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|\n";
   for (const auto& [key, row] : rows) {
     std::cout << "| " << Families::name(key.first) << " | " << key.second << " | " << row.polynomials << " | "
               << row.contacts << " | " << row.misses << " | " << row.false_contacts << " | " << row.grazes_reported
-              << " | " << row.wrong_at_zero << " | " << row.worst << " |\n";
-    if (row.misses + row.false_contacts + row.wrong_at_zero > 0) {
+              << " | " << row.wrong_at_zero << " | " << row.proven_apart << " (" << row.unsound_proofs << ") | "
+              << row.worst << " |\n";
+    if (row.misses + row.false_contacts + row.wrong_at_zero + row.unsound_proofs > 0) {
       failed = true;
       std::cerr << "billiards-contact-roots: " << Families::name(key.first) << " (" << key.second
                 << "): " << row.first_failure << "\n";

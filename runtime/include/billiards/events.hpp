@@ -79,13 +79,12 @@ template <typename Scalar>
 }
 
 /// p(t) by Horner's rule: for finite coefficients and a finite t ≥ 0 never NaN (an overflow gives the
-/// sign of the terms that overflowed).
+/// sign of the terms that overflowed). The coefficients above the degree are zero, so that starting from
+/// c[4] gives the same result as starting from the leading one, in straight-line code.
 template <typename Scalar>
 [[nodiscard]] Scalar evaluate(const EventPolynomial<Scalar>& p, Scalar t) noexcept {
   if (p.degree < 0) return Scalar(0);
-  Scalar r = p.c[static_cast<std::size_t>(p.degree)];
-  for (int k = p.degree - 1; k >= 0; --k) r = r * t + p.c[static_cast<std::size_t>(k)];
-  return r;
+  return (((p.c[4] * t + p.c[3]) * t + p.c[2]) * t + p.c[1]) * t + p.c[0];
 }
 
 /// A bound on the rounding error of evaluate(p, t): 2 d ε Σ |c_k| t^k (Horner's running error bound,
@@ -93,70 +92,97 @@ template <typename Scalar>
 template <typename Scalar>
 [[nodiscard]] Scalar evaluation_error(const EventPolynomial<Scalar>& p, Scalar t) noexcept {
   if (p.degree < 1) return Scalar(0);
-  Scalar r = std::fabs(p.c[static_cast<std::size_t>(p.degree)]);
-  for (int k = p.degree - 1; k >= 0; --k) r = r * t + std::fabs(p.c[static_cast<std::size_t>(k)]);
+  using std::fabs;
+  const Scalar r = (((fabs(p.c[4]) * t + fabs(p.c[3])) * t + fabs(p.c[2])) * t + fabs(p.c[1])) * t + fabs(p.c[0]);
   return Scalar(2 * p.degree) *
          (std::numeric_limits<Scalar>::epsilon() * r + std::numeric_limits<Scalar>::denorm_min());
 }
 
-/// A point strictly inside (a, b) for bisection: the midpoint, or the geometric mean where b/a > 8 and
-/// b·2⁻³² where a = 0, so that a root many decades below b is reached in few steps. Returns a or b once
-/// the interval cannot be split.
+/// A point strictly inside (a, b) for bisection: the midpoint, or the geometric mean where a > 0 and
+/// b/a > 8, so that a root many decades below b is reached in few steps. Returns a or b once the interval
+/// cannot be split.
 template <typename Scalar>
 [[nodiscard]] Scalar split(Scalar a, Scalar b) noexcept {
-  if (a == 0) {
-    const Scalar low = b * Scalar(0x1p-32);
-    return low > 0 ? low : b / 2;
-  }
-  if (b > 8 * a) return std::sqrt(a) * std::sqrt(b);
+  if (a > 0 && b > 8 * a) return std::sqrt(a) * std::sqrt(b);
   return a + (b - a) / 2;
 }
 
-/// The point of (a, b] where p changes sign, given that sign(p(a)) = `before` (±1) and p(b) has the
-/// other sign or is 0, p monotone on [a, b]. Newton's steps where they stay inside the bracket and
-/// shrink it fast, bisection otherwise; a Newton step that moved one end only is followed by a probe
-/// twice the next Newton step's length beyond it (and beyond rounding's reach), which closes the other
-/// end on the root: Newton alone converges from one side and leaves the bracket wide. Returns the
-/// bracket's left end once it cannot shrink further, so that p at the result still has the sign
-/// `before` as evaluated (a point where p evaluates to 0 counts as past the root).
+/// The point of (a, b] where p changes sign, given p(a) = `at_a` ≠ 0 and p(b) = `at_b` of the other
+/// sign or 0 (as evaluated), p monotone on [a, b]. Each step shrinks a bracket [a, b] around the change by
+/// evaluating p at a point inside it:
+/// - Newton's step from the last point, where it lands inside and the bracket shrank in the last step;
+///   a Newton step is followed by a probe twice the next Newton step's length beyond it (and beyond
+///   rounding's reach), which closes the other end on the root: Newton alone converges from one side
+///   and leaves the bracket wide;
+/// - after a point where p evaluates to 0, a step back from it past rounding's reach (doubled each time
+///   it lands on 0 again);
+/// - otherwise the regula falsi between the ends, Illinois' variant (the value kept at an end that has
+///   not moved for two steps is halved, so that both ends close in);
+/// - and a split (the midpoint, or the geometric mean across decades) after three steps that did not
+///   halve the bracket.
+/// Returns the bracket's left end once it cannot shrink further (a width of 2 ε b), so that p at the
+/// result still has the sign of `at_a` as evaluated (a point where p evaluates to 0 counts as past the
+/// root); always within 300 evaluations.
 template <typename Scalar>
 [[nodiscard]] Scalar sign_change(const EventPolynomial<Scalar>& p, const EventPolynomial<Scalar>& slope, Scalar a,
-                                 Scalar b, int before) noexcept {
-  Scalar x = split(a, b);
+                                 Scalar b, Scalar at_a, Scalar at_b) noexcept {
+  const bool before = at_a > 0;
+  // The regula falsi's values at the ends (Illinois-halved).
+  Scalar falsi_a = at_a, falsi_b = at_b;
+  const auto falsi = [&] {
+    const Scalar x = a + (b - a) * (falsi_a / (falsi_a - falsi_b));
+    return x > a && x < b ? x : split(a, b);
+  };
+  Scalar x = falsi();
   Scalar previous_width = b - a;
+  Scalar back = 0;            // the last step back from a zero
   bool after_newton = false;  // x was a Newton step's
+  int slow = 0;               // steps in a row that did not halve the bracket
+  int last_moved = 0;         // the end the last step moved: −1 a, +1 b
   for (int step = 0; step < 300; ++step) {
     if (!(x > a && x < b)) break;
     const Scalar value = evaluate(p, x);
     // A zero as evaluated closes the bracket from the right: the exact root may lie just before it.
-    const bool moved_left_end = value != 0 && (value > 0) == (before > 0);
+    const bool moved_left_end = value != 0 && (value > 0) == before;
     if (moved_left_end) {
       a = x;
+      falsi_a = value;
+      if (last_moved < 0) falsi_b /= 2;
+      last_moved = -1;
     } else {
       b = x;
+      falsi_b = value;
+      if (last_moved > 0) falsi_a /= 2;
+      last_moved = 1;
     }
     const Scalar width = b - a;
     if (!(width > 2 * std::numeric_limits<Scalar>::epsilon() * b)) break;
+    slow = width <= previous_width / 2 ? 0 : slow + 1;
+    previous_width = width;
     const Scalar gradient = evaluate(slope, x);
     const Scalar newton = gradient != 0 ? x - value / gradient : x;
-    // Newton's step once the bracket spans less than a factor of 8 (before that the geometric split
-    // closes in on a root many decades below b faster), where it lands inside and the bracket halved at
-    // least in the last step.
-    if (a > 0 && b <= 8 * a && newton > a && newton < b && width <= previous_width / 2) {
-      x = newton;
-      after_newton = true;
-    } else if (after_newton && newton != x) {
+    const bool was_newton = after_newton;
+    after_newton = false;
+    if (value == 0) {
+      back = std::max({2 * back, std::numeric_limits<Scalar>::epsilon() * b,
+                       gradient != 0 ? evaluation_error(p, x) / std::fabs(gradient) : Scalar(0)});
+      x = b - back;
+      if (!(x > a && x < b)) x = split(a, b);
+      continue;
+    }
+    back = 0;
+    if (was_newton && newton != x) {
       // The probe: twice the next Newton step from the end the last one moved, towards the other end, and
       // past the width within which rounding may give p either sign, so that it lands beyond the root.
       const Scalar reach = 2 * std::fabs(newton - x) + evaluation_error(p, x) / std::fabs(gradient);
       const Scalar beyond = moved_left_end ? a + reach : b - reach;
       x = beyond > a && beyond < b ? beyond : split(a, b);
-      after_newton = false;
+    } else if (newton > a && newton < b && slow < 2) {
+      x = newton;
+      after_newton = true;
     } else {
-      x = split(a, b);
-      after_newton = false;
+      x = slow >= 3 ? split(a, b) : falsi();
     }
-    previous_width = width;
   }
   return a;
 }
@@ -185,12 +211,52 @@ int sign_changes(const EventPolynomial<Scalar>& p, Scalar lo, Scalar hi, Scalar*
   for (int i = 0; i <= turns; ++i) {
     const Scalar a = breaks[static_cast<std::size_t>(i)], b = breaks[static_cast<std::size_t>(i + 1)];
     const Scalar right = evaluate(p, b);
-    if (left != 0 && right != 0 && (left > 0) != (right > 0)) out[found++] = sign_change(p, slope, a, b, left > 0 ? 1 : -1);
+    if (left != 0 && right != 0 && (left > 0) != (right > 0)) out[found++] = sign_change(p, slope, a, b, left, right);
     left = right;
   }
   return found;
 }
 
+/// Whether the Bernstein coefficients `b` (degree 4) of a polynomial on an interval all exceed `margin`,
+/// or those of its halves (de Casteljau's subdivision), `depth` times over, do: each bounds the polynomial
+/// from below on its interval. An end at or below the margin fails at once.
+template <typename Scalar>
+[[nodiscard]] bool bernstein_above(const std::array<Scalar, 5>& b, Scalar margin, int depth) noexcept {
+  if (!(b[0] > margin && b[4] > margin)) return false;
+  if (b[1] > margin && b[2] > margin && b[3] > margin) return true;
+  if (depth == 0) return false;
+  const Scalar l1 = (b[0] + b[1]) / 2, m1 = (b[1] + b[2]) / 2, n1 = (b[2] + b[3]) / 2, o1 = (b[3] + b[4]) / 2;
+  const Scalar l2 = (l1 + m1) / 2, m2 = (m1 + n1) / 2, n2 = (n1 + o1) / 2;
+  const Scalar l3 = (l2 + m2) / 2, m3 = (m2 + n2) / 2;
+  const Scalar middle = (l3 + m3) / 2;
+  return bernstein_above<Scalar>({b[0], l1, l2, l3, middle}, margin, depth - 1) &&
+         bernstein_above<Scalar>({middle, m3, n2, o1, b[4]}, margin, depth - 1);
+}
+
+/// Whether p stays above what rounding can tell from 0 on all of [0, horizon], shown by the Bernstein
+/// coefficients of p(horizon s) on s in [0, 1] and, where those fall short, on its halves, quarters and
+/// eighths. Rounding moves the coefficients and their halving by at most 11 ε S (S = Σ |c_k| horizon^k),
+/// and p's evaluation by at most 8 ε S (evaluation_error); the margin, 64 (ε S + the smallest subnormal),
+/// exceeds both, so that where this holds the exact p exceeds 16 ε S on [0, horizon], p as evaluated
+/// stays above its evaluation error there, and earliest_contact's search would find no contact either.
+template <typename Scalar>
+[[nodiscard]] bool stays_above(const EventPolynomial<Scalar>& p, Scalar horizon) noexcept {
+  std::array<Scalar, 5> a{};  // a_k = c_k horizon^k
+  Scalar power = 1, size = 0;
+  for (int k = 0; k <= p.degree; ++k) {
+    a[static_cast<std::size_t>(k)] = p.c[static_cast<std::size_t>(k)] * power;
+    size += std::fabs(a[static_cast<std::size_t>(k)]);
+    power *= horizon;
+  }
+  // Sums of two coefficients must not overflow (and a NaN or an infinity fails every comparison).
+  if (!(size <= std::numeric_limits<Scalar>::max() / 4)) return false;
+  const Scalar margin =
+      Scalar(64) * (std::numeric_limits<Scalar>::epsilon() * size + std::numeric_limits<Scalar>::denorm_min());
+  // b_i = Σ_k C(i, k)/C(4, k) a_k.
+  const std::array<Scalar, 5> b{a[0], a[0] + a[1] / 4, a[0] + a[1] / 2 + a[2] / 6,
+                                a[0] + Scalar(0.75) * a[1] + a[2] / 2 + a[3] / 4, a[0] + a[1] + a[2] + a[3] + a[4]};
+  return bernstein_above(b, margin, 3);
+}
 }  // namespace detail
 
 /// The earliest time t in [0, horizon] at which the bodies whose contact polynomial is `c` (c[k] the
@@ -241,6 +307,8 @@ template <typename Scalar, std::size_t N>
     if (lowest > Scalar(4 * p.degree + 4) * std::numeric_limits<Scalar>::epsilon() * size) return std::nullopt;
   }
   if (!(horizon > 0)) return std::nullopt;
+  // Apart now and, by its Bernstein coefficients, all the way to the horizon: no contact to search for.
+  if (p.c[0] > 0 && p.degree >= 2 && detail::stays_above(p, horizon)) return std::nullopt;
   // The turning points of p in (0, horizon) split it into monotone pieces; walk them in order.
   const detail::EventPolynomial<Scalar> slope = detail::derivative(p);
   std::array<Scalar, 6> breaks{};
@@ -252,7 +320,7 @@ template <typename Scalar, std::size_t N>
     const Scalar a = breaks[static_cast<std::size_t>(i)], b = breaks[static_cast<std::size_t>(i + 1)];
     const Scalar right = detail::evaluate(p, b);
     if (left > 0 && right <= 0) {
-      const Scalar t = detail::sign_change(p, slope, a, b, 1);
+      const Scalar t = detail::sign_change(p, slope, a, b, left, right);
       // Not t = 0 where the bodies are apart at 0: the root lies below the smallest step of the type.
       return t > 0 ? t : std::numeric_limits<Scalar>::denorm_min();
     }

@@ -382,6 +382,18 @@ class Shot {
     return evolve(e.state, physics_.cloth, t - e.since);
   }
 
+  // Ball i's centre and velocity at time t within its phase, x0 + v0 τ + ½ a τ² and v0 + a τ (τ = t less
+  // its reference time) with the phase's constant acceleration: the motion at() follows, without its
+  // spin and phase changes, for the many pairs each event predicts.
+  [[nodiscard]] std::pair<Eigen::Vector2d, Eigen::Vector2d> centre_and_velocity(std::size_t i, double t) const {
+    const Entry& e = balls_[i];
+    const Eigen::Vector2d r(e.state.position.x(), e.state.position.y()), v(e.state.velocity.x(), e.state.velocity.y());
+    if (e.pocketed || !e.moving || !(t > e.since)) return {r, v};
+    const double tau = t - e.since;
+    const Eigen::Vector2d a(e.horizontal_acceleration[0], e.horizontal_acceleration[1]);
+    return {r + tau * v + (0.5 * tau * tau) * a, v + tau * a};
+  }
+
   [[nodiscard]] double energy_of(std::size_t i, double t) const {
     if (balls_[i].pocketed) return 0;
     const BallOnCloth<double> s = at(i, t);
@@ -405,7 +417,7 @@ class Shot {
     } else {
       return Eigen::Vector2d::Zero();
     }
-    return -size * (direction / std::hypot(direction.x(), direction.y()));
+    return -size * (direction / billiards::detail::horizontal_length(direction.x(), direction.y()));
   }
 
   // The phase of ball i's reference state: its duration, whether it moves, its acceleration.
@@ -570,9 +582,8 @@ class Shot {
       if (!(o.box[0] - 2 * R <= e.box[1] && e.box[0] <= o.box[1] + 2 * R && o.box[2] - 2 * R <= e.box[3] &&
             e.box[2] <= o.box[3] + 2 * R))
         continue;
-      const BallOnCloth<double> s = at(j, now_);
-      const Eigen::Vector2d dr(s.position.x() - r.x(), s.position.y() - r.y());
-      const Eigen::Vector2d dv(s.velocity.x() - v.x(), s.velocity.y() - v.y());
+      const auto [position, velocity] = centre_and_velocity(j, now_);
+      const Eigen::Vector2d dr = position - r, dv = velocity - v;
       const Eigen::Vector2d da(o.horizontal_acceleration[0] - a.x(), o.horizontal_acceleration[1] - a.y());
       std::array<double, 5> p = contact_polynomial<double>(dr, dv, da, 2 * R);
       touching(p, 4 * R);
