@@ -68,6 +68,27 @@ inline double parse_number(const std::string& word, const std::string& where, co
   return value;
 }
 
+/// One line of `in` into `line` (without its '\n'), at most longest_setup_line characters: never more is
+/// held in memory (a longer line throws std::invalid_argument with `where` and `expected`, as does a
+/// file that cannot be read). Returns whether the line ended with '\n'.
+inline bool read_bounded_line(std::istream& in, std::string& line, const std::string& where, const char* expected) {
+  line.clear();
+  bool ended = false;
+  for (int c; (c = in.get()) != std::char_traits<char>::eof();) {
+    if (c == '\n') {
+      ended = true;
+      break;
+    }
+    if (line.size() == longest_setup_line) {
+      throw std::invalid_argument(where + "the line is longer than " + std::to_string(longest_setup_line) +
+                                  " characters ('" + excerpt(line) + "'), expected " + expected);
+    }
+    line.push_back(static_cast<char>(c));
+  }
+  if (in.bad()) throw std::invalid_argument(where + "cannot read the file: " + std::strerror(errno));
+  return ended;
+}
+
 /// Reads a setup's lines: for each directive, `handle(where, directive, words)` with `where` the
 /// "source:line: " prefix for messages and `words` the rest of the line ('#' starts a comment; blank
 /// lines are skipped). A line beyond longest_setup_line characters or a file beyond largest_setup_file
@@ -78,21 +99,7 @@ void read_directives(std::istream& in, const std::string& source, Handle handle)
   std::size_t total = 0;
   for (int number = 1;; ++number) {
     const std::string where = source + ":" + std::to_string(number) + ": ";
-    // One line, at most longest_setup_line characters: never more is held in memory.
-    line.clear();
-    bool ended = false;
-    for (int c; (c = in.get()) != std::char_traits<char>::eof();) {
-      if (c == '\n') {
-        ended = true;
-        break;
-      }
-      if (line.size() == longest_setup_line) {
-        throw std::invalid_argument(where + "the line is longer than " + std::to_string(longest_setup_line) +
-                                    " characters ('" + excerpt(line) + "'), expected one directive per line");
-      }
-      line.push_back(static_cast<char>(c));
-    }
-    if (in.bad()) throw std::invalid_argument(where + "cannot read the file: " + std::strerror(errno));
+    const bool ended = read_bounded_line(in, line, where, "one directive per line");
     total += line.size() + 1;
     if (total > largest_setup_file) {
       throw std::invalid_argument(where + "the file is larger than " +

@@ -965,6 +965,27 @@ void validate(const GasSetup<D>& setup) {
 
 namespace gas {
 
+/// Gives the balls of `setup` (at least two) Gaussian velocities drawn with `seed`, of total momentum
+/// zero, rescaled to kT = 1 for balls of mass 1 (Σ v² = d N).
+template <int D>
+void thermal_velocities(GasSetup<D>& setup, std::uint64_t seed) {
+  using Vector = Eigen::Matrix<double, D, 1>;
+  std::mt19937_64 random(seed);
+  std::normal_distribution<double> gaussian;
+  for (Ball<D>& b : setup.balls) {
+    for (int k = 0; k < D; ++k) b.velocity[k] = gaussian(random);
+  }
+  const auto n = static_cast<double>(setup.balls.size());
+  Eigen::Matrix<long double, D, 1> momentum = Eigen::Matrix<long double, D, 1>::Zero();
+  for (const Ball<D>& b : setup.balls) momentum += b.velocity.template cast<long double>();
+  const Vector mean = momentum.template cast<double>() / n;
+  for (Ball<D>& b : setup.balls) b.velocity -= mean;
+  long double squares = 0;
+  for (const Ball<D>& b : setup.balls) squares += static_cast<long double>(b.velocity.squaredNorm());
+  const double scale = 1 / std::sqrt(static_cast<double>(squares / (D * static_cast<long double>(n))));
+  for (Ball<D>& b : setup.balls) b.velocity *= scale;
+}
+
 /// The lattice start of `options` (validated: std::invalid_argument naming the option): N balls of
 /// diameter 1 and mass 1 on a square (2-D) or FCC (3-D) lattice filling the box of packing fraction η,
 /// with Gaussian velocities of total momentum zero, rescaled to kT = 1.
@@ -1004,20 +1025,7 @@ GasSetup<D> lattice(const Options& options) {
       }
     }
   }
-  std::mt19937_64 random(options.seed);
-  std::normal_distribution<double> gaussian;
-  for (Ball<D>& b : setup.balls) {
-    for (int k = 0; k < D; ++k) b.velocity[k] = gaussian(random);
-  }
-  Eigen::Matrix<long double, D, 1> momentum = Eigen::Matrix<long double, D, 1>::Zero();
-  for (const Ball<D>& b : setup.balls) momentum += b.velocity.template cast<long double>();
-  const Vector mean = momentum.template cast<double>() / static_cast<double>(options.balls);
-  for (Ball<D>& b : setup.balls) b.velocity -= mean;
-  long double squares = 0;
-  for (const Ball<D>& b : setup.balls) squares += static_cast<long double>(b.velocity.squaredNorm());
-  const double scale =
-      1 / std::sqrt(static_cast<double>(squares / (D * static_cast<long double>(options.balls))));
-  for (Ball<D>& b : setup.balls) b.velocity *= scale;
+  thermal_velocities(setup, options.seed);
   return setup;
 }
 
