@@ -193,7 +193,7 @@ void check(const std::array<Scalar, 5>& c, Scalar horizon, Row& row) {
     if (row.first_failure.empty()) row.first_failure = what + ": " + describe(c, horizon);
   };
   // The polynomial as earliest_contact holds it, for its rounding bound (detail::evaluation_error) and
-  // its proof of staying apart (detail::stays_above, tried wherever earliest_contact may try it).
+  // its proof of staying apart (detail::stays_above, applied wherever earliest_contact may apply it).
   billiards::detail::EventPolynomial<Scalar> as_held;
   for (std::size_t k = 0; k < 5; ++k) as_held.c[k] = c[k];
   as_held.degree = 4;
