@@ -1,13 +1,19 @@
 // billiards-gas: the hard-sphere gas of billiards::simulation (billiards/simulation/gas.hpp): N balls of
-// diameter 1 and mass 1 at kT = 1 in a periodic box; prints one JSON object with the compressibility
-// factor from the collision virial, the mean free time and the checks of energy, momentum and overlap.
+// diameter 1 and mass 1 at kT = 1 in a periodic box, or a snapshot's; prints one JSON object with the
+// compressibility factor and the pressure from the collision virial, the mean free time, the equation of
+// state and the checks of energy, momentum and overlap.
 //
 //   billiards-gas [--dimension 2|3] [--balls N] [--packing-fraction η] [--events E] [--equilibrate E0]
-//                 [--seed S] [--json FILE] [--read SNAPSHOT] [--write SNAPSHOT]
+//                 [--seed S] [--json FILE] [--read SNAPSHOT] [--write SNAPSHOT] [--blocks B]
+//                 [--series CSV] [--snapshots XYZ --snapshot-every T] [--method automatic|cells|lists]
 //
 // --read starts from a snapshot (.sph, or extended XYZ: .xyz or .extxyz; see snapshot_io.hpp) instead of
-// the lattice: its dimension, balls and box, equal radii and masses, and its velocities (or Gaussian ones
-// at kT = 1, --seed, where it has none). --write writes the state at the end as a snapshot.
+// the lattice: its dimension, balls and box, each ball's radius and mass, and its velocities (or Gaussian
+// ones at kT = 1, --seed, where it has none). --write writes the state at the end as a snapshot, each
+// ball's species as it was read. --series writes the measured span's time series, one CSV row a block:
+// time, collisions, Z, pressure, kT, mean squared displacement (unwrapped positions), collisions a ball
+// a unit of time. --snapshots writes extended XYZ frames every --snapshot-every of the gas's time over
+// the measured span, from its start.
 //
 // Exit status: 0 on success; 2 on a bad command line or a bad snapshot (one line on stderr naming the
 // argument or the file and line, its value and what was expected, or --balls beyond the memory it can
@@ -56,8 +62,9 @@ std::string json(const billiards::simulation::gas::Result& r) {
       << json_number(r.compressibility_factor_from_collision_rate) << ",\n"
       << "  \"compressibility_factor_from_collision_rate_error\": "
       << json_number(r.compressibility_factor_from_collision_rate_error) << ",\n"
-      << "  \"equation_of_state\": "
-      << json_number(billiards::simulation::gas::equation_of_state(r.dimension, r.packing_fraction)) << ",\n"
+      << "  \"pressure\": " << json_number(r.pressure) << ",\n"
+      << "  \"pressure_error\": " << json_number(r.pressure_error) << ",\n"
+      << "  \"equation_of_state\": " << json_number(r.equation_of_state) << ",\n"
       << "  \"mean_free_time\": " << json_number(r.mean_free_time) << ",\n"
       << "  \"temperature\": " << json_number(r.temperature) << ",\n"
       << "  \"largest_temperature_change\": " << json_number(r.largest_temperature_change) << ",\n"
@@ -65,9 +72,22 @@ std::string json(const billiards::simulation::gas::Result& r) {
       << "  \"largest_overlap\": " << json_number(r.largest_overlap) << ",\n"
       << "  \"largest_gap\": " << json_number(r.largest_gap) << ",\n"
       << "  \"cell_crossings\": " << r.cell_crossings << ",\n"
+      << "  \"list_rebuilds\": " << r.list_rebuilds << ",\n"
       << "  \"events_per_second\": " << json_number(r.events_per_second) << "\n"
       << "}\n";
   return out.str();
+}
+
+// The time series as CSV: a header, then one row a block.
+std::string series_csv(const billiards::simulation::gas::Result& r) {
+  std::string out =
+      "time,collisions,compressibility_factor,pressure,temperature,mean_squared_displacement,collision_rate\n";
+  for (const billiards::simulation::gas::Block& b : r.blocks) {
+    out += json_number(b.time) + "," + std::to_string(b.collisions) + "," + json_number(b.compressibility_factor) + "," +
+           json_number(b.pressure) + "," + json_number(b.temperature) + "," + json_number(b.mean_squared_displacement) +
+           "," + json_number(b.collision_rate) + "\n";
+  }
+  return out;
 }
 
 }  // namespace
@@ -98,6 +118,24 @@ int main(int argc, char** argv) {
   app.add_option("--write", write_file, "Write the state at the end to the snapshot FILE (.sph, .xyz or .extxyz)")
       ->check(billiards_support::path_given("a snapshot file's path"));
   for (const char* lattice : {"--dimension", "--balls", "--packing-fraction"}) read->excludes(app.get_option(lattice));
+  app.add_option("--blocks", options.blocks,
+                 "Blocks the measured collisions are cut into, for the errors and the time series (default 10; at most "
+                 "--events)")
+      ->check(count(1));
+  std::string series_file, snapshots_file;
+  app.add_option("--series", series_file, "Write the time series, one CSV row a block, to FILE")
+      ->check(billiards_support::path_given("a file's path"));
+  CLI::Option* snapshots = app.add_option("--snapshots", snapshots_file,
+                                          "Write extended XYZ frames (.xyz or .extxyz) every --snapshot-every to FILE")
+                               ->check(billiards_support::path_given("a snapshot file's path"));
+  CLI::Option* every = app.add_option("--snapshot-every", options.snapshot_interval,
+                                      "The gas's time between the frames of --snapshots (positive)")
+                           ->check(billiards_support::finite_number(false));
+  snapshots->needs(every);
+  every->needs(snapshots);
+  std::string method = "automatic";
+  app.add_option("--method", method, "How pairs are found: automatic (default), cells or lists (neighbour lists)")
+      ->check(CLI::IsMember({"automatic", "cells", "lists"}));
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& help) {
@@ -107,7 +145,13 @@ int main(int argc, char** argv) {
     return 2;
   }
   std::error_code folder_error;
-  for (const auto& [name, file] : {std::pair<const char*, const std::string&>{"--json", json_file}, {"--write", write_file}}) {
+  options.method = method == "cells"   ? billiards::simulation::GasMethod::cells
+                   : method == "lists" ? billiards::simulation::GasMethod::neighbour_lists
+                                       : billiards::simulation::GasMethod::automatic;
+  for (const auto& [name, file] : {std::pair<const char*, const std::string&>{"--json", json_file},
+                                   {"--write", write_file},
+                                   {"--series", series_file},
+                                   {"--snapshots", snapshots_file}}) {
     if (!file.empty() && std::filesystem::is_directory(file, folder_error)) {
       std::cerr << "billiards-gas: " << name << ": '" << file << "' is a folder, expected a file name\n";
       return 2;
@@ -119,6 +163,14 @@ int main(int argc, char** argv) {
     std::cerr << "billiards-gas: --write: " << error.what() << "\n";
     return 2;
   }
+  try {
+    if (!snapshots_file.empty() && !billiards_example::is_extended_xyz(snapshots_file))
+      throw std::invalid_argument(snapshots_file + ": frames are written as extended XYZ, expected .xyz or .extxyz");
+  } catch (const std::invalid_argument& error) {
+    std::cerr << "billiards-gas: --snapshots: " << error.what() << "\n";
+    return 2;
+  }
+
   billiards_example::Snapshot start;
   try {
     if (read_file.empty()) {
@@ -140,22 +192,31 @@ int main(int argc, char** argv) {
   const auto run = [&]<int D>() {
     std::optional<billiards::simulation::Gas<D>> gas;
     if (read_file.empty()) {
-      gas.emplace(billiards::simulation::gas::lattice<D>(options), options.max_events_without_collision);
+      gas.emplace(billiards::simulation::gas::lattice<D>(options), options.max_events_without_collision, options.method);
     } else {
       // The snapshot's own checks name the file and line; the gas's (overlaps, the box's size) the file.
       try {
         const billiards::simulation::GasSetup<D> setup = billiards_example::gas_setup<D>(start, read_file, options.seed);
-        gas.emplace(setup, options.max_events_without_collision);
-        const double r = setup.radius, ball = D == 2 ? std::numbers::pi * r * r : 4 * std::numbers::pi / 3 * r * r * r;
-        options.packing_fraction = static_cast<double>(setup.balls.size()) * ball / std::pow(setup.side, D);
+        gas.emplace(setup, options.max_events_without_collision, options.method);
       } catch (const std::invalid_argument& error) {
         const std::string what = error.what();
         throw std::invalid_argument(what.rfind(read_file, 0) == 0 ? what : read_file + ": " + what);
       }
     }
-    const billiards::simulation::gas::Result r = billiards::simulation::gas::measure(*gas, options);
-    if (!write_file.empty())
-      billiards_example::write_snapshot_file(write_file, billiards_example::snapshot_of(gas->setup(), gas->time()));
+    std::vector<std::string> species;
+    for (const billiards_example::SnapshotParticle& p : start.particles) species.push_back(p.species);
+    std::optional<billiards_support::AtomicFile> frames;
+    if (!snapshots_file.empty()) frames.emplace(snapshots_file);
+    const billiards::simulation::gas::Result r =
+        billiards::simulation::gas::measure(*gas, options, [&](const billiards::simulation::Gas<D>& now) {
+          frames->append(billiards_example::extended_xyz_text(billiards_example::snapshot_of(now.setup(), now.time(), species)));
+        });
+    if (frames) frames->commit();
+    if (!write_file.empty()) {
+      billiards_example::write_snapshot_file(write_file,
+                                             billiards_example::snapshot_of(gas->setup(), gas->time(), species));
+    }
+    if (!series_file.empty()) billiards_support::write_file_atomically(series_file, series_csv(r));
     return r;
   };
   billiards::simulation::gas::Result result;
@@ -174,7 +235,7 @@ int main(int argc, char** argv) {
               << ": not enough memory for the gas on this machine (std::bad_alloc), expected fewer balls\n";
     return 2;
   } catch (const std::runtime_error& error) {
-    std::cerr << "billiards-gas: --write: " << error.what() << "\n";
+    std::cerr << "billiards-gas: " << error.what() << "\n";
     return 3;
   }
   const std::string text = json(result);

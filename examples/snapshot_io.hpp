@@ -351,11 +351,11 @@ inline std::string extended_xyz_text(const Snapshot& s) {
   return out;
 }
 
-/// The gas of a snapshot of dimension D: its box a square (2-D) or a cube (3-D), every radius and every
-/// mass equal, as the gas runs them; its velocities, or, where every one is 0 (a .sph file holds none),
-/// Gaussian ones at kT = 1 drawn with `seed` (gas::thermal_velocities). Throws std::invalid_argument
-/// naming `source`, the particle and what was expected; gas::validate's checks (overlaps, the box's
-/// size) follow when the gas is built.
+/// The gas of a snapshot of dimension D: its box a square (2-D) or a cube (3-D), each particle's radius
+/// and mass (GasSetup's `radii` and `masses` where they are not all equal), and its velocities, or,
+/// where every one is 0 (a .sph file holds none), Gaussian ones at kT = 1 drawn with `seed`
+/// (gas::thermal_velocities). Throws std::invalid_argument naming `source` and what was expected;
+/// validate's checks (overlaps, the box's size) follow when the gas is built.
 template <int D>
 billiards::simulation::GasSetup<D> gas_setup(const Snapshot& s, const std::string& source, std::uint64_t seed) {
   using snapshot_detail::number;
@@ -373,38 +373,40 @@ billiards::simulation::GasSetup<D> gas_setup(const Snapshot& s, const std::strin
   setup.side = s.box.x();
   setup.radius = s.particles[0].radius;
   setup.mass = s.particles[0].mass;
-  bool moving = false;
-  for (std::size_t i = 0; i < s.particles.size(); ++i) {
-    const SnapshotParticle& p = s.particles[i];
-    if (p.radius != setup.radius || p.mass != setup.mass) {
-      throw std::invalid_argument(at + "particle " + std::to_string(i) + " has radius " + number(p.radius) + " and mass " +
-                                  number(p.mass) + ", expected the first particle's " + number(setup.radius) + " and " +
-                                  number(setup.mass) + " (the gas runs equal spheres)");
-    }
+  bool moving = false, equal = true;
+  for (const SnapshotParticle& p : s.particles) {
     billiards::simulation::Ball<D> ball;
     ball.position = p.position.template head<D>();
     ball.velocity = p.velocity.template head<D>();
     moving = moving || p.velocity != Eigen::Vector3d::Zero();
+    equal = equal && p.radius == setup.radius && p.mass == setup.mass;
     setup.balls.push_back(ball);
+    setup.radii.push_back(p.radius);
+    setup.masses.push_back(p.mass);
   }
+  if (equal) setup.radii.clear(), setup.masses.clear();
   if (!moving && setup.balls.size() >= 2) billiards::simulation::gas::thermal_velocities(setup, seed);
   return setup;
 }
 
-/// The snapshot of a gas's state at `time`: species "a", the box's sides (in 2-D a thickness of 1).
+/// The snapshot of a gas's state at `time`: the box's sides (in 2-D a thickness of 1), each particle's
+/// radius and mass, and its species from `species` (one a ball, in the setup's order: a snapshot read
+/// keeps its own), or "a" for every one where `species` is empty.
 template <int D>
-Snapshot snapshot_of(const billiards::simulation::GasSetup<D>& setup, double time) {
+Snapshot snapshot_of(const billiards::simulation::GasSetup<D>& setup, double time,
+                     const std::vector<std::string>& species = {}) {
   Snapshot s;
   s.dimension = D;
   s.box = Eigen::Vector3d(setup.side, setup.side, D == 3 ? setup.side : 1.0);
   s.time = time;
   s.particles.reserve(setup.balls.size());
-  for (const billiards::simulation::Ball<D>& b : setup.balls) {
+  for (std::size_t i = 0; i < setup.balls.size(); ++i) {
     SnapshotParticle p;
-    p.position.template head<D>() = b.position;
-    p.velocity.template head<D>() = b.velocity;
-    p.radius = setup.radius;
-    p.mass = setup.mass;
+    p.position.template head<D>() = setup.balls[i].position;
+    p.velocity.template head<D>() = setup.balls[i].velocity;
+    p.radius = setup.radius_of(i);
+    p.mass = setup.mass_of(i);
+    if (!species.empty()) p.species = species[i];
     s.particles.push_back(p);
   }
   return s;

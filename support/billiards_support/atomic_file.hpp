@@ -85,60 +85,102 @@ inline void remove_stale_temporaries(const std::filesystem::path& path) {
   }
 }
 
+/// A file written atomically in parts (see the top of this file): created as a temporary beside `path`,
+/// appended to, and renamed over `path` by commit(). Destroyed uncommitted (an exception on the way),
+/// it removes the temporary and leaves `path` as it was. One at a time: the signal cleanup knows one
+/// temporary. Every failure throws std::runtime_error naming the path and the reason (the system's,
+/// never a stale errno), leaving `path` as it was and no temporary file behind.
+class AtomicFile {
+ public:
+  explicit AtomicFile(const std::filesystem::path& path) : path_(path) {
+    namespace fs = std::filesystem;
+    if (path.filename().empty()) throw failure("expected a file name, not a folder", 0);
+    std::error_code status_error;
+    if (fs::is_directory(fs::status(path, status_error))) throw failure("it is a folder, expected a file", 0);
+    // rename would replace a device, a FIFO or a socket with the file (as root, `--svg /dev/full` once
+    // replaced the device): only a regular file, a link (replaced, as above) or a new name is written.
+    if (const fs::file_status existing = fs::symlink_status(path, status_error);
+        fs::exists(existing) && !fs::is_regular_file(existing) && !fs::is_symlink(existing)) {
+      throw failure(
+          "it is not a regular file (a device, a FIFO or a socket), expected a file to replace or a new name", 0);
+    }
+    const fs::path folder = path.has_parent_path() ? path.parent_path() : fs::path(".");
+    remove_stale_temporaries(path);
+    detail::install_signal_cleanup();
+    const std::string pattern =
+        (folder / (detail::temporary_prefix(path) + std::to_string(::getpid()) + "-XXXXXX")).string();
+    if (pattern.size() >= sizeof(detail::pending_path)) throw failure("the path is too long", ENAMETOOLONG);
+    std::vector<char> name(pattern.begin(), pattern.end());
+    name.push_back('\0');
+    descriptor_ = ::mkstemp(name.data());  // O_CREAT | O_EXCL, mode 0600
+    if (descriptor_ < 0) throw failure("cannot create a temporary file in '" + folder.string() + "'", errno);
+    temporary_ = name.data();
+    std::memcpy(detail::pending_path, temporary_.c_str(), temporary_.size() + 1);
+    detail::pending = 1;
+  }
+  AtomicFile(const AtomicFile&) = delete;
+  AtomicFile& operator=(const AtomicFile&) = delete;
+  ~AtomicFile() {
+    if (descriptor_ >= 0) ::close(descriptor_);
+    if (!temporary_.empty()) {
+      ::unlink(temporary_.c_str());
+      detail::pending = 0;
+    }
+  }
+
+  /// Appends `contents` to the temporary file.
+  void append(const std::string& contents) {
+    std::size_t written = 0;
+    while (written < contents.size()) {
+      const ssize_t n = ::write(descriptor_, contents.data() + written, contents.size() - written);
+      if (n < 0) {
+        if (errno == EINTR) continue;
+        throw give_up("writing '" + temporary_ + "' failed", errno);
+      }
+      written += static_cast<std::size_t>(n);
+    }
+  }
+
+  /// Flushes the temporary file to disk and renames it over the path.
+  void commit() {
+    // mkstemp creates 0600; the outputs are ordinary files, readable like any other.
+    if (::fchmod(descriptor_, 0644) != 0) throw give_up("chmod failed", errno);
+    if (::fsync(descriptor_) != 0) throw give_up("fsync failed", errno);
+    const int descriptor = descriptor_;
+    descriptor_ = -1;
+    if (::close(descriptor) != 0) throw give_up("close failed", errno);
+    if (std::rename(temporary_.c_str(), path_.c_str()) != 0) throw give_up("rename failed", errno);
+    temporary_.clear();
+    detail::pending = 0;
+  }
+
+ private:
+  std::runtime_error failure(const std::string& what, int code) const {
+    return std::runtime_error("cannot write '" + path_.string() + "': " + what +
+                              (code != 0 ? std::string(": ") + std::strerror(code) : std::string()));
+  }
+  // The failure, the temporary file closed and removed (the error code read before either).
+  std::runtime_error give_up(const std::string& what, int code) {
+    const std::runtime_error error = failure(what, code);
+    if (descriptor_ >= 0) ::close(descriptor_), descriptor_ = -1;
+    ::unlink(temporary_.c_str());
+    temporary_.clear();
+    detail::pending = 0;
+    return error;
+  }
+
+  std::filesystem::path path_;
+  std::string temporary_;
+  int descriptor_ = -1;
+};
+
 /// Writes `contents` to `path` atomically (see the top of this file). Throws std::runtime_error
 /// naming the path and the reason (the system's, never a stale errno) on any failure, leaving `path`
 /// as it was and no temporary file behind.
 inline void write_file_atomically(const std::filesystem::path& path, const std::string& contents) {
-  namespace fs = std::filesystem;
-  const auto failure = [&](const std::string& what, int code) {
-    return std::runtime_error("cannot write '" + path.string() + "': " + what +
-                              (code != 0 ? std::string(": ") + std::strerror(code) : std::string()));
-  };
-  if (path.filename().empty()) throw failure("expected a file name, not a folder", 0);
-  std::error_code status_error;
-  if (fs::is_directory(fs::status(path, status_error))) throw failure("it is a folder, expected a file", 0);
-  // rename would replace a device, a FIFO or a socket with the file (as root, `--svg /dev/full` once
-  // replaced the device): only a regular file, a link (replaced, as above) or a new name is written.
-  if (const fs::file_status existing = fs::symlink_status(path, status_error);
-      fs::exists(existing) && !fs::is_regular_file(existing) && !fs::is_symlink(existing)) {
-    throw failure(
-        "it is not a regular file (a device, a FIFO or a socket), expected a file to replace or a new name",
-        0);
-  }
-  const fs::path folder = path.has_parent_path() ? path.parent_path() : fs::path(".");
-  remove_stale_temporaries(path);
-  detail::install_signal_cleanup();
-  const std::string pattern =
-      (folder / (detail::temporary_prefix(path) + std::to_string(::getpid()) + "-XXXXXX")).string();
-  if (pattern.size() >= sizeof(detail::pending_path)) throw failure("the path is too long", ENAMETOOLONG);
-  std::vector<char> name(pattern.begin(), pattern.end());
-  name.push_back('\0');
-  const int descriptor = ::mkstemp(name.data());  // O_CREAT | O_EXCL, mode 0600
-  if (descriptor < 0) throw failure("cannot create a temporary file in '" + folder.string() + "'", errno);
-  const std::string temporary(name.data());
-  std::memcpy(detail::pending_path, temporary.c_str(), temporary.size() + 1);
-  detail::pending = 1;
-  const auto give_up = [&](const std::string& what, int code, bool close_it) {
-    if (close_it) ::close(descriptor);
-    ::unlink(temporary.c_str());
-    detail::pending = 0;
-    return failure(what, code);
-  };
-  std::size_t written = 0;
-  while (written < contents.size()) {
-    const ssize_t n = ::write(descriptor, contents.data() + written, contents.size() - written);
-    if (n < 0) {
-      if (errno == EINTR) continue;
-      throw give_up("writing '" + temporary + "' failed", errno, true);
-    }
-    written += static_cast<std::size_t>(n);
-  }
-  // mkstemp creates 0600; the outputs are ordinary files, readable like any other.
-  if (::fchmod(descriptor, 0644) != 0) throw give_up("chmod failed", errno, true);
-  if (::fsync(descriptor) != 0) throw give_up("fsync failed", errno, true);
-  if (::close(descriptor) != 0) throw give_up("close failed", errno, false);
-  if (std::rename(temporary.c_str(), path.c_str()) != 0) throw give_up("rename failed", errno, false);
-  detail::pending = 0;
+  AtomicFile file(path);
+  file.append(contents);
+  file.commit();
 }
 
 }  // namespace billiards_support
