@@ -386,6 +386,7 @@ class ListGas : public GasEngine<D, ListGas<D>> {
       const std::uint32_t partner = own_[k].partner;
       if (ahead == 2) {
         prefetch_neighbours(k);
+        if (partner == none) prefetch_rebuild(k);
         if (partner != none) {
           detail::prefetch(&own_[partner]);
           detail::prefetch(&ball_[partner]);
@@ -396,6 +397,33 @@ class ListGas : public GasEngine<D, ListGas<D>> {
         prefetch_neighbours(partner);
       }
     });
+  }
+  // What the rebuild of ball k's list writes and reads: its neighbours' lists, which it leaves, and the
+  // 3^D cells around where it will be, their counts and first slots.
+  void prefetch_rebuild(std::size_t k) const {
+    const std::uint32_t* list = list_of(k);
+    for (std::uint32_t m = 0, count = count_of(k); m < count; ++m) detail::prefetch(&neighbour_[list[m] * capacity_]);
+    if (cells_per_side_ < 3) return;
+    const Ball& b = ball_[k];
+    std::size_t part[D][3];
+    for (int a = 0; a < D; ++a) {
+      double x = b.position[a] + b.velocity[a] * (own_[k].time - b.updated);
+      x = x < 0 ? x + side_ : x >= side_ ? x - side_ : x;
+      const int c = std::clamp(static_cast<int>(x / this->cell_width_), 0, cells_per_side_ - 1);
+      for (int step = -1; step <= 1; ++step) part[a][step + 1] = axis_offset_[a][static_cast<std::size_t>(wrapped(c + step))];
+    }
+    const auto ask = [&](std::size_t cell) {
+      detail::prefetch(&head_[cell]);
+      detail::prefetch(&slot_[cell * slots_]);
+    };
+    if constexpr (D == 2) {
+      for (int y = 0; y < 3; ++y)
+        for (int x = 0; x < 3; ++x) ask(part[1][y] + part[0][x]);
+    } else {
+      for (int z = 0; z < 3; ++z)
+        for (int y = 0; y < 3; ++y)
+          for (int x = 0; x < 3; ++x) ask(part[2][z] + part[1][y] + part[0][x]);
+    }
   }
   void prefetch_neighbours(std::size_t k) const {
     const std::uint32_t* list = list_of(k);
