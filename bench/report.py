@@ -2,10 +2,11 @@
 """Turns the JSON of one billiards_bench run into bench/RESULTS.md and bench/throughput.svg.
 
 Usage: bench/report.py RESULTS_JSON [--command "how the JSON was made"] [--derive BIN] [--out-dir DIR]
-                       [--pooltool POOLTOOL_JSON]
+                       [--pooltool POOLTOOL_JSON] [--edmd EDMD_TEXT]
 
 POOLTOOL_JSON is what ../shared/peers/pooltool/bench_breaks.py printed in the same run (bench/run.sh runs
-both): pooltool's breaks beside ours.
+both): pooltool's breaks beside ours. EDMD_TEXT is what ../shared/peers/edmd/run.py printed in the same
+run: the gas against Smallenburg's SingleEvent code.
 
 Both files are written atomically (tools/atomic_write.py), into bench/ unless --out-dir names another
 folder.
@@ -15,6 +16,7 @@ noisy); absolute times are shown only beside them. With --benchmark_repetitions 
 median of the repetitions.
 """
 import argparse
+import re
 import json
 import math
 import os
@@ -314,6 +316,31 @@ def gas_events(runs):
     return "\n".join(lines) + "\n\n" + "\n".join(f"- {n}" for n in notes)
 
 
+def edmd_section(path):
+    """The gas against Smallenburg's SingleEvent code: the lines ../shared/peers/edmd/run.py printed."""
+    if path is None:
+        return "(Smallenburg's SingleEvent code is not in this run: ../shared/peers/edmd/run.py was not found)"
+    rows = []
+    pattern = re.compile(r"N=(\d+) eta=([0-9.]+): billiards-gas (\d+) k/s, Smallenburg SingleEvent (\d+) k/s, "
+                         r"ours/peer ([0-9.]+) \(runs: ours \[([0-9, ]*)\], peer \[([0-9, ]*)\]\)")
+    with open(path, encoding="utf-8") as f:
+        for line in f:
+            m = pattern.match(line.strip())
+            if m:
+                rows.append(m.groups())
+    if not rows:
+        fail("--edmd", path, "the lines of ../shared/peers/edmd/run.py (N=… eta=…: billiards-gas … k/s, …)")
+    lines = ["| N | η | billiards-gas | SingleEvent | ours / theirs | goal | runs: ours | runs: theirs |",
+             "|---:|---:|---:|---:|---:|---:|---|---|"]
+    for n, eta, ours, peer, ratio_text, ours_runs, peer_runs in rows:
+        ratio_value = float(ratio_text)
+        mark = "" if ratio_value >= 1.0 else " (below the goal)"
+        lines.append(f"| {int(n):,} | {eta} | {int(ours):,} k/s | {int(peer):,} k/s | **{ratio_value:.2f}**{mark} | ≥ 1.0 | "
+                     f"{ours_runs} | {peer_runs} |")
+    worst = min(float(r[4]) for r in rows)
+    return "\n".join(lines) + f"\n\n- The smallest ratio: {worst:.2f} (goal ≥ 1.0 in every row)."
+
+
 def svg(runs):
     """The throughput figure's SVG text, or None where the run has no batch benchmarks."""
     width, height, left, bottom, top, right = 720, 420, 70, 50, 20, 150
@@ -370,6 +397,7 @@ def main():
     parser.add_argument("--derive", help="billiards-derive to time (five runs, the median is reported)")
     parser.add_argument("--clean-build", help="what a clean build cost, measured by the caller (text)")
     parser.add_argument("--pooltool", help="the JSON pooltool's bench_breaks.py printed in the same run")
+    parser.add_argument("--edmd", help="what ../shared/peers/edmd/run.py printed in the same run")
     parser.add_argument("--out-dir", default=HERE, help="where RESULTS.md and throughput.svg go (default: bench/)")
     args = parser.parse_args()
     if not os.path.isdir(args.out_dir):
@@ -535,6 +563,18 @@ against the balls of the neighbouring cells and its next event is filed in a cal
 the cost per event should not grow with N (the caches aside). One core; the all-pairs table beside it where it ran the same N.
 
 {gas_events(runs)}
+
+## The hard-sphere gas against Smallenburg's SingleEvent code
+
+Collisions per second of wall time, 3-D, an FCC start, σ = m = kT = 1, both microcanonical (SingleEvent's
+thermostat off), as `../shared/peers/edmd/run.py` measures them: both programs as separate processes
+pinned to the same core, alternating, three pairs a row, the median of each side; SingleEvent's rate
+from its own printed collision counts over the last two thirds of its run, ours from `billiards-gas
+--json` over its measured span (after 3 N collisions of equilibration); SingleEvent built from its
+unmodified source with `gcc -O3 -ffast-math -funroll-loops -march=native`, ours as built here. The
+ratio is ours over theirs.
+
+{edmd_section(args.edmd)}
 
 ## Shots to rest (billiards::simulation::Shot) against pooltool
 

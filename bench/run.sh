@@ -1,8 +1,9 @@
 #!/bin/sh
 # The benchmarks in one run, written to bench/RESULTS.md (and bench/throughput.svg) by bench/report.py:
 # billiards_bench pinned to one core (its shots on every core unpinned, after), then — where pooltool's harness is set up (../shared/peers/pooltool:
-# setup.sh has extracted its source) — pooltool's breaks on the same core, so that the ratios compare
-# programs measured side by side.
+# setup.sh has extracted its source) — pooltool's breaks on the same core, and — where
+# ../shared/peers/edmd is — the gas against Smallenburg's SingleEvent code on the same core, so that the
+# ratios compare programs measured side by side.
 #
 #   bench/run.sh [BUILD_DIR] [-- extra billiards_bench arguments]     (default build/)
 #
@@ -41,7 +42,18 @@ if [ -f "$peer/env.sh" ] && [ -d "${POOLTOOL_WORK:-$HOME/.cache/pooltool-peer}/s
 else
   echo "bench/run.sh: pooltool's harness is not set up ($peer/setup.sh); its breaks are left out" >&2
 fi
+# The gas against Smallenburg's SingleEvent code, side by side on the same core, where its source and
+# harness are beside the checkout (../shared/peers/edmd: run.py builds it with gcc).
+edmd="$root/../shared/peers/edmd"
+edmd_arguments=""
+if [ -f "$edmd/run.py" ] && [ -x "$build/examples/billiards-gas" ]; then
+  python3 "$edmd/run.py" "$build/examples/billiards-gas" --sizes 4000,32000,256000,1048576 --etas 0.3,0.45 \
+    --pairs 3 --seconds 3 --cpu $core > "$work/edmd.txt"
+  edmd_arguments="--edmd $work/edmd.txt"
+else
+  echo "bench/run.sh: ../shared/peers/edmd/run.py or $build/examples/billiards-gas is missing; the gas's comparison is left out" >&2
+fi
 # shellcheck disable=SC2086
 python3 "$here/report.py" "$work/bench.json" --command "$command" --derive "$build/derive/billiards-derive" \
-  --out-dir "$out" $pooltool_arguments
+  --out-dir "$out" $pooltool_arguments $edmd_arguments
 echo "wrote $out/RESULTS.md"
