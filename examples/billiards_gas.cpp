@@ -78,6 +78,9 @@ std::string json(const billiards::simulation::gas::Result& r) {
   return out.str();
 }
 
+// The most frames, and particle lines, --snapshots writes over a run.
+constexpr std::uint64_t frames_at_most = 100000, frame_lines_at_most = 100000000;
+
 // The time series as CSV: a header, then one row a block.
 std::string series_csv(const billiards::simulation::gas::Result& r) {
   std::string out =
@@ -207,8 +210,17 @@ int main(int argc, char** argv) {
     for (const billiards_example::SnapshotParticle& p : start.particles) species.push_back(p.species);
     std::optional<billiards_support::AtomicFile> frames;
     if (!snapshots_file.empty()) frames.emplace(snapshots_file);
+    std::uint64_t count = 0, lines = 0;
     const billiards::simulation::gas::Result r =
         billiards::simulation::gas::measure(*gas, options, [&](const billiards::simulation::Gas<D>& now) {
+          // Every run ends soon after its collisions, and its file fits a disk.
+          lines += now.size();
+          if (++count > frames_at_most || lines > frame_lines_at_most) {
+            std::ostringstream text;
+            text << "--snapshot-every is " << options.snapshot_interval
+                 << ": more than 100000 frames or 10^8 particle lines, expected a longer interval";
+            throw std::invalid_argument(text.str());
+          }
           frames->append(billiards_example::extended_xyz_text(billiards_example::snapshot_of(now.setup(), now.time(), species)));
         });
     if (frames) frames->commit();
@@ -226,7 +238,8 @@ int main(int argc, char** argv) {
     std::cerr << "billiards-gas: " << error.what() << "\n";
     return 4;
   } catch (const std::invalid_argument& error) {
-    std::cerr << "billiards-gas: --read: " << error.what() << "\n";
+    const std::string what = error.what();
+    std::cerr << "billiards-gas: " << (what.rfind("--", 0) == 0 ? "" : "--read: ") << what << "\n";
     return 2;
   } catch (const std::bad_alloc&) {
     // The gas's arrays grow with --balls (at most 2^31): where the machine cannot hold them, say which

@@ -217,6 +217,9 @@ TEST_CASE("snapshots at an interval: the gas at each multiple of it over the mea
   CHECK(r.collisions == 10000);
   o.snapshot_interval = -1;
   CHECK_THROWS_WITH(gas::measure(g, o, [](const Gas<3>&) {}), Catch::Contains("--snapshot-every is -1"));
+  o.snapshot_interval = 1e-300;  // lost in the rounding of the gas's time: no progress
+  CHECK_THROWS_WITH(gas::measure(g, o, [](const Gas<3>&) {}),
+                    Catch::Contains("--snapshot-every is 1e-300, expected an interval the gas's time"));
   o.snapshot_interval = 0;
   o.blocks = 0;
   CHECK_THROWS_WITH(gas::measure(g, o), Catch::Contains("--blocks is 0, expected at least 1"));

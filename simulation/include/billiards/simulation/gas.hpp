@@ -47,6 +47,7 @@
 #include <limits>
 #include <numbers>
 #include <random>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <variant>
@@ -329,7 +330,8 @@ double packing_fraction(const Gas<D>& gas) {
 /// and the time series block by block (no more blocks than events). Where `options.snapshot_interval`
 /// is positive, calls `on_snapshot(gas)` at the measured span's start and every interval of the gas's
 /// time after it while the span lasts (the gas brought to that time). Throws std::invalid_argument
-/// naming the option where there is no block, or the interval is negative or not finite.
+/// naming the option where there is no block, or the interval is negative, not finite, or too small to
+/// advance the gas's time.
 template <int D, typename OnSnapshot>
 Result measure(Gas<D>& gas, const Options& options, OnSnapshot&& on_snapshot) {
   if (options.blocks < 1) {
@@ -365,6 +367,13 @@ Result measure(Gas<D>& gas, const Options& options, OnSnapshot&& on_snapshot) {
       if (snapshots && next_snapshot <= gas.time()) {
         on_snapshot(static_cast<const Gas<D>&>(gas));
         next_snapshot = start_time + options.snapshot_interval * static_cast<double>(++snapshot_count);
+        if (!(next_snapshot > gas.time())) {  // an interval lost in the time's rounding: no progress
+          std::ostringstream text;
+          text << "--snapshot-every is " << options.snapshot_interval << ", expected an interval the gas's time "
+               << gas.time() << " can advance by (at least " << 2 * std::numeric_limits<double>::epsilon() * gas.time()
+               << ")";
+          throw std::invalid_argument(text.str());
+        }
       }
       done += gas.run(target - done, snapshots ? next_snapshot : std::numeric_limits<double>::infinity());
     }
