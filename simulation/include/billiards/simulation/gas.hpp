@@ -184,10 +184,7 @@ class Gas {
 
   static Engine make(const GasSetup<D>& setup, std::uint64_t quiet, GasMethod method) {
     validate(setup);
-    bool equal = true;
-    for (std::size_t i = 0; i < setup.balls.size(); ++i) {
-      equal = equal && setup.radius_of(i) == setup.radius_of(0) && setup.mass_of(i) == setup.mass_of(0);
-    }
+    const bool equal = setup.equal_balls();
     if (method == GasMethod::cells && !equal) {
       throw std::invalid_argument(
           "method is GasMethod::cells, expected automatic or neighbour_lists for balls of unequal radii or masses");

@@ -237,6 +237,13 @@ struct GasSetup {
   double radius_of(std::size_t i) const { return radii.empty() ? radius : radii[i]; }
   /// Ball i's mass.
   double mass_of(std::size_t i) const { return masses.empty() ? mass : masses[i]; }
+  /// Whether every ball has the same radius and the same mass.
+  bool equal_balls() const {
+    for (std::size_t i = 1; i < balls.size(); ++i) {
+      if (radius_of(i) != radius_of(0) || mass_of(i) != mass_of(0)) return false;
+    }
+    return true;
+  }
 };
 
 /// One collision of the gas, as Gas reports it to a callback.

@@ -41,11 +41,8 @@ class CellGas : public GasEngine<D, CellGas<D>> {
     for (std::size_t i = 0; i < n; ++i) {
       ball_[i].position = setup.balls[i].position;
       ball_[i].velocity = setup.balls[i].velocity;
-      for (int k = 0; k < D; ++k) {
-        double& x = ball_[i].position[k];
-        x = this->into_box(x);
-        own_[i].coordinates[k] = this->coordinate_cell(x);
-      }
+      for (int k = 0; k < D; ++k) ball_[i].position[k] = this->into_box(ball_[i].position[k]);
+      own_[i].coordinates = this->cell_coordinates(ball_[i].position);
       own_[i].cell = static_cast<std::uint32_t>(this->cell_index(own_[i].coordinates));
       insert(i);
     }

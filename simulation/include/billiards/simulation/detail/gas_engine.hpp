@@ -156,18 +156,13 @@ class GasEngine {
   using Cell = Eigen::Matrix<int, D, 1>;
   using Wraps = Eigen::Matrix<std::int64_t, D, 1>;
 
-  // Validates `setup` and takes what every engine keeps: the box, the balls' numbers, the limit on
-  // events without a collision.
+  // Takes what every engine keeps of `setup` (validated by Gas): the box, the balls' numbers, the limit
+  // on events without a collision.
   GasEngine(const GasSetup<D>& setup, std::uint64_t max_events_without_collision)
-      : radius_(setup.radius), mass_(setup.mass), side_(setup.side) {
-    validate(setup);
+      : radius_(setup.radius), mass_(setup.mass), side_(setup.side), equal_(setup.equal_balls()) {
     const std::size_t n = setup.balls.size();
     quiet_limit_ = max_events_without_collision != 0 ? max_events_without_collision
                                                      : 1000000 + 100 * static_cast<std::uint64_t>(n);
-    equal_ = true;
-    for (std::size_t i = 0; i < n; ++i) {
-      equal_ = equal_ && setup.radius_of(i) == setup.radius_of(0) && setup.mass_of(i) == setup.mass_of(0);
-    }
     identity_.resize(n);
     for (std::size_t i = 0; i < n; ++i) identity_[i] = static_cast<std::uint32_t>(i);
     wraps_.assign(n, Wraps::Zero());
@@ -250,6 +245,11 @@ class GasEngine {
   int wrapped(int x) const { return x < 0 ? x + cells_per_side_ : x >= cells_per_side_ ? x - cells_per_side_ : x; }
   // The cell coordinate of a coordinate in [0, side).
   int coordinate_cell(double x) const { return std::min(cells_per_side_ - 1, static_cast<int>(x / cell_width_)); }
+  Cell cell_coordinates(const Vector& x) const {
+    Cell c;
+    for (int k = 0; k < D; ++k) c[k] = coordinate_cell(x[k]);
+    return c;
+  }
   std::size_t cell_index(const Cell& c) const {
     std::size_t index = 0;
     for (int k = 0; k < D; ++k) index += axis_offset_[k][static_cast<std::size_t>(c[k])];

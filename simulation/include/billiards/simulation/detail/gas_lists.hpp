@@ -95,7 +95,7 @@ class ListGas : public GasEngine<D, ListGas<D>> {
   using Base::collision_number_;
   using Base::since_refile_;
   using Base::wrapped;
-  using Base::coordinate_cell;
+  using Base::cell_coordinates;
 
   // No two balls closer than the sum of their radii (less 1e-9 of it) on their nearest images: every
   // pair that close is on the neighbour lists, which hold every pair within shell (r_i + r_j).
@@ -118,11 +118,7 @@ class ListGas : public GasEngine<D, ListGas<D>> {
     }
   }
 
-  std::size_t cell_of(const Vector& x) const {
-    std::size_t index = 0;
-    for (int k = 0; k < D; ++k) index += axis_offset_[k][static_cast<std::size_t>(coordinate_cell(x[k]))];
-    return index;
-  }
+  std::size_t cell_of(const Vector& x) const { return this->cell_index(cell_coordinates(x)); }
   // Files ball i's list centre and radius in the slots of cell c, making room where the cell is full
   // (every cell's slots doubled).
   void file(std::size_t i, std::size_t c) {
@@ -220,7 +216,6 @@ class ListGas : public GasEngine<D, ListGas<D>> {
       origin[k][1] = x;
       origin[k][2] = c[k] == cells_per_side_ - 1 ? x - side_ : x;
     }
-    // A cell's slots may move when a cell fills (widen_cells): read them afresh for each cell.
     const auto visit = [&](std::size_t cell, double o0, double o1, double o2) {
       for (std::uint32_t k = 0, count = head_[cell]; k < count; ++k) {
         const Slot& other = slot_[cell * slots_ + k];
@@ -242,11 +237,6 @@ class ListGas : public GasEngine<D, ListGas<D>> {
           for (int a = 0; a < 3; ++a)
             visit(part[2][cc] + part[1][b] + part[0][a], origin[0][a], origin[1][b], origin[2][cc]);
     }
-  }
-  Cell cell_coordinates(const Vector& x) const {
-    Cell c;
-    for (int k = 0; k < D; ++k) c[k] = coordinate_cell(x[k]);
-    return c;
   }
 
   // Ball i's list built anew around where it is now: it leaves its old neighbours' lists, moves to the
