@@ -5,6 +5,7 @@
 
 #include "core/record.hpp"
 #include "emit/kernel.hpp"
+#include "emit/canaries.hpp"
 #include "emit/rounding.hpp"
 
 #include <functional>
@@ -45,6 +46,8 @@ struct Derivation : Record {
   /// What Gappa proved of each fast path's plain form, filled in when the printed kernels are read back
   /// (billiards-derive), before the audit is written.
   std::vector<RoundingBound> rounding;
+  /// What the prover's canaries (emit/canaries.hpp) answered at the start of the run.
+  std::vector<CanaryOutcome> canaries;
 };
 
 /// One line of the registry: a model's name and the function that derives it.

@@ -26,7 +26,7 @@ namespace {
 namespace fs = std::filesystem;
 
 // One model: derived, validated, written, reported. Returns its exit status.
-int run_model(const ModelEntry& entry, const fs::path& folder) {
+int run_model(const ModelEntry& entry, const fs::path& folder, const std::vector<CanaryOutcome>& canaries) {
   std::optional<Derivation> derived;
   try {
     derived = entry.derive();
@@ -36,6 +36,9 @@ int run_model(const ModelEntry& entry, const fs::path& folder) {
     return exit_claims_failed;
   }
   Derivation& derivation = *derived;
+  derivation.canaries = canaries;
+  const bool prover_sound =
+      std::all_of(canaries.begin(), canaries.end(), [](const CanaryOutcome& c) { return c.as_expected(); });
   std::vector<KernelProblem> problems = validate_kernels(derivation.kernels, derivation.claims);
   const std::vector<KernelProblem> reference =
       validate_kernels(derivation.reference_kernels, derivation.claims);
@@ -72,7 +75,14 @@ int run_model(const ModelEntry& entry, const fs::path& folder) {
                           "no rounding bound: it states neither a domain nor the cases its rounding is proven "
                           "over"});
   }
-  const bool verified = problems.empty() && summarize(derivation.claims).failed == 0;
+  // A prover that answered a canary wrongly proves nothing: the kernels are left unproven.
+  for (const CanaryOutcome& canary : canaries) {
+    if (!canary.as_expected())
+      problems.push_back({"(the prover)", "",
+                          "its canary " + canary.id + " answered `" + canary.answered + "`, not `" +
+                              canary.expected + "`: no kernel is proven by it"});
+  }
+  const bool verified = prover_sound && problems.empty() && summarize(derivation.claims).failed == 0;
   if (verified) {
     for (const Header& header : headers("")) {
       const std::vector<KernelProblem> found =
@@ -107,7 +117,8 @@ int run_model(const ModelEntry& entry, const fs::path& folder) {
 
 }  // namespace
 
-int derive_main(int argc, const char* const* argv, const std::vector<ModelEntry>& models) {
+int derive_main(int argc, const char* const* argv, const std::vector<ModelEntry>& models,
+                const std::vector<Canary>& canaries) {
   std::string names;
   for (const ModelEntry& entry : models) names += (names.empty() ? "" : ", ") + entry.name;
   CLI::App app{"Re-derives each model (" + names +
@@ -146,9 +157,16 @@ int derive_main(int argc, const char* const* argv, const std::vector<ModelEntry>
               << "\n";
     return exit_usage;
   }
+  // The prover checked before it proves anything.
+  const std::vector<CanaryOutcome> answers = ask_canaries(canaries);
+  for (const CanaryOutcome& canary : answers) {
+    if (!canary.as_expected())
+      std::cerr << "PROVER CANARY FAILED " << canary.id << ": " << canary.statement << ": expected `"
+                << canary.expected << "`, answered `" << canary.answered << "`\n";
+  }
   int status = 0;
   for (const ModelEntry* entry : chosen) {
-    const int model_status = run_model(*entry, fs::path(out));
+    const int model_status = run_model(*entry, fs::path(out), answers);
     if (model_status == exit_io) return exit_io;
     status = std::max(status, model_status);
   }

@@ -4,6 +4,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <sstream>
@@ -205,6 +206,29 @@ std::string audit_markdown(const Derivation& derivation) {
       }
     }
   }
+  if (!derivation.canaries.empty()) {
+    const bool sound = std::all_of(derivation.canaries.begin(), derivation.canaries.end(),
+                                   [](const CanaryOutcome& c) { return c.as_expected(); });
+    md << "\n## The prover's canaries\n\n"
+       << "Before any kernel was proven, the run asked its own proof machinery questions whose answers are "
+          "known, by the functions the kernels' proofs call: Gappa's verdict on a false and a true property, "
+          "a range at the largest finite number and one ulp past it, the error bound of one rounding and a "
+          "float script whose bound holds only in double, a cached answer asked for scripts one line apart, "
+          "and how the reader groups C++. "
+       << (sound ? "Every canary answered as it must."
+                 : "**A canary answered wrongly: no kernel was proven and no header written.**")
+       << "\n\n| canary | asks | expected | answered |\n|---|---|---|---|\n";
+    // A table cell: one line, its bars escaped.
+    const auto cell = [](const std::string& text) {
+      std::string out;
+      for (const char c : text) out += c == '\n' ? std::string(" ") : c == '|' ? std::string("\\|") : std::string(1, c);
+      return out;
+    };
+    for (const CanaryOutcome& canary : derivation.canaries) {
+      md << "| `" << canary.id << "` | " << cell(canary.statement) << " | " << cell(canary.expected) << " | "
+         << (canary.as_expected() ? cell(canary.answered) : "**" + cell(canary.answered) + "**") << " |\n";
+    }
+  }
   if (!model.remarks.empty()) {
     md << "\n## Where the source is imprecise\n\n";
     for (const std::string& remark : model.remarks) md << "- " << remark << "\n";
@@ -278,7 +302,7 @@ std::string audit_json(const Derivation& derivation) {
     premises.push_back({{"id", premise.id}, {"statement", premise.statement}});
   }
   nlohmann::ordered_json audit;
-  audit["schema"] = 3;
+  audit["schema"] = 4;
   audit["ginac"] = ginac_version();
   audit["model"] = derivation.model.name;
   audit["source"] = derivation.model.citation;
@@ -307,6 +331,15 @@ std::string audit_json(const Derivation& derivation) {
     }
   }
   audit["kernels"] = kernels;
+  nlohmann::ordered_json canaries = nlohmann::ordered_json::array();
+  for (const CanaryOutcome& canary : derivation.canaries) {
+    canaries.push_back({{"id", canary.id},
+                        {"statement", canary.statement},
+                        {"expected", canary.expected},
+                        {"answered", canary.answered},
+                        {"as_expected", canary.as_expected()}});
+  }
+  audit["canaries"] = canaries;
   audit["summary"] = {
       {"verified", summary.verified}, {"failed", summary.failed}, {"assumption", summary.assumption}};
   return audit.dump(2) + "\n";

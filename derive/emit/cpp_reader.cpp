@@ -262,6 +262,14 @@ class Parser {
   }
 
   CppStatement statement() {
+    const std::size_t first = at_;
+    CppStatement s = unrecorded_statement();
+    for (std::size_t i = first; i < at_ && i < tokens_.size(); ++i)
+      s.tokens.push_back(tokens_[i].kind == Token::Kind::directive ? "#" + tokens_[i].text : tokens_[i].text);
+    return s;
+  }
+
+  CppStatement unrecorded_statement() {
     CppStatement s;
     s.line = peek().line;
     if (peek().kind == Token::Kind::directive) {
@@ -329,7 +337,10 @@ class Parser {
     if (accept("using")) {
       s.kind = CppStatement::Kind::alias;
       s.name = identifier("an alias name");
+      const std::size_t aliased = at_;
       skip_past(";");
+      // The aliased type is not read: kept as its tokens, so that printing it again gives them back.
+      for (std::size_t i = aliased + 1; i + 1 < at_; ++i) s.text += (s.text.empty() ? "" : " ") + tokens_[i].text;
       return s;
     }
     // `name op value;` when an identifier is followed by an assignment operator.
@@ -501,6 +512,113 @@ std::string spelled(const CppExpression& e) {
       return e.kind == Kind::call ? e.text + "(" + out + ")" : "{" + out + "}";
   }
   return out;
+}
+
+namespace {
+
+// C++'s precedence of a binary operator (its row in the standard's table, tighter first), written out
+// here apart from the reader's table.
+int binding(const std::string& op) {
+  if (op == "*" || op == "/" || op == "%") return 5;
+  if (op == "+" || op == "-") return 6;
+  if (op == "<<" || op == ">>") return 7;
+  if (op == "<" || op == "<=" || op == ">" || op == ">=") return 9;
+  if (op == "==" || op == "!=") return 10;
+  if (op == "&") return 11;
+  if (op == "^") return 12;
+  if (op == "|") return 13;
+  if (op == "&&") return 14;
+  if (op == "||") return 15;
+  return 16;
+}
+
+// How loosely an expression binds as an operand: names, literals, calls and indexing 0, a negation 3,
+// a binary operator its row, `?:` 16.
+int looseness(const CppExpression& e) {
+  switch (e.kind) {
+    case CppExpression::Kind::unary: return 3;
+    case CppExpression::Kind::binary: return binding(e.text);
+    case CppExpression::Kind::conditional: return 16;
+    default: return 0;
+  }
+}
+
+std::string again(const CppExpression& e) {
+  using Kind = CppExpression::Kind;
+  const auto wrapped = [](const std::string& text) { return "(" + text + ")"; };
+  std::string out;
+  switch (e.kind) {
+    case Kind::literal:
+    case Kind::name: return e.text;
+    case Kind::unary: {
+      // The emitter negates one token as -x and anything longer as -(…).
+      const std::string operand = again(e.operands.at(0));
+      return e.text + (operand.find(' ') == std::string::npos ? operand : wrapped(operand));
+    }
+    case Kind::binary: {
+      const int own = binding(e.text);
+      const std::string left = again(e.operands.at(0)), right = again(e.operands.at(1));
+      // Left to right: an operand of the same row groups to the left, on the right it needs parentheses.
+      // As GCC's -Wparentheses asks, a bit operation or shift wraps every operation it takes, and ||
+      // wraps an && it takes.
+      const bool bits = own == 7 || (own >= 11 && own <= 13);
+      const auto clarified = [&](const CppExpression& operand) {
+        return (bits && operand.kind == Kind::binary) ||
+               (e.text == "||" && operand.kind == Kind::binary && operand.text == "&&");
+      };
+      return (looseness(e.operands[0]) > own || clarified(e.operands[0]) ? wrapped(left) : left) + " " + e.text +
+             " " + (looseness(e.operands[1]) >= own || clarified(e.operands[1]) ? wrapped(right) : right);
+    }
+    case Kind::conditional: {
+      const std::string condition = again(e.operands.at(0));
+      return (looseness(e.operands[0]) >= 16 ? wrapped(condition) : condition) + " ? " +
+             again(e.operands.at(1)) + " : " + again(e.operands.at(2));
+    }
+    case Kind::index: return e.text + "[" + again(e.operands.at(0)) + "]";
+    case Kind::call:
+    case Kind::braced:
+      for (const CppExpression& operand : e.operands) out += (out.empty() ? "" : ", ") + again(operand);
+      return e.kind == Kind::call ? e.text + "(" + out + ")" : "{" + out + "}";
+  }
+  return out;
+}
+
+}  // namespace
+
+std::string printed_again(const CppStatement& s) {
+  using Kind = CppStatement::Kind;
+  std::string out;
+  switch (s.kind) {
+    case Kind::directive: return "\n#" + s.text + "\n";
+    case Kind::declaration: return s.type + " " + s.name + " = " + again(*s.value) + ";";
+    case Kind::alias: return "using " + s.name + " = " + s.text + ";";
+    case Kind::assignment: return s.name + " " + s.op + " " + again(*s.value) + ";";
+    case Kind::increment: return "++" + s.name;
+    case Kind::if_:
+      return std::string("if ") + (s.type == "constexpr" ? "constexpr " : "") + "(" + again(*s.condition) + ") " +
+             printed_again(s.body.at(0));
+    case Kind::for_:
+      return "for (" + printed_again(s.body.at(0)) + " " + again(*s.condition) + "; " + printed_again(s.body.at(1)) +
+             ") " + printed_again(s.body.at(2));
+    case Kind::return_: return "return " + again(*s.value) + ";";
+    case Kind::throw_: return "throw " + again(*s.value) + ";";
+    case Kind::block:
+      for (const CppStatement& inner : s.body) out += printed_again(inner) + "\n";
+      return "{\n" + out + "}";
+  }
+  return out;
+}
+
+bool reads_as_printed(const CppStatement& statement) {
+  std::vector<std::string> tokens;
+  try {
+    for (const Token& t : tokenize(printed_again(statement))) {
+      if (t.kind != Token::Kind::end) tokens.push_back(t.kind == Token::Kind::directive ? "#" + t.text : t.text);
+    }
+  } catch (const CppReadError&) {
+    return false;
+  }
+  return tokens == statement.tokens;
 }
 
 }  // namespace billiards::derive

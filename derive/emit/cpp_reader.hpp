@@ -67,6 +67,9 @@ struct CppStatement {
   std::optional<CppExpression> condition;
   std::vector<CppStatement> body;
   int line = 0;
+  /// The tokens the statement was read from, in order (a preprocessor line is one token, `#` and all),
+  /// for the round trip: printed_again(statement) must read as these.
+  std::vector<std::string> tokens;
 };
 
 /// A function (or function template) definition.
@@ -86,6 +89,16 @@ std::vector<CppFunction> read_functions(const std::string& text);
 
 /// Parses one expression (for tests and diagnostics). Throws CppReadError.
 CppExpression read_expression(const std::string& text);
+
+/// The statement written back as the emitter prints C++, from what was read: operators spaced,
+/// parentheses only where C++'s precedence and left-to-right grouping need them, and around a negated
+/// operand that is more than one token. Its own table of C++'s precedence, not the reader's: where
+/// the reader grouped an expression otherwise than C++ does, the text differs from the one read.
+std::string printed_again(const CppStatement& statement);
+
+/// Whether printed_again(statement) reads as the very tokens the statement was read from: the round
+/// trip that shows the reader kept the printed text's grouping, and so its order of rounding.
+bool reads_as_printed(const CppStatement& statement);
 
 /// The expression written back in C++ with every operator spaced and every operation parenthesised, for
 /// messages: ((a + b) * c).

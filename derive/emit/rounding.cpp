@@ -1,5 +1,7 @@
 #include "emit/rounding.hpp"
 
+#include "emit/gappa.hpp"
+
 #include "core/output_files.hpp"
 #include "core/powers_of_two.hpp"
 #include "print/printer.hpp"
@@ -17,6 +19,7 @@
 #include <fstream>
 #include <functional>
 #include <iterator>
+#include <limits>
 #include <map>
 #include <optional>
 #include <set>
@@ -38,11 +41,6 @@ std::string text(const GiNaC::numeric& n) {
   std::ostringstream out;
   out << n;
   return out.str();
-}
-
-// ---- what Gappa is told of a format ----------------------------------------------------------------
-std::string gappa_format(const BinaryFormat& format) {
-  return format.type == "float" ? "float<ieee_32, ne>" : "float<ieee_64, ne>";
 }
 
 // A number in Gappa's notation, exactly: an integer, p/q, or for a power of two 1bk.
@@ -151,158 +149,6 @@ std::optional<int> one_binade(const GiNaC::numeric& low, const GiNaC::numeric& h
 // A positive rational's size as a power of two, for messages: about 2^k.
 std::string interval_text(const GiNaC::numeric& n) {
   return "about 2^" + std::to_string(n.numer().int_length() - n.denom().int_length());
-}
-
-// `script` without the definitions its proposition and hints do not read, directly or through other
-// definitions: Gappa takes time over every definition it is given.
-std::string only_what_is_read(const std::string& script) {
-  std::vector<std::string> lines;
-  for (std::size_t at = 0; at < script.size();) {
-    const std::size_t end = script.find('\n', at);
-    lines.push_back(script.substr(at, end == std::string::npos ? std::string::npos : end - at));
-    at = end == std::string::npos ? script.size() : end + 1;
-  }
-  const auto defined = [](const std::string& line) -> std::string {
-    const std::size_t space = line.find(' ');
-    if (space == std::string::npos || line.empty() || line[0] == '@' || line[0] == '{') return "";
-    const std::string rest = line.substr(space + 1);
-    return rest.rfind("= ", 0) == 0 || rest.rfind("rnd= ", 0) == 0 ? line.substr(0, space) : "";
-  };
-  std::set<std::string> read;
-  const auto reads = [&](const std::string& text) {
-    for (std::size_t at = 0; at < text.size();) {
-      if (std::isalpha(static_cast<unsigned char>(text[at])) || text[at] == '_') {
-        std::size_t end = at;
-        while (end < text.size() && (std::isalnum(static_cast<unsigned char>(text[end])) || text[end] == '_')) ++end;
-        read.insert(text.substr(at, end - at));
-        at = end;
-      } else {
-        ++at;
-      }
-    }
-  };
-  std::vector<bool> kept(lines.size(), false);
-  for (std::size_t i = 0; i < lines.size(); ++i) {
-    if (defined(lines[i]).empty()) {
-      kept[i] = true;
-      reads(lines[i]);
-    }
-  }
-  for (std::size_t i = lines.size(); i-- > 0;) {
-    const std::string name = defined(lines[i]);
-    if (name.empty() || !read.count(name)) continue;
-    kept[i] = true;
-    reads(lines[i].substr(name.size()));
-  }
-  std::string out;
-  for (std::size_t i = 0; i < lines.size(); ++i) {
-    if (kept[i]) out += lines[i] + "\n";
-  }
-  return out;
-}
-
-constexpr int not_run = -2;
-
-// What a command printed (stdout and stderr) and its exit status: −1 where it did not exit (a signal),
-// not_run where it could not be started or waited for.
-std::pair<int, std::string> run_command(const std::string& command) {
-  std::string output;
-  int status = -1;
-  if (FILE* pipe = popen((command + " 2>&1").c_str(), "r")) {
-    char buffer[4096];
-    while (const std::size_t n = std::fread(buffer, 1, sizeof buffer, pipe)) output.append(buffer, n);
-    status = pclose(pipe);
-  }
-  if (status == -1) return {not_run, output};
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, output};
-}
-
-// The proof cache (BILLIARDS_PROOF_CACHE, docs/code_generation.md): Gappa's exit status and output for a
-// script, in a file named by a hash of Gappa's version and the script, which holds both in full. An
-// answer is taken only from a file whose version and script equal this run's, byte for byte (a hash
-// collision, a truncated or foreign file is a miss), and only a proven (0) or unproven (1) answer is
-// kept. Written atomically; an unwritable cache is left alone: the run goes on without it.
-class ProofCache {
- public:
-  static ProofCache& instance() {
-    static ProofCache cache;
-    return cache;
-  }
-  [[nodiscard]] std::optional<std::pair<int, std::string>> find(const std::string& script) const {
-    if (folder_.empty()) return std::nullopt;
-    std::ifstream file(path(script), std::ios::binary);
-    if (!file) return std::nullopt;
-    const std::string text((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
-    // The entry as this run would write it, up to Gappa's output: the header, version, script and status.
-    for (const int status : {0, 1}) {
-      const std::string expected = entry(script, status, "");
-      const std::size_t fixed = expected.size() - 1;  // less the output's closing newline
-      if (text.size() > fixed && text.compare(0, fixed, expected, 0, fixed) == 0 && text.back() == '\n')
-        return std::pair<int, std::string>{status, text.substr(fixed, text.size() - fixed - 1)};
-    }
-    return std::nullopt;
-  }
-  void keep(const std::string& script, int status, const std::string& output) const {
-    if (folder_.empty() || (status != 0 && status != 1)) return;
-    try {
-      write_file_atomically(path(script), entry(script, status, output));
-    } catch (const std::exception&) {
-      // A cache that cannot be written only costs time.
-    }
-  }
-
- private:
-  ProofCache() {
-    const char* folder = std::getenv("BILLIARDS_PROOF_CACHE");
-    if (folder == nullptr || *folder == '\0') return;
-    const auto [status, version] = run_command("gappa --version");
-    if (status != 0 || version.empty()) return;  // no Gappa to key the answers by: no cache
-    folder_ = folder;
-    version_ = version;
-  }
-  // The entry's text: a header line, the sizes, Gappa's version, the script, the status, the output.
-  [[nodiscard]] std::string entry(const std::string& script, int status, const std::string& output) const {
-    return "billiards proof cache 1\n" + std::to_string(version_.size()) + " " + std::to_string(script.size()) +
-           "\n" + version_ + script + "status " + std::to_string(status) + "\n" + output + "\n";
-  }
-  // 64-bit FNV-1a of the version and the script, in hex.
-  [[nodiscard]] std::filesystem::path path(const std::string& script) const {
-    std::uint64_t hash = 14695981039346656037ULL;
-    for (const std::string* text : {&version_, &script}) {
-      for (const char c : *text) hash = (hash ^ static_cast<unsigned char>(c)) * 1099511628211ULL;
-      hash = (hash ^ 0xffU) * 1099511628211ULL;  // a separator no character equals
-    }
-    char name[24];
-    std::snprintf(name, sizeof name, "%016llx.gappa", static_cast<unsigned long long>(hash));
-    return folder_ / name;
-  }
-  std::filesystem::path folder_;
-  std::string version_;
-};
-
-// Runs Gappa on `script`: its exit status and what it printed.
-std::pair<int, std::string> run_gappa(const std::string& whole) {
-  const std::string script = only_what_is_read(whole);
-  // The same script (a probe repeated for another guard or case) is answered once.
-  static std::map<std::string, std::pair<int, std::string>> answered;
-  if (const auto known = answered.find(script); known != answered.end()) return known->second;
-  if (auto cached = ProofCache::instance().find(script)) return answered[script] = std::move(*cached);
-  std::string path = (std::filesystem::temp_directory_path() / "billiards-gappa-XXXXXX").string();
-  std::vector<char> name(path.begin(), path.end());
-  name.push_back('\0');
-  const int descriptor = mkstemp(name.data());
-  if (descriptor < 0) throw std::runtime_error("cannot create a temporary file for Gappa's input");
-  close(descriptor);
-  path = name.data();
-  {
-    std::ofstream file(path);
-    file << script;
-  }
-  const auto [status, output] = run_command("gappa '" + path + "'");
-  std::filesystem::remove(path);
-  if (status == not_run) throw std::runtime_error("cannot run Gappa");
-  ProofCache::instance().keep(script, status, output);
-  return answered[script] = {status, output};
 }
 
 // ---- the kernel as Gappa reads it ------------------------------------------------------------------
@@ -487,7 +333,7 @@ class Script {
   std::string definitions(const std::vector<bool>& taken, std::vector<std::string>& bounded,
                           std::vector<std::pair<std::string, std::string>>& outputs, bool partial = false) {
     std::ostringstream out;
-    out << "@rnd = " << gappa_format(format_) << ";\n";
+    out << "@rnd = " << gappa_rounding(format_.digits, format_.min_exponent) << ";\n";
     for (const auto& parameter : printed_.parameters)
       out << "p_" << parameter.second << " = rnd(input_" << parameter.second << ");\n";
     std::size_t guard = 0;
@@ -617,10 +463,10 @@ class Script {
     } else if (steps_.count(x)) {
       std::string hypotheses;
       for (const std::string& h : hypotheses_) hypotheses += (hypotheses.empty() ? "" : " /\\ ") + h;
-      const auto [status, output] = run_gappa(so_far + "{ " + hypotheses + " -> c_" + x + " in ? }\n");
-      const std::size_t at = output.find("c_" + x + " in [");
-      if (status == 0 && at != std::string::npos)
-        range = interval_ends(output.substr(at, output.find('\n', at) - at));
+      const GappaAnswer answer = run_gappa(so_far + "{ " + hypotheses + " -> c_" + x + " in ? }\n");
+      const std::size_t at = answer.output.find("c_" + x + " in [");
+      if (answer.proven && at != std::string::npos)
+        range = interval_ends(answer.output.substr(at, answer.output.find('\n', at) - at));
     }
     if (!range) return;
     if (const std::optional<int> k = one_binade(range->first, range->second)) exponents_[x] = *k;
@@ -649,18 +495,6 @@ std::vector<std::pair<std::string, std::string>> script_outputs(const CppFunctio
   std::vector<std::pair<std::string, std::string>> outputs;
   script.definitions(taken, bounded, outputs);
   return outputs;
-}
-
-// The first property Gappa names as not satisfied, or its first error.
-std::string gappa_failure(const std::string& output) {
-  std::size_t at = output.find("not satisfied:");
-  if (at != std::string::npos) {
-    at = output.find_first_not_of(" \n", at + 14);
-  } else {
-    at = output.find("Error");
-  }
-  if (at == std::string::npos) return output;
-  return output.substr(at, output.find('\n', at) - at);
 }
 
 }  // namespace
@@ -697,9 +531,84 @@ std::string gappa_script(const CppFunction& printed, const Kernel& kernel, const
 
 namespace {
 
+// A bound for messages: ±2^k where it is a power of two, else the rational.
+std::string bound_text(const GiNaC::numeric& n) {
+  if (const std::optional<int> k = n.is_zero() ? std::nullopt : exact_binary_logarithm(GiNaC::abs(n)))
+    return (n.is_negative() ? "-2^" : "2^") + std::to_string(*k);
+  return text(n);
+}
+
+// The format a script's `@rnd` line rounds to, as (digits, exponent of the smallest subnormal number):
+// Gappa's ieee_32 and ieee_64, or float<p, e, …>.
+std::optional<std::pair<int, int>> stated_rounding(const std::string& script) {
+  const std::size_t at = script.find("@rnd = float<");
+  if (at == std::string::npos) return std::nullopt;
+  const std::size_t end = script.find('>', at);
+  const std::string inside = script.substr(at + 13, end == std::string::npos ? 0 : end - at - 13);
+  if (inside == "ieee_32, ne") return std::make_pair(24, -149);
+  if (inside == "ieee_64, ne") return std::make_pair(53, -1074);
+  int digits = 0, exponent = 0;
+  char mode[3] = {};
+  if (std::sscanf(inside.c_str(), "%d, %d, %2s", &digits, &exponent, mode) == 3 && std::string(mode) == "ne")
+    return std::make_pair(digits, exponent);
+  return std::nullopt;
+}
+
+// The script's hypotheses `p_x in [a, b]`, by parameter.
+std::map<std::string, std::pair<GiNaC::numeric, GiNaC::numeric>> stated_ranges(const std::string& script) {
+  std::map<std::string, std::pair<GiNaC::numeric, GiNaC::numeric>> out;
+  const std::size_t open = script.rfind("\n{ "), arrow = script.find("\n  -> ", open);
+  if (open == std::string::npos || arrow == std::string::npos) return out;
+  const std::string hypotheses = script.substr(open + 3, arrow - open - 3);
+  for (std::size_t at = 0; at < hypotheses.size();) {
+    std::size_t end = hypotheses.find(" /\\ ", at);
+    if (end == std::string::npos) end = hypotheses.size();
+    const std::string h = hypotheses.substr(at, end - at);
+    at = end + 4;
+    const std::size_t in = h.find(" in [");
+    if (h.rfind("p_", 0) != 0 || in == std::string::npos) continue;
+    if (const auto ends = interval_ends(h)) out[h.substr(2, in - 2)] = *ends;
+  }
+  return out;
+}
+
+// What a script states, held against what the header prints: it rounds in the format of the kernel's
+// Scalar instantiation (float or double, as the C++ implementation defines them: std::numeric_limits),
+// and its hypotheses on each parameter the printed guard bounds are that guard's interval, with its
+// constants' values as printed for the type.
+void check_against_header(const std::string& script, const BinaryFormat& format,
+                          const std::map<std::string, std::pair<GiNaC::numeric, GiNaC::numeric>>& guard) {
+  const auto expected = format.type == "float"
+                            ? std::make_pair(std::numeric_limits<float>::digits,
+                                             std::numeric_limits<float>::min_exponent -
+                                                 std::numeric_limits<float>::digits)
+                            : std::make_pair(std::numeric_limits<double>::digits,
+                                             std::numeric_limits<double>::min_exponent -
+                                                 std::numeric_limits<double>::digits);
+  const std::optional<std::pair<int, int>> stated = stated_rounding(script);
+  if (!stated || *stated != expected)
+    throw NotProvable("its " + format.type + " script rounds " +
+                      (stated ? "to " + std::to_string(stated->first) + " digits down to 2^" +
+                                    std::to_string(stated->second)
+                              : std::string("in no format Gappa names")) +
+                      ", not as " + format.type + " does: " + std::to_string(expected.first) +
+                      " digits down to 2^" + std::to_string(expected.second));
+  const auto ranges = stated_ranges(script);
+  for (const auto& [parameter, interval] : guard) {
+    const auto found = ranges.find(parameter);
+    if (found == ranges.end() || found->second != interval)
+      throw NotProvable("its " + format.type + " script states " +
+                        (found == ranges.end() ? "no range of " + parameter
+                                               : parameter + " in [" + bound_text(found->second.first) + ", " +
+                                                     bound_text(found->second.second) + "]") +
+                        " where the printed guard admits " + parameter + " in [" + bound_text(interval.first) +
+                        ", " + bound_text(interval.second) + "]");
+  }
+}
+
 // One format and one case: what Gappa proved (into `bounds`) or why not (into `problems`).
 void prove_case(const CppFunction& printed, const Kernel& kernel, const BinaryFormat& format,
-                const std::vector<ex>& ranges, std::vector<KernelProblem>& problems,
+                const std::vector<ex>& ranges, const GuardRanges& guard, std::vector<KernelProblem>& problems,
                 std::vector<RoundingBound>& bounds) {
   const auto fail = [&](const std::string& reason) {
     problems.push_back({kernel.name, kernel.equals, "its rounding proof: " + reason});
@@ -722,7 +631,7 @@ void prove_case(const CppFunction& printed, const Kernel& kernel, const BinaryFo
             const std::string definitions = attempt.definitions(taken, unused, no_outputs, true);
             std::string sides;
             const std::string goal = attempt.decision_goal(*condition, branch, sides);
-            if (run_gappa(definitions + sides + "{ " + hypotheses + " -> " + goal + " }\n").first == 0) {
+            if (run_gappa(definitions + sides + "{ " + hypotheses + " -> " + goal + " }\n").proven) {
               decided = branch;
               break;
             }
@@ -742,15 +651,18 @@ void prove_case(const CppFunction& printed, const Kernel& kernel, const BinaryFo
           for (const std::string& x : signs.absolutes_) {
             for (const bool negative : {true, false}) {
               const std::string goal = (negative ? "-" : "") + x + " >= 0";
-              if (run_gappa(definitions + "{ " + hypotheses + " -> " + goal + " }\n").first != 0) continue;
+              if (!run_gappa(definitions + "{ " + hypotheses + " -> " + goal + " }\n").proven) continue;
               hints.push_back("|" + x + "| -> " + (negative ? "-" : "") + x + " { " + goal + " };");
               break;
             }
           }
         }
         const std::string script = gappa_script(printed, kernel, format, ranges, taken, hints);
-        const auto [status, output] = run_gappa(script);
-        if (status != 0) {
+        const auto in_format = guard.find(format.type);
+        check_against_header(script, format, in_format == guard.end() ? GuardRanges::mapped_type{} : in_format->second);
+        const GappaAnswer answer = run_gappa(script);
+        const std::string& output = answer.output;
+        if (!answer.proven) {
           fail("in " + format.type + " over " + hypotheses +
                ", Gappa does not prove every intermediate and output finite and normal with a bounded "
                "error: " +
@@ -826,8 +738,17 @@ void deserialize(const std::string& text, const Kernel& kernel, const BinaryForm
 
 }  // namespace
 
+std::vector<KernelProblem> prove_rounding_in(const CppFunction& printed, const Kernel& kernel,
+                                             const BinaryFormat& format, std::vector<RoundingBound>& bounds) {
+  std::vector<std::vector<ex>> cases = kernel.rounding_cases;
+  if (cases.empty()) cases.push_back({});
+  std::vector<KernelProblem> problems;
+  for (const std::vector<ex>& ranges : cases) prove_case(printed, kernel, format, ranges, {}, problems, bounds);
+  return problems;
+}
+
 std::vector<KernelProblem> prove_rounding(const CppFunction& printed, const Kernel& kernel,
-                                          std::vector<RoundingBound>& bounds) {
+                                          std::vector<RoundingBound>& bounds, const GuardRanges& guard) {
   struct Job {
     const BinaryFormat* format;
     std::vector<ex> ranges;
@@ -867,7 +788,7 @@ std::vector<KernelProblem> prove_rounding(const CppFunction& printed, const Kern
         close(ends[0]);
         std::vector<KernelProblem> p;
         std::vector<RoundingBound> b;
-        prove_case(printed, kernel, *job.format, job.ranges, p, b);
+        prove_case(printed, kernel, *job.format, job.ranges, guard, p, b);
         const std::string text = serialized(p, b);
         for (std::size_t at = 0; at < text.size();) {
           const ssize_t n = write(ends[1], text.data() + at, text.size() - at);
@@ -887,7 +808,7 @@ std::vector<KernelProblem> prove_rounding(const CppFunction& printed, const Kern
       // No process to spare: proven here.
       std::vector<KernelProblem> p;
       std::vector<RoundingBound> b;
-      prove_case(printed, kernel, *job.format, job.ranges, p, b);
+      prove_case(printed, kernel, *job.format, job.ranges, guard, p, b);
       job.found = serialized(p, b);
     }
     while (static_cast<long>(i + 1 - next_to_finish) >= processors) {

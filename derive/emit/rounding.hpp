@@ -11,7 +11,9 @@
 
 #include <ginac/ginac.h>
 
+#include <map>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace billiards::derive {
@@ -34,8 +36,18 @@ struct RoundingBound {
 /// or output that may overflow or leave the normal range, an output without a finite relative bound, a
 /// guard the domain neither rules out nor in, a domain that is not a closed interval of finite
 /// constants — and when Gappa cannot be run. Never throws.
+/// Each script is also held against the printed text before Gappa's answer is taken: its `@rnd` must
+/// round as the format's C++ type does (std::numeric_limits), and where `guard` gives the intervals the
+/// header's printed range test admits (by format type, then parameter, with the printed constants'
+/// values), the script's hypothesis on each such parameter must be that interval; a mismatch is a problem.
+using GuardRanges =
+    std::map<std::string, std::map<std::string, std::pair<GiNaC::numeric, GiNaC::numeric>>>;
 std::vector<KernelProblem> prove_rounding(const CppFunction& printed, const Kernel& kernel,
-                                          std::vector<RoundingBound>& bounds);
+                                          std::vector<RoundingBound>& bounds, const GuardRanges& guard = {});
+
+/// prove_rounding in one format alone, every case in this process (the canaries' path).
+std::vector<KernelProblem> prove_rounding_in(const CppFunction& printed, const Kernel& kernel,
+                                             const BinaryFormat& format, std::vector<RoundingBound>& bounds);
 
 /// The Gappa input for one format and case, for tests: what prove_rounding runs, with `guards_taken`
 /// saying, guard by guard in the order printed, which branch it takes, and `hints` (Gappa's `a -> b

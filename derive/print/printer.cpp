@@ -378,7 +378,43 @@ std::string print_cpp_leaf(const ex& e) {
                               " as C++: expected numbers, symbols, sums, products and powers");
 }
 
+// A power whose exponent is not a number, b^k: in C++ 2^k alone is times_power_of_two(Scalar(1), k) (a
+// product's factor 2^k is printed as its scaling, print_magnitude_cpp); elsewhere b^(k).
+std::string print_symbolic_power(const ex& e, Notation notation) {
+  if (notation == Notation::cpp) {
+    if (!is_power_of_two_with_symbolic_exponent(e))
+      throw std::invalid_argument("cannot emit the power " + print_any(e, Notation::text) +
+                                  " as C++: expected a positive integer exponent or 1/2");
+    return "times_power_of_two(" + scalar_literal(1) + ", " + print_any(e.op(1), notation) + ")";
+  }
+  const std::string base = print_base(e.op(0), notation, true), exponent = print_any(e.op(1), notation);
+  if (notation == Notation::latex) return base + "^{" + exponent + "}";
+  return base + "^" + (GiNaC::is_a<GiNaC::symbol>(e.op(1)) ? exponent : "(" + exponent + ")");
+}
+
+// How deep print_any may go before it elides the rest: far beyond any expression a model derives, so
+// that a message about a malformed expression is written rather than the stack overflowed.
+constexpr int deepest_print = 2000;
+
+std::string print_nested(const ex& e, Notation notation);
+
 std::string print_any(const ex& e, Notation notation) {
+  thread_local int depth = 0;
+  if (depth >= deepest_print) {
+    if (notation == Notation::cpp)
+      throw std::invalid_argument("cannot emit an expression nested " + std::to_string(deepest_print) + " deep");
+    return "…";
+  }
+  ++depth;
+  struct Leave {
+    int& depth;
+    ~Leave() { --depth; }
+  } leave{depth};
+  return print_nested(e, notation);
+}
+
+std::string print_nested(const ex& e, Notation notation) {
+  if (GiNaC::is_a<GiNaC::power>(e) && !GiNaC::is_a<numeric>(e.op(1))) return print_symbolic_power(e, notation);
   if (GiNaC::is_a<GiNaC::add>(e)) return print_sum(e, notation);
   if (GiNaC::is_a<GiNaC::mul>(e) || GiNaC::is_a<GiNaC::power>(e)) return print_signed_product(e, notation);
   // A relation, in C++ a condition: lhs op rhs.

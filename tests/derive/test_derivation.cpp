@@ -222,7 +222,7 @@ TEST_CASE("The audit", "[derive][audit]") {
 
   SECTION("the JSON has its schema's fields, every one on every claim") {
     const nlohmann::json audit = nlohmann::json::parse(audit_json(derivation));
-    CHECK(audit.at("schema") == 3);
+    CHECK(audit.at("schema") == 4);
     CHECK(audit.at("ginac") == ginac_version());
     REQUIRE(audit.at("claims").size() == derivation.claims.size());
     for (const auto& claim : audit.at("claims")) {
