@@ -208,7 +208,7 @@ const std::vector<Canary>& prover_canaries() {
       out.push_back({"precision." + type + "_rounds_as_" + type,
                      "the relative error of x · y over [1, 2]² in " + type + " is bounded by 2^-digits",
                      type == "float" ? "2^-24" : "2^-53", [type] { return one_rounding_bound(type); }});
-      out.push_back({"precision." + type + "_product_of_2^100s",
+      out.push_back({"precision." + type + "_product_beyond_float",
                      "x · y over [1, 2^100]² overflows in float and not in double; in " + type,
                      type == "float" ? "refused" : "proven",
                      [type] { return proven_in(product_kernel(numeric(2).power(100), numeric(2).power(100)), type); }});

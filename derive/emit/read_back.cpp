@@ -2,6 +2,7 @@
 
 #include "core/named_constants.hpp"
 #include "core/powers_of_two.hpp"
+#include "emit/bit_helpers.hpp"
 #include "emit/cpp_reader.hpp"
 #include "print/printer.hpp"
 
@@ -156,23 +157,21 @@ class ReadBack {
     }
     prove_constants();
     prove_absolute_value();
+    // The bit helpers, run from their text over every exponent (bit_helpers.hpp).
+    for (const std::string& helper : bit_helper_names()) {
+      if (find(helper) != nullptr) proven(helper);
+    }
+    const std::vector<KernelProblem> helpers = prove_bit_helpers(functions_);
+    problems_.insert(problems_.end(), helpers.begin(), helpers.end());
     for (const CppFunction& f : functions_) {
       const std::string key = f.name + (f.specialization.empty() ? "" : "<" + f.specialization + ">");
-      if (!proven_.count(key) && !checked_by_tests().count(f.name))
+      if (!proven_.count(key))
         fail(f.name, "", "is printed but nothing reads it back and proves it");
     }
     return problems_;
   }
 
  private:
-  // Bit manipulation printed beside the kernels: checked over every exponent, on the host path and the
-  // device path, for float and double, by the support-code tests (tests/runtime/test_support_code.cpp).
-  static const std::set<std::string>& checked_by_tests() {
-    static const std::set<std::string> names = {"orders_as_bits", "bits_above", "larger", "binary_exponent",
-                                                "times_power_of_two"};
-    return names;
-  }
-
   void fail(const std::string& function, const std::string& claim, const std::string& reason) {
     problems_.push_back({function, claim, "as printed: " + reason});
   }

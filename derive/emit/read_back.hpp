@@ -29,9 +29,12 @@ namespace billiards::derive {
 /// - each named constant's float and double values are its definition's (core/named_constants.hpp),
 ///   spelled with the literal suffix of the type, and its generic form gives the same values;
 /// - absolute_value is |x|.
-/// A function the header defines that none of these covers is a problem too (support code that is bit
-/// manipulation — binary_exponent, times_power_of_two, bits_above, larger, orders_as_bits — is checked
-/// over every exponent, on the host path and the device path, by the support-code tests).
+/// - the bit helpers — binary_exponent, times_power_of_two, bits_above, larger, orders_as_bits — run from
+///   their text over every exponent of float and double, on the host path and the device path, against
+///   exact references (bit_helpers.hpp);
+/// - every statement, printed again from what was read, is the text it was read from (the round trip:
+///   the reader kept C++'s grouping, so the proofs and Gappa see the header's order of operations).
+/// A function the header defines that none of these covers is a problem too.
 /// Each kernel with a domain (a fast path's plain form) or rounding cases is also proven safe there from
 /// its text, by Gappa (prove_rounding), its bounds appended to `bounds`. `kernels` are the ones printed into this header.
 /// `proves_rounding_of`, when given, limits the Gappa proofs to the kernels it accepts (by the kernel's

@@ -5,7 +5,7 @@
 // was printed, and names the claims it implements. They take masses and dot products, so they serve vectors
 // of any dimension and need no Eigen.
 //
-// Fingerprint: fnv1a64:3f02a42a1a08d37c (of this header and the audit)
+// Fingerprint: fnv1a64:0da490fc948f8258 (of this header and the audit)
 #pragma once
 
 #include <bit>

@@ -4,7 +4,7 @@
 // T. Parkin, "Billiard Ball Physics", 2023 before simplification, printed from the same derived expressions
 // as billiards/kernels.hpp and proven the same way.
 //
-// Fingerprint: fnv1a64:268bf5b3e2b169b1 (of this header and the audit)
+// Fingerprint: fnv1a64:c6af5f7590994795 (of this header and the audit)
 #pragma once
 
 #include <billiards/kernels.hpp>

@@ -4,7 +4,7 @@
 // impulse equations (after Alciatore, TP, and Han 2005), listed by the derivation, so that
 // tests call, measure and compile each one without a list kept by hand.
 //
-// Fingerprint: fnv1a64:587db340a537bf8c (of this header and the audit)
+// Fingerprint: fnv1a64:cc917153a678a9b0 (of this header and the audit)
 #pragma once
 
 #include <billiards/shot_kernels.hpp>

@@ -6,7 +6,7 @@
 // claims it implements. They take masses and dot products, so they serve vectors of any dimension and need no
 // Eigen.
 //
-// Fingerprint: fnv1a64:c96823490aa61be1 (of this header and the audit)
+// Fingerprint: fnv1a64:3c880773cb1c4bdd (of this header and the audit)
 #pragma once
 
 #include <limits>
