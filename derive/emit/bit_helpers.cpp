@@ -157,7 +157,8 @@ class Evaluator {
     using limits = std::numeric_limits<Scalar>;
     switch (e.kind) {
       case Kind::literal:
-        if (e.text.find_first_not_of("0123456789") != std::string::npos) throw Unreadable("the literal " + e.text);
+        if (e.text.find_first_not_of("0123456789") != std::string::npos)
+          throw Unreadable("the literal " + e.text);
         return of_integer(std::stoll(e.text));
       case Kind::name: {
         if (const auto found = frame.find(e.text); found != frame.end()) return found->second;
@@ -185,12 +186,15 @@ class Evaluator {
 
   Value binary(const CppExpression& e, std::map<std::string, Value>& frame) {
     const std::string& op = e.text;
-    if (op == "&&") return of_boolean(truth(evaluate(e.operands[0], frame)) && truth(evaluate(e.operands[1], frame)));
-    if (op == "||") return of_boolean(truth(evaluate(e.operands[0], frame)) || truth(evaluate(e.operands[1], frame)));
+    if (op == "&&")
+      return of_boolean(truth(evaluate(e.operands[0], frame)) && truth(evaluate(e.operands[1], frame)));
+    if (op == "||")
+      return of_boolean(truth(evaluate(e.operands[0], frame)) || truth(evaluate(e.operands[1], frame)));
     const Value a = evaluate(e.operands[0], frame), b = evaluate(e.operands[1], frame);
     if (op == "<<" || op == ">>") {
       const long long count = integer_of(b);
-      if (count < 0 || count >= static_cast<long long>(8 * sizeof(Bits))) throw Unreadable("a shift by " + std::to_string(count));
+      if (count < 0 || count >= static_cast<long long>(8 * sizeof(Bits)))
+        throw Unreadable("a shift by " + std::to_string(count));
       if (a.kind != Value::Kind::bits) throw Unreadable("a shift of a signed or Scalar value");
       return of_bits(static_cast<Bits>(op == "<<" ? a.bits << count : a.bits >> count));
     }
@@ -232,7 +236,8 @@ class Evaluator {
 
   Value call_expression(const CppExpression& e, std::map<std::string, Value>& frame) {
     const std::string& f = e.text;
-    if (f == "sizeof" && e.operands.size() == 1 && e.operands[0].text == "Scalar") return of_integer(sizeof(Scalar));
+    if (f == "sizeof" && e.operands.size() == 1 && e.operands[0].text == "Scalar")
+      return of_integer(sizeof(Scalar));
     std::vector<Value> arguments;
     for (const CppExpression& operand : e.operands) arguments.push_back(evaluate(operand, frame));
     const auto one = [&]() -> const Value& {
@@ -259,11 +264,12 @@ class Evaluator {
     if (f == "std::ilogb") return of_integer(std::ilogb(scalar_of(one())));
     if (f == "std::ldexp" && arguments.size() == 2)
       return of(std::ldexp(scalar_of(arguments[0]), static_cast<int>(integer_of(arguments[1]))));
-    if ((f == "__builtin_huge_valf" && sizeof(Scalar) == 4) || (f == "__builtin_huge_val" && sizeof(Scalar) == 8) ||
-        f == "std::numeric_limits<Scalar>::infinity")
+    if ((f == "__builtin_huge_valf" && sizeof(Scalar) == 4) ||
+        (f == "__builtin_huge_val" && sizeof(Scalar) == 8) || f == "std::numeric_limits<Scalar>::infinity")
       return of(std::numeric_limits<Scalar>::infinity());
     if (f == "std::numeric_limits<Scalar>::min") return of(std::numeric_limits<Scalar>::min());
-    const std::string name = f.size() > 8 && f.compare(f.size() - 8, 8, "<Scalar>") == 0 ? f.substr(0, f.size() - 8) : f;
+    const std::string name =
+        f.size() > 8 && f.compare(f.size() - 8, 8, "<Scalar>") == 0 ? f.substr(0, f.size() - 8) : f;
     return call(name, arguments);
   }
 
@@ -290,7 +296,8 @@ bool same_bits(Scalar a, Scalar b) {
 template <typename Scalar>
 std::vector<Scalar> every_exponent() {
   using limits = std::numeric_limits<Scalar>;
-  std::vector<Scalar> values = {Scalar(0), -Scalar(0), limits::infinity(), -limits::infinity(), limits::quiet_NaN()};
+  std::vector<Scalar> values = {Scalar(0), -Scalar(0), limits::infinity(), -limits::infinity(),
+                                limits::quiet_NaN()};
   for (int k = limits::min_exponent - limits::digits; k < limits::max_exponent; ++k) {
     for (const long double s : {1.0L, 2.0L - static_cast<long double>(limits::epsilon())}) {
       const long double exact = std::ldexp(s, k);
@@ -306,7 +313,8 @@ std::vector<Scalar> every_exponent() {
 // The first wrong answer of each helper in one format and path: (helper, what it answered wrongly).
 template <typename Scalar>
 std::vector<std::pair<std::string, std::string>> wrong_answers(const std::vector<CppFunction>& functions,
-                                                               const std::set<std::string>& defined, bool device) {
+                                                               const std::set<std::string>& defined,
+                                                               bool device) {
   using E = Evaluator<Scalar>;
   using limits = std::numeric_limits<Scalar>;
   E run(functions, device);
@@ -336,11 +344,13 @@ std::vector<std::pair<std::string, std::string>> wrong_answers(const std::vector
     const int span = limits::max_exponent - limits::min_exponent + limits::digits + 2;
     std::vector<Scalar> ks;
     for (int k = -span; k <= span; ++k) ks.push_back(Scalar(k));
-    for (const Scalar k : {limits::quiet_NaN(), limits::infinity(), -limits::infinity(), Scalar(1e6), Scalar(-1e6)})
+    for (const Scalar k :
+         {limits::quiet_NaN(), limits::infinity(), -limits::infinity(), Scalar(1e6), Scalar(-1e6)})
       ks.push_back(k);
     for (const Scalar x : {Scalar(1), Scalar(-1.5), limits::denorm_min(), limits::max()}) {
       for (const Scalar k : ks) {
-        // k clamped to [−4096, 4096], a NaN to −4096; x · 2^k in long double is exact, rounded once to Scalar.
+        // k clamped to [−4096, 4096], a NaN to −4096; x · 2^k in long double is exact, rounded once to
+        // Scalar.
         const int clamped = !(k >= Scalar(-4096)) ? -4096 : k > Scalar(4096) ? 4096 : static_cast<int>(k);
         const auto expected = static_cast<Scalar>(std::ldexp(static_cast<long double>(x), clamped));
         const auto got = run.call("times_power_of_two", {E::of(x), E::of(k)});
@@ -354,7 +364,8 @@ std::vector<std::pair<std::string, std::string>> wrong_answers(const std::vector
   if (device) return wrong;  // the rest is host code
   attempt("orders_as_bits", [&]() -> std::string {
     const auto got = run.call("orders_as_bits", {});
-    return got.kind == E::Value::Kind::boolean && got.boolean ? "" : "orders_as_bits is false for an IEEE type";
+    return got.kind == E::Value::Kind::boolean && got.boolean ? ""
+                                                              : "orders_as_bits is false for an IEEE type";
   });
   attempt("larger", [&]() -> std::string {
     using Bits = typename E::Bits;
@@ -364,7 +375,8 @@ std::vector<std::pair<std::string, std::string>> wrong_answers(const std::vector
       for (const Bits b : us) {
         const auto got = run.call("larger", {E::of_bits(a), E::of_bits(b)});
         if (got.kind != E::Value::Kind::bits || got.bits != (a > b ? a : b))
-          return "larger(" + std::to_string(a) + ", " + std::to_string(b) + ") is " + std::to_string(got.bits);
+          return "larger(" + std::to_string(a) + ", " + std::to_string(b) + ") is " +
+                 std::to_string(got.bits);
       }
     }
     return "";
@@ -372,7 +384,9 @@ std::vector<std::pair<std::string, std::string>> wrong_answers(const std::vector
   attempt("bits_above", [&]() -> std::string {
     const int k = limits::max_exponent / 2 - 3;
     const std::vector<std::pair<Scalar, Scalar>> ranges = {
-        {Scalar(1), Scalar(2)}, {limits::min(), limits::max()}, {std::ldexp(Scalar(1), -k), std::ldexp(Scalar(1), k)}};
+        {Scalar(1), Scalar(2)},
+        {limits::min(), limits::max()},
+        {std::ldexp(Scalar(1), -k), std::ldexp(Scalar(1), k)}};
     for (const auto& [low, high] : ranges) {
       std::vector<Scalar> tried = xs;
       for (const Scalar edge : {low, high}) {
@@ -384,9 +398,10 @@ std::vector<std::pair<std::string, std::string>> wrong_answers(const std::vector
       for (const Scalar x : tried) {
         const auto got = run.call("bits_above", {E::of(x), E::of(low)});
         const bool inside = low <= x && x <= high;
-        if (got.kind != E::Value::Kind::bits || top.kind != E::Value::Kind::bits || (got.bits <= top.bits) != inside)
-          return "bits_above(" + shown(x) + ", " + shown(low) + ") <= bits_above(" + shown(high) + ", " + shown(low) +
-                 ") is " + (inside ? "false" : "true") + ", but " + shown(x) + " lies " +
+        if (got.kind != E::Value::Kind::bits || top.kind != E::Value::Kind::bits ||
+            (got.bits <= top.bits) != inside)
+          return "bits_above(" + shown(x) + ", " + shown(low) + ") <= bits_above(" + shown(high) + ", " +
+                 shown(low) + ") is " + (inside ? "false" : "true") + ", but " + shown(x) + " lies " +
                  (inside ? "inside" : "outside") + " [" + shown(low) + ", " + shown(high) + "]";
       }
     }
@@ -417,8 +432,9 @@ std::vector<KernelProblem> prove_bit_helpers(const std::vector<CppFunction>& fun
   for (const bool device : {false, true}) {
     const auto add = [&](const std::string& type, const auto& wrong) {
       for (const auto& [helper, answer] : wrong)
-        problems.push_back({helper, "", "as printed, in " + type + " (" + (device ? "the device path" : "on the host") +
-                                            "): " + answer});
+        problems.push_back({helper, "",
+                            "as printed, in " + type + " (" + (device ? "the device path" : "on the host") +
+                                "): " + answer});
     };
     add("float", wrong_answers<float>(functions, defined, device));
     add("double", wrong_answers<double>(functions, defined, device));

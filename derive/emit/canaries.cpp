@@ -136,9 +136,9 @@ std::string reader_grouping() {
     if (read != expected) return "`" + text + "` read as " + read;
   }
   // And the round trip: a statement printed again is the text it was read from.
-  const std::vector<CppFunction> functions =
-      read_functions("template <typename Scalar>\nScalar f(Scalar a, Scalar b, Scalar c) noexcept {\n"
-                     "  const Scalar q = a * b / c;\n  return -(q - a - b);\n}\n");
+  const std::vector<CppFunction> functions = read_functions(
+      "template <typename Scalar>\nScalar f(Scalar a, Scalar b, Scalar c) noexcept {\n"
+      "  const Scalar q = a * b / c;\n  return -(q - a - b);\n}\n");
   for (const CppStatement& s : functions.at(0).body) {
     if (!reads_as_printed(s)) return "a statement read back as `" + printed_again(s) + "`";
   }
@@ -193,10 +193,15 @@ const std::vector<Canary>& prover_canaries() {
          "x in [1, 2] -> x + 1 in [0, 2] (false), beside a goal Gappa answers (so that it prints Results:)",
          "refused",
          [] {
-           return verdict("@rnd = float<ieee_64, ne>;\nx = rnd(input_x);\n{ x in [1, 2] -> x + 1 in [0, 2] /\\ x * x in ? }\n");
+           return verdict(
+               "@rnd = float<ieee_64, ne>;\nx = rnd(input_x);\n{ x in [1, 2] -> x + 1 in [0, 2] /\\ x * x in "
+               "? }\n");
          }},
         {"gappa.proves_a_true_property", "x in [1, 2] -> x + 1 in [2, 3]", "proven",
-         [] { return verdict("@rnd = float<ieee_64, ne>;\nx = rnd(input_x);\n{ x in [1, 2] -> x + 1 in [2, 3] }\n"); }},
+         [] {
+           return verdict(
+               "@rnd = float<ieee_64, ne>;\nx = rnd(input_x);\n{ x in [1, 2] -> x + 1 in [2, 3] }\n");
+         }},
     };
     for (const std::string type : {"float", "double"}) {
       out.push_back({"range." + type + "_up_to_the_largest_finite_is_proven",
@@ -210,17 +215,19 @@ const std::vector<Canary>& prover_canaries() {
                      type == "float" ? "2^-24" : "2^-53", [type] { return one_rounding_bound(type); }});
       out.push_back({"precision." + type + "_product_beyond_float",
                      "x · y over [1, 2^100]² overflows in float and not in double; in " + type,
-                     type == "float" ? "refused" : "proven",
-                     [type] { return proven_in(product_kernel(numeric(2).power(100), numeric(2).power(100)), type); }});
+                     type == "float" ? "refused" : "proven", [type] {
+                       return proven_in(product_kernel(numeric(2).power(100), numeric(2).power(100)), type);
+                     }});
     }
     out.push_back({"cache.one_line_apart_misses",
                    "an answer kept for x · y's float script, asked for that script and for every script one "
                    "line apart (each line changed or dropped, the double script)",
                    "the kept script hits; every script one line apart misses", cache_one_line_apart});
-    out.push_back({"reader.keeps_the_grouping",
-                   "expressions read as C++ groups them (a * b / c as (a * b) / c, -a * b as (-a) * b, …) and "
-                   "statements printed again as read",
-                   "as C++ groups it", reader_grouping});
+    out.push_back(
+        {"reader.keeps_the_grouping",
+         "expressions read as C++ groups them (a * b / c as (a * b) / c, -a * b as (-a) * b, …) and "
+         "statements printed again as read",
+         "as C++ groups it", reader_grouping});
     return out;
   }();
   return canaries;

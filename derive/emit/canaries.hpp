@@ -14,9 +14,9 @@ namespace billiards::derive {
 
 /// A question with a known answer.
 struct Canary {
-  std::string id;         ///< e.g. gappa.refuses_a_false_property
-  std::string statement;  ///< what it asks, in words
-  std::string expected;   ///< the answer a sound prover gives
+  std::string id;                    ///< e.g. gappa.refuses_a_false_property
+  std::string statement;             ///< what it asks, in words
+  std::string expected;              ///< the answer a sound prover gives
   std::function<std::string()> ask;  ///< the prover's answer, by the path the kernels' proofs take
 };
 

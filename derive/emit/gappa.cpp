@@ -58,7 +58,8 @@ std::string only_what_is_read(const std::string& script) {
     for (std::size_t at = 0; at < text.size();) {
       if (std::isalpha(static_cast<unsigned char>(text[at])) || text[at] == '_') {
         std::size_t end = at;
-        while (end < text.size() && (std::isalnum(static_cast<unsigned char>(text[end])) || text[end] == '_')) ++end;
+        while (end < text.size() && (std::isalnum(static_cast<unsigned char>(text[end])) || text[end] == '_'))
+          ++end;
         read.insert(text.substr(at, end - at));
         at = end;
       } else {
@@ -173,7 +174,8 @@ GappaAnswer run_gappa(const std::string& whole) {
     const bool proven = gappa_proved(status, output);
     return answered[script] = GappaAnswer{status, std::move(output), proven};
   };
-  if (auto cached = ProofCache::instance().find(script)) return answer(cached->first, std::move(cached->second));
+  if (auto cached = ProofCache::instance().find(script))
+    return answer(cached->first, std::move(cached->second));
   std::string path = (std::filesystem::temp_directory_path() / "billiards-gappa-XXXXXX").string();
   std::vector<char> name(path.begin(), path.end());
   name.push_back('\0');

@@ -238,59 +238,42 @@ class ReadBack {
     // Where the kernel is a fast path's plain form, its domain proven safe from the same text.
     if ((!kernel.domain.empty() || !kernel.rounding_cases.empty()) &&
         (!proves_rounding_of_ || proves_rounding_of_(kernel.name) || proves_rounding_of_(name))) {
-      const std::vector<KernelProblem> rounding = prove_rounding(*f, kernel, bounds_, guard_ranges(kernel));
+      const std::vector<KernelProblem> rounding = prove_rounding(*f, kernel, bounds_, printed_facts(kernel));
       problems_.insert(problems_.end(), rounding.begin(), rounding.end());
     }
   }
 
-  // The intervals the printed range test admits for the parameters of `plain`, a fast path's plain form,
-  // by format: the predicate's comparisons as printed, each constant's value as the header prints it for
-  // the type. Empty for a kernel no printed test guards; a test that cannot be read so is left to
-  // prove_predicate, which refuses it.
-  GuardRanges guard_ranges(const Kernel& plain) const {
-    GuardRanges out;
+  // What the header prints that the proofs of `kernel` must state (rounding.hpp): where it is a fast
+  // path's plain form, the intervals the printed range test admits, from its comparisons as printed; and
+  // each named constant's value as the header prints it for the type.
+  PrintedFacts printed_facts(const Kernel& kernel) const {
+    PrintedFacts out;
+    for (const BinaryFormat& format : emitted_formats()) {
+      GiNaC::exmap& values = out.constants[format.type];
+      for (const auto& [spelling, constant] : named_constant_spellings()) {
+        if (const std::optional<GiNaC::numeric> v = printed_constant(spelling.substr(0, spelling.find('<')), format))
+          values[constant] = *v;
+      }
+    }
     const auto guarded = std::find_if(kernels_.begin(), kernels_.end(), [&](const Kernel& k) {
-      return k.fast_path && k.fast_path->kernel == plain.name;
+      return k.fast_path && k.fast_path->kernel == kernel.name;
     });
-    if (plain.domain.empty() || guarded == kernels_.end()) return out;
+    if (kernel.domain.empty() || guarded == kernels_.end()) return out;
+    // A test that cannot be read so is left to prove_predicate, which refuses it.
     const CppFunction* predicate = find(guarded->fast_path->predicate);
     if (predicate == nullptr || predicate->body.empty() || !predicate->body.back().value) return out;
     std::map<std::string, ex> names;
     for (const ex& p : guarded->parameters) names[symbol_name(p)] = p;
     std::vector<const CppExpression*> terms;
     conjuncts(*predicate->body.back().value, terms);
-    for (const BinaryFormat& format : emitted_formats()) {
-      GiNaC::exmap values;
-      for (const auto& [spelling, constant] : named_constant_spellings()) {
-        if (const std::optional<GiNaC::numeric> v = printed_constant(spelling.substr(0, spelling.find('<')), format))
-          values[constant] = *v;
-      }
-      auto& ranges = out[format.type];
-      for (const CppExpression* term : terms) {
-        ex relation;
-        try {
-          relation = to_expression(*term, names);
-        } catch (const std::exception&) {
-          return {};
-        }
-        if (!GiNaC::is_a<GiNaC::relational>(relation)) return {};
-        using GiNaC::relational;
-        if (relation.info(GiNaC::info_flags::relation_greater))
-          relation = relational(relation.rhs(), relation.lhs(), relational::less);
-        if (relation.info(GiNaC::info_flags::relation_greater_or_equal))
-          relation = relational(relation.rhs(), relation.lhs(), relational::less_or_equal);
-        const bool lower = GiNaC::is_a<GiNaC::symbol>(relation.rhs()) && names.count(symbol_name(relation.rhs()));
-        const ex parameter = lower ? relation.rhs() : relation.lhs();
-        const ex bound = (lower ? relation.lhs() : relation.rhs()).subs(values);
-        if (!GiNaC::is_a<GiNaC::symbol>(parameter) || !GiNaC::is_a<GiNaC::numeric>(bound)) return {};
-        GiNaC::numeric value = GiNaC::ex_to<GiNaC::numeric>(bound);
-        // x < c holds up to the largest number of the type below c (a power of two): c (1 − 2^−digits).
-        if (relation.info(GiNaC::info_flags::relation_less))
-          value -= value * GiNaC::numeric(2).power(-format.digits);
-        auto& interval = ranges[symbol_name(parameter)];
-        (lower ? interval.first : interval.second) = value;
-      }
+    std::vector<ex> relationals;
+    try {
+      for (const CppExpression* term : terms) relationals.push_back(to_expression(*term, names));
+    } catch (const std::exception&) {
+      return out;
     }
+    for (const BinaryFormat& format : emitted_formats())
+      out.guard[format.type] = intervals_of(relationals, out.constants[format.type], format);
     return out;
   }
 

@@ -554,9 +554,9 @@ std::optional<std::pair<int, int>> stated_rounding(const std::string& script) {
   return std::nullopt;
 }
 
-// The script's hypotheses `p_x in [a, b]`, by parameter.
-std::map<std::string, std::pair<GiNaC::numeric, GiNaC::numeric>> stated_ranges(const std::string& script) {
-  std::map<std::string, std::pair<GiNaC::numeric, GiNaC::numeric>> out;
+// The script's hypotheses `p_x in [a, b]`, by parameter (one may have more than one).
+std::multimap<std::string, std::pair<GiNaC::numeric, GiNaC::numeric>> stated_ranges(const std::string& script) {
+  std::multimap<std::string, std::pair<GiNaC::numeric, GiNaC::numeric>> out;
   const std::size_t open = script.rfind("\n{ "), arrow = script.find("\n  -> ", open);
   if (open == std::string::npos || arrow == std::string::npos) return out;
   const std::string hypotheses = script.substr(open + 3, arrow - open - 3);
@@ -567,18 +567,17 @@ std::map<std::string, std::pair<GiNaC::numeric, GiNaC::numeric>> stated_ranges(c
     at = end + 4;
     const std::size_t in = h.find(" in [");
     if (h.rfind("p_", 0) != 0 || in == std::string::npos) continue;
-    if (const auto ends = interval_ends(h)) out[h.substr(2, in - 2)] = *ends;
+    if (const auto ends = interval_ends(h)) out.emplace(h.substr(2, in - 2), *ends);
   }
   return out;
 }
 
 // What a script states, held against what the header prints: it rounds in the format of the kernel's
 // Scalar instantiation (float or double, as the C++ implementation defines them: std::numeric_limits),
-// and its hypotheses on each parameter the printed guard bounds are that guard's interval, with its
-// constants' values as printed for the type.
+// and among its hypotheses is each interval `expected` gives a parameter.
 void check_against_header(const std::string& script, const BinaryFormat& format,
-                          const std::map<std::string, std::pair<GiNaC::numeric, GiNaC::numeric>>& guard) {
-  const auto expected = format.type == "float"
+                          const std::vector<std::pair<std::string, Intervals>>& expected) {
+  const auto rounding = format.type == "float"
                             ? std::make_pair(std::numeric_limits<float>::digits,
                                              std::numeric_limits<float>::min_exponent -
                                                  std::numeric_limits<float>::digits)
@@ -586,29 +585,37 @@ void check_against_header(const std::string& script, const BinaryFormat& format,
                                              std::numeric_limits<double>::min_exponent -
                                                  std::numeric_limits<double>::digits);
   const std::optional<std::pair<int, int>> stated = stated_rounding(script);
-  if (!stated || *stated != expected)
+  if (!stated || *stated != rounding)
     throw NotProvable("its " + format.type + " script rounds " +
                       (stated ? "to " + std::to_string(stated->first) + " digits down to 2^" +
                                     std::to_string(stated->second)
                               : std::string("in no format Gappa names")) +
-                      ", not as " + format.type + " does: " + std::to_string(expected.first) +
-                      " digits down to 2^" + std::to_string(expected.second));
+                      ", not as " + format.type + " does: " + std::to_string(rounding.first) +
+                      " digits down to 2^" + std::to_string(rounding.second));
   const auto ranges = stated_ranges(script);
-  for (const auto& [parameter, interval] : guard) {
-    const auto found = ranges.find(parameter);
-    if (found == ranges.end() || found->second != interval)
-      throw NotProvable("its " + format.type + " script states " +
-                        (found == ranges.end() ? "no range of " + parameter
-                                               : parameter + " in [" + bound_text(found->second.first) + ", " +
-                                                     bound_text(found->second.second) + "]") +
-                        " where the printed guard admits " + parameter + " in [" + bound_text(interval.first) +
-                        ", " + bound_text(interval.second) + "]");
+  const auto shown = [](const std::pair<GiNaC::numeric, GiNaC::numeric>& interval) {
+    return "[" + bound_text(interval.first) + ", " + bound_text(interval.second) + "]";
+  };
+  for (const auto& [source, intervals] : expected) {
+    for (const auto& [parameter, interval] : intervals) {
+      const auto [first, last] = ranges.equal_range(parameter);
+      bool found = false;
+      std::string states;
+      for (auto at = first; at != last; ++at) {
+        found = found || at->second == interval;
+        states += (states.empty() ? "" : " and ") + shown(at->second);
+      }
+      if (!found)
+        throw NotProvable("its " + format.type + " script states " +
+                          (states.empty() ? "no range of " + parameter : parameter + " in " + states) + " where " +
+                          source + " " + parameter + " in " + shown(interval));
+    }
   }
 }
 
 // One format and one case: what Gappa proved (into `bounds`) or why not (into `problems`).
 void prove_case(const CppFunction& printed, const Kernel& kernel, const BinaryFormat& format,
-                const std::vector<ex>& ranges, const GuardRanges& guard, std::vector<KernelProblem>& problems,
+                const std::vector<ex>& ranges, const PrintedFacts& facts, std::vector<KernelProblem>& problems,
                 std::vector<RoundingBound>& bounds) {
   const auto fail = [&](const std::string& reason) {
     problems.push_back({kernel.name, kernel.equals, "its rounding proof: " + reason});
@@ -658,8 +665,13 @@ void prove_case(const CppFunction& printed, const Kernel& kernel, const BinaryFo
           }
         }
         const std::string script = gappa_script(printed, kernel, format, ranges, taken, hints);
-        const auto in_format = guard.find(format.type);
-        check_against_header(script, format, in_format == guard.end() ? GuardRanges::mapped_type{} : in_format->second);
+        std::vector<std::pair<std::string, Intervals>> expected;
+        if (const auto guard = facts.guard.find(format.type); guard != facts.guard.end())
+          expected.emplace_back("the printed guard admits", guard->second);
+        if (const auto constants = facts.constants.find(format.type); constants != facts.constants.end())
+          expected.emplace_back("the case's ranges, with the constants as printed, give",
+                                intervals_of(ranges, constants->second, format));
+        check_against_header(script, format, expected);
         const GappaAnswer answer = run_gappa(script);
         const std::string& output = answer.output;
         if (!answer.proven) {
@@ -738,6 +750,37 @@ void deserialize(const std::string& text, const Kernel& kernel, const BinaryForm
 
 }  // namespace
 
+Intervals intervals_of(const std::vector<ex>& relationals, const GiNaC::exmap& constants,
+                       const BinaryFormat& format) {
+  std::map<std::string, std::pair<std::optional<GiNaC::numeric>, std::optional<GiNaC::numeric>>> ends;
+  for (ex relation : relationals) {
+    if (!GiNaC::is_a<GiNaC::relational>(relation)) continue;
+    using GiNaC::relational;
+    if (relation.info(GiNaC::info_flags::relation_greater))
+      relation = relational(relation.rhs(), relation.lhs(), relational::less);
+    if (relation.info(GiNaC::info_flags::relation_greater_or_equal))
+      relation = relational(relation.rhs(), relation.lhs(), relational::less_or_equal);
+    const bool strict = relation.info(GiNaC::info_flags::relation_less);
+    if (!strict && !relation.info(GiNaC::info_flags::relation_less_or_equal)) continue;
+    const bool lower = GiNaC::is_a<GiNaC::symbol>(relation.rhs()) && !is_named_constant(relation.rhs());
+    const ex parameter = lower ? relation.rhs() : relation.lhs();
+    const ex bound = (lower ? relation.lhs() : relation.rhs()).subs(constants);
+    if (!GiNaC::is_a<GiNaC::symbol>(parameter) || is_named_constant(parameter) || !GiNaC::is_a<GiNaC::numeric>(bound))
+      continue;
+    GiNaC::numeric value = GiNaC::ex_to<GiNaC::numeric>(bound);
+    // x < c holds up to the largest number of the format below c (a power of two): c (1 − 2^−digits).
+    if (strict) value -= value * GiNaC::numeric(2).power(-format.digits);
+    auto& interval = ends[GiNaC::ex_to<GiNaC::symbol>(parameter).get_name()];
+    (lower ? interval.first : interval.second) = value;
+  }
+  // Only a parameter bounded on both sides has an interval.
+  Intervals out;
+  for (const auto& [parameter, interval] : ends) {
+    if (interval.first && interval.second) out[parameter] = {*interval.first, *interval.second};
+  }
+  return out;
+}
+
 std::vector<KernelProblem> prove_rounding_in(const CppFunction& printed, const Kernel& kernel,
                                              const BinaryFormat& format, std::vector<RoundingBound>& bounds) {
   std::vector<std::vector<ex>> cases = kernel.rounding_cases;
@@ -748,7 +791,7 @@ std::vector<KernelProblem> prove_rounding_in(const CppFunction& printed, const K
 }
 
 std::vector<KernelProblem> prove_rounding(const CppFunction& printed, const Kernel& kernel,
-                                          std::vector<RoundingBound>& bounds, const GuardRanges& guard) {
+                                          std::vector<RoundingBound>& bounds, const PrintedFacts& facts) {
   struct Job {
     const BinaryFormat* format;
     std::vector<ex> ranges;
@@ -788,7 +831,7 @@ std::vector<KernelProblem> prove_rounding(const CppFunction& printed, const Kern
         close(ends[0]);
         std::vector<KernelProblem> p;
         std::vector<RoundingBound> b;
-        prove_case(printed, kernel, *job.format, job.ranges, guard, p, b);
+        prove_case(printed, kernel, *job.format, job.ranges, facts, p, b);
         const std::string text = serialized(p, b);
         for (std::size_t at = 0; at < text.size();) {
           const ssize_t n = write(ends[1], text.data() + at, text.size() - at);
@@ -808,7 +851,7 @@ std::vector<KernelProblem> prove_rounding(const CppFunction& printed, const Kern
       // No process to spare: proven here.
       std::vector<KernelProblem> p;
       std::vector<RoundingBound> b;
-      prove_case(printed, kernel, *job.format, job.ranges, guard, p, b);
+      prove_case(printed, kernel, *job.format, job.ranges, facts, p, b);
       job.found = serialized(p, b);
     }
     while (static_cast<long>(i + 1 - next_to_finish) >= processors) {

@@ -36,14 +36,30 @@ struct RoundingBound {
 /// or output that may overflow or leave the normal range, an output without a finite relative bound, a
 /// guard the domain neither rules out nor in, a domain that is not a closed interval of finite
 /// constants — and when Gappa cannot be run. Never throws.
+/// Intervals by parameter name: [low, high].
+using Intervals = std::map<std::string, std::pair<GiNaC::numeric, GiNaC::numeric>>;
+
+/// What the header prints that a proof's script must state, by format type ("float", "double"): the
+/// intervals its printed range test admits for a fast path's plain form (empty for any other kernel), and
+/// the named constants' values as printed (each constant's symbol → its value).
+struct PrintedFacts {
+  std::map<std::string, Intervals> guard;
+  std::map<std::string, GiNaC::exmap> constants;
+};
+
+/// The interval each parameter has under `relationals` (`a <= x`, `x <= b`, `x < c` or `c < x`, `>` and
+/// `>=` alike; x < c up to the largest number of the format below c), the bounds' named constants given
+/// the values `constants` holds; relationals of other quantities, or whose bound is then no number, are
+/// passed over.
+Intervals intervals_of(const std::vector<GiNaC::ex>& relationals, const GiNaC::exmap& constants,
+                       const BinaryFormat& format);
+
 /// Each script is also held against the printed text before Gappa's answer is taken: its `@rnd` must
-/// round as the format's C++ type does (std::numeric_limits), and where `guard` gives the intervals the
-/// header's printed range test admits (by format type, then parameter, with the printed constants'
-/// values), the script's hypothesis on each such parameter must be that interval; a mismatch is a problem.
-using GuardRanges =
-    std::map<std::string, std::map<std::string, std::pair<GiNaC::numeric, GiNaC::numeric>>>;
+/// round as the format's C++ type does (std::numeric_limits), and its hypothesis on each parameter must
+/// be the interval the printed guard admits (`printed.guard`) and the interval the case's ranges give with
+/// the constants' printed values (`printed.constants`); a mismatch is a problem.
 std::vector<KernelProblem> prove_rounding(const CppFunction& printed, const Kernel& kernel,
-                                          std::vector<RoundingBound>& bounds, const GuardRanges& guard = {});
+                                          std::vector<RoundingBound>& bounds, const PrintedFacts& facts = {});
 
 /// prove_rounding in one format alone, every case in this process (the canaries' path).
 std::vector<KernelProblem> prove_rounding_in(const CppFunction& printed, const Kernel& kernel,

@@ -70,6 +70,11 @@ Mutation domain_widened(const std::string& name, const std::string& culprit, con
 
 const std::vector<Mutation>& paper_class_mutations() {
   static const std::vector<Mutation> mutations = {
+      // The bit comparison's helpers, one off.
+      printed("support_bits_above_off_by_one", "bits_above", kernels_header, "bits_above",
+              "std::bit_cast<Bits>(low))", "std::bit_cast<Bits>(low) + 1)"),
+      printed("support_larger_takes_the_smaller", "larger", kernels_header, "larger", "a > b ? a : b",
+              "a < b ? a : b"),
       // The printer: each relational and arithmetic operator, literals and their suffixes.
       printed("printer_less_as_less_or_equal", "full_normal_velocity_change", kernels_header,
               "full_normal_velocity_change", " < smallest_normal", " <= smallest_normal"),
@@ -189,6 +194,15 @@ const std::vector<Mutation>& spin_class_mutations() {
               "plain_slide_time(slip_speed, gravity, sliding_friction)"),
       printed("support_moderate_loop_off_by_one", "moderate_low", spin_header, "moderate_low",
               "max_exponent / 4 - 2", "max_exponent / 4 - 1"),
+      // The bit helpers, one off: run from their text over every exponent, each answers wrongly somewhere.
+      printed("support_binary_exponent_bias_off_by_one", "binary_exponent", spin_header, "binary_exponent",
+              "static_cast<int>(field) - bias", "static_cast<int>(field) - bias + 1"),
+      printed("support_binary_exponent_device_path_off_by_one", "binary_exponent", spin_header,
+              "binary_exponent", "return Scalar(std::ilogb(x));", "return Scalar(std::ilogb(x) - 1);"),
+      printed("support_times_power_of_two_bias_off_by_one", "times_power_of_two", spin_header,
+              "times_power_of_two", "static_cast<Bits>(exponent + bias)", "static_cast<Bits>(exponent + bias + 1)"),
+      printed("support_times_power_of_two_clamp_off_by_one", "times_power_of_two", spin_header,
+              "times_power_of_two", "exponent >= 1 - bias", "exponent >= -bias"),
       meanings_swapped("meaning_roll_time_speed_and_gravity_swapped", "roll_time", "speed", "gravity"),
       uncited_claim_wrong("uncited_claim_linear_momentum", "conservation.linear_momentum"),
       // A scaled kernel's range beyond one binade, where its exponents are no longer 0.
