@@ -394,7 +394,7 @@ std::string print_symbolic_power(const ex& e, Notation notation) {
 
 // How deep print_any may go before it elides the rest: far beyond any expression a model derives, so
 // that a message about a malformed expression is written rather than the stack overflowed.
-constexpr int deepest_print = 2000;
+constexpr int deepest_print = 500;
 
 std::string print_nested(const ex& e, Notation notation);
 
