@@ -5,8 +5,8 @@
 
 #include "core/record.hpp"
 #include "emit/kernel.hpp"
-#include "emit/canaries.hpp"
-#include "emit/rounding.hpp"
+#include "prove/canaries.hpp"
+#include "prove/rounding.hpp"
 
 #include <functional>
 #include <string>
@@ -46,7 +46,7 @@ struct Derivation : Record {
   /// What Gappa proved of each fast path's plain form, filled in when the printed kernels are read back
   /// (billiards-derive), before the audit is written.
   std::vector<RoundingBound> rounding;
-  /// What the prover's canaries (emit/canaries.hpp) answered at the start of the run.
+  /// What the prover's canaries (prove/canaries.hpp) answered at the start of the run.
   std::vector<CanaryOutcome> canaries;
 };
 

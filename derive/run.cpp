@@ -3,7 +3,7 @@
 #include "audit/audit.hpp"
 #include "core/output_files.hpp"
 #include "emit/emitter.hpp"
-#include "emit/read_back.hpp"
+#include "prove/read_back.hpp"
 #include "emit/validate.hpp"
 
 #include <CLI/CLI.hpp>
@@ -64,7 +64,7 @@ int run_model(const ModelEntry& entry, const fs::path& folder, const std::vector
   };
   // No header unless the whole model verifies: a failed claim, cited by a kernel or not, or a kernel that
   // is not proven means none is printed. Each header is then read back and proven from its text
-  // (emit/read_back.hpp), its plain forms' domains by Gappa, before the audit is written, which shows what
+  // (prove/read_back.hpp), its plain forms' domains by Gappa, before the audit is written, which shows what
   // Gappa proved; the headers, whose fingerprint covers the audit, are then printed again with it.
   // Every kernel (the reference kernels aside) has a proven error bound: it states where.
   for (const Kernel& kernel : derivation.kernels) {

@@ -14,7 +14,7 @@ inline constexpr int exit_usage = 2;
 inline constexpr int exit_io = 3;
 
 /// Parses the command line (`--out DIR`, `--model NAME`, `--help`), asks `canaries` (the prover's own
-/// checks, emit/canaries.hpp) and runs `models` (all, or the one named). Where a canary answers wrongly,
+/// checks, prove/canaries.hpp) and runs `models` (all, or the one named). Where a canary answers wrongly,
 /// each model is still derived and its audit written, showing the canaries' answers, but nothing is
 /// proven by the prover that failed and no header is written: exit status 1. Returns the exit status.
 int derive_main(int argc, const char* const* argv, const std::vector<ModelEntry>& models,

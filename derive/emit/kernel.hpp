@@ -93,7 +93,7 @@ struct Kernel {
   /// Where this kernel keeps its accuracy when that is less than every valid input: relationals (a fast
   /// path's conditions) that its inputs must meet. The accuracy tool draws its inputs inside them.
   std::vector<GiNaC::ex> domain = {};
-  /// The rounding proof's cases (emit/rounding.hpp). Every kernel that is not a reference kernel needs a
+  /// The rounding proof's cases (prove/rounding.hpp). Every kernel that is not a reference kernel needs a
   /// domain or at least one case, or billiards-derive fails: its error bound is proven over them. In
   /// each, relationals `a <= x`, `x <= b`, `x < 2^k` or `-2^k < x` (the bounds numbers or named constants'
   /// expressions) bounding the quantities the domain leaves free — restitution in [0, 1], a speed such as

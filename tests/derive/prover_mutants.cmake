@@ -53,13 +53,13 @@ endfunction()
 set(from1 [[  return status == 0 && output.find("not satisfied") == std::string::npos &&
          output.find("Error") == std::string::npos;]])
 set(to1 [[  return status <= 1 && output.find("Results:") != std::string::npos;]])
-billiards_prover_mutant(verdict_from_results emit/gappa.cpp
+billiards_prover_mutant(verdict_from_results prove/gappa.cpp
   "PROVER CANARY FAILED gappa.refuses_a_false_property"
   from1 to1)
 # The float scripts rounded as double.
 set(from1 [[if (digits == 24 && min_exponent == -125) return "float<ieee_32, ne>";]])
 set(to1 [[if (digits == 24 && min_exponent == -125) return "float<ieee_64, ne>";]])
-billiards_prover_mutant(float_rounded_as_double emit/gappa.cpp
+billiards_prover_mutant(float_rounded_as_double prove/gappa.cpp
   "PROVER CANARY FAILED precision.float_rounds_as_float"
   from1 to1)
 # The proof cache's key and its byte-for-byte check both without the script's first line, the @rnd line.
@@ -73,20 +73,20 @@ set(from2 [[std::string ProofCache::entry(const std::string& script, int status,
 set(to2 [[std::string ProofCache::entry(const std::string& whole, int status, const std::string& output) const {
   const std::string script = whole.substr(whole.find('\n') + 1);
 ]])
-billiards_prover_mutant(cache_key_without_rounding emit/gappa.cpp
+billiards_prover_mutant(cache_key_without_rounding prove/gappa.cpp
   "PROVER CANARY FAILED cache.one_line_apart_misses"
   from1 to1 from2 to2)
 # The named constants' float values written into the double scripts: the double plain forms proven over
 # masses up to 2^61 while the printed guard admits 2^509.
 set(from1 [[value_in(bound, format_)]])
 set(to1 [[value_in(bound, emitted_formats().front())]])
-billiards_prover_mutant(float_constants_in_double_scripts emit/rounding.cpp
+billiards_prover_mutant(float_constants_in_double_scripts prove/rounding.cpp
   "KERNEL NOT PROVEN plain_elastic_normal_velocity_change .*its double script states m1 in \\[2\\^-61, 2\\^61\\] where the printed guard admits m1 in \\[2\\^-509, 2\\^509\\]"
   from1 to1)
 # The overflow goal twice the largest finite number.
 set(from1 [[std::to_string(format.max_exponent - format.digits);]])
 set(to1 [[std::to_string(format.max_exponent - format.digits + 1);]])
-billiards_prover_mutant(overflow_bound_doubled emit/rounding.cpp
+billiards_prover_mutant(overflow_bound_doubled prove/rounding.cpp
   "PROVER CANARY FAILED range.float_one_ulp_wider_is_refused"
   from1 to1)
 # `/` a precedence level of its own, tighter than `*`: a * b / c read as a * (b / c).
@@ -94,7 +94,7 @@ set(from1 [[{"+", "-"}, {"*", "/"}};]])
 set(to1 [[{"+", "-"}, {"*"}, {"/"}};]])
 set(from2 [[if (level > 7) return unary();]])
 set(to2 [[if (level > 8) return unary();]])
-billiards_prover_mutant(reader_division_above_multiplication emit/cpp_reader.cpp
+billiards_prover_mutant(reader_division_above_multiplication prove/cpp_reader.cpp
   "PROVER CANARY FAILED reader.keeps_the_grouping"
   from1 to1 from2 to2)
 # Unary minus dropped by the reader.
@@ -104,6 +104,6 @@ set(to1 [[    if (peek().kind == Token::Kind::punctuation && peek().text == "-")
       return unary();
     }
     if (peek().kind == Token::Kind::punctuation && peek().text == "!") {]])
-billiards_prover_mutant(reader_drops_unary_minus emit/cpp_reader.cpp
+billiards_prover_mutant(reader_drops_unary_minus prove/cpp_reader.cpp
   "PROVER CANARY FAILED reader.keeps_the_grouping"
   from1 to1)

@@ -2,10 +2,10 @@
 // reader's round trip, the bit helpers run from their text, a printer that ends on any expression, and the
 // canaries every run asks.
 #include "core/powers_of_two.hpp"
-#include "emit/bit_helpers.hpp"
-#include "emit/canaries.hpp"
-#include "emit/cpp_reader.hpp"
-#include "emit/gappa.hpp"
+#include "prove/bit_helpers.hpp"
+#include "prove/canaries.hpp"
+#include "prove/cpp_reader.hpp"
+#include "prove/gappa.hpp"
 #include "print/printer.hpp"
 
 #include <catch2/catch.hpp>

@@ -2,9 +2,9 @@
 // derivation step that stops.
 #include "core/named_constants.hpp"
 #include "core/record.hpp"
-#include "emit/cpp_reader.hpp"
+#include "prove/cpp_reader.hpp"
 #include "emit/emitter.hpp"
-#include "emit/read_back.hpp"
+#include "prove/read_back.hpp"
 #include "models/parkin2023/paper.hpp"
 #include "models/spinning/spinning.hpp"
 

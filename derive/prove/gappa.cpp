@@ -1,4 +1,4 @@
-#include "emit/gappa.hpp"
+#include "prove/gappa.hpp"
 
 #include "core/output_files.hpp"
 

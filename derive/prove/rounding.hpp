@@ -5,7 +5,7 @@
 #pragma once
 
 #include "core/named_constants.hpp"
-#include "emit/cpp_reader.hpp"
+#include "prove/cpp_reader.hpp"
 #include "emit/kernel.hpp"
 #include "emit/validate.hpp"
 

@@ -1,9 +1,9 @@
-#include "emit/read_back.hpp"
+#include "prove/read_back.hpp"
 
 #include "core/named_constants.hpp"
 #include "core/powers_of_two.hpp"
-#include "emit/bit_helpers.hpp"
-#include "emit/cpp_reader.hpp"
+#include "prove/bit_helpers.hpp"
+#include "prove/cpp_reader.hpp"
 #include "print/printer.hpp"
 
 #include <algorithm>

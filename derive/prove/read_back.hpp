@@ -5,7 +5,7 @@
 
 #include "core/claim.hpp"
 #include "emit/kernel.hpp"
-#include "emit/rounding.hpp"
+#include "prove/rounding.hpp"
 #include "emit/validate.hpp"
 
 #include <functional>

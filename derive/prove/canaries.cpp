@@ -1,12 +1,12 @@
-#include "emit/canaries.hpp"
+#include "prove/canaries.hpp"
 
 #include "core/named_constants.hpp"
 #include "core/powers_of_two.hpp"
-#include "emit/cpp_reader.hpp"
+#include "prove/cpp_reader.hpp"
 #include "emit/emitter.hpp"
-#include "emit/gappa.hpp"
+#include "prove/gappa.hpp"
 #include "emit/kernel.hpp"
-#include "emit/rounding.hpp"
+#include "prove/rounding.hpp"
 
 #include <unistd.h>
 

@@ -7,7 +7,7 @@
 // Generic: it reads functions by name, never a model.
 #pragma once
 
-#include "emit/cpp_reader.hpp"
+#include "prove/cpp_reader.hpp"
 #include "emit/validate.hpp"
 
 #include <string>

@@ -1,4 +1,4 @@
-#include "emit/bit_helpers.hpp"
+#include "prove/bit_helpers.hpp"
 
 #include <algorithm>
 #include <cmath>

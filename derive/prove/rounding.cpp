@@ -1,6 +1,6 @@
-#include "emit/rounding.hpp"
+#include "prove/rounding.hpp"
 
-#include "emit/gappa.hpp"
+#include "prove/gappa.hpp"
 
 #include "core/output_files.hpp"
 #include "core/powers_of_two.hpp"

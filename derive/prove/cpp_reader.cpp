@@ -1,4 +1,4 @@
-#include "emit/cpp_reader.hpp"
+#include "prove/cpp_reader.hpp"
 
 #include <algorithm>
 #include <array>
