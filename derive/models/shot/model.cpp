@@ -1,4 +1,4 @@
-// The shot model as a pipeline: the cue strike.
+// The shot model as a pipeline: the cue strike, squirt and the cushion, one step a file.
 #include "models/shot/shot.hpp"
 
 #include "models/shot/steps.hpp"
@@ -45,9 +45,16 @@ Derivation derive() {
   record_steps(derivation, [&](Recorder& record) {
     const Strike strike;
     record_premises(record);
-    the_cue_strike(record, strike);
+    const CueStrike impulse = the_cue_strike(record, strike);
+    the_strike_spin(record, strike, impulse);
+    the_strike_energy(record, strike, impulse);
+    the_strike_in_tp_a30_frame(record, strike);
     the_squirt(record, strike);
-    the_cushion(record, strike);
+    const CushionContact cushion = the_cushion_contact(record, strike);
+    const CushionRegimes regimes = the_cushion_regimes(record, strike, cushion);
+    the_cushion_energy(record, strike, cushion, regimes);
+    the_cushion_limits(record, strike, cushion, regimes);
+    the_cushion_in_its_frame(record, strike, cushion);
     derivation.kernels = shot_kernels(strike);
   });
   return derivation;

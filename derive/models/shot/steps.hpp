@@ -70,12 +70,49 @@ struct Strike {
 
 void record_premises(Recorder& record);
 
+/// What the strike's later steps read of its impulse.
 struct CueStrike {
-  ex impulse;  ///< J, solved from the tip's restitution
+  ex impulse;               ///< J, solved from the tip's restitution
+  ex inverse_mass;          ///< 1/M + 1/m + (5/2)(a² + b²)/m, of cue and ball at the tip along d
+  ex approach;              ///< V − (v + ω × r)·d, the tip's approach speed
+  GiNaC::exmap at_rest;     ///< v = ω = 0
+  ex impulse_at_rest;       ///< J on a ball at rest
 };
 CueStrike the_cue_strike(Recorder& record, const Strike& strike);
+void the_strike_spin(Recorder& record, const Strike& strike, const CueStrike& impulse);
+void the_strike_energy(Recorder& record, const Strike& strike, const CueStrike& impulse);
+void the_strike_in_tp_a30_frame(Recorder& record, const Strike& strike);
 void the_squirt(Recorder& record, const Strike& strike);
-void the_cushion(Recorder& record, const Strike& strike);
+
+/// The ball at the cushion's nose, in the cushion's frame (x̂ its normal into the cushion, ŷ along it, ẑ
+/// up), and the impulse's parts, as the cushion's later steps read them.
+struct CushionContact {
+  Vec n, r;                  ///< the contact normal (cos θ_a, 0, sin θ_a) and point R n
+  Vec v, w;                  ///< the ball's velocity (on the cloth, v_z = 0) and spin before
+  Vec u;                     ///< the contact point's velocity v + ω × r
+  Vec u_t;                   ///< its part across n
+  ex u_n;                    ///< its part along n
+  Constraint unit;           ///< cos²θ_a + sin²θ_a = 1
+  Constraint slip;           ///< σ² = u_t·u_t
+  ex normal_impulse;         ///< P_n = (1 + e_c) m v_x cos θ_a, solved
+  Vec friction;              ///< the friction impulse −j u_t/σ
+  std::vector<Vec> after;    ///< v', ω' for P = −P_n n − j u_t/σ (P_n and j symbols), v_z' = 0
+  GiNaC::exmap with_normal;  ///< P_n → its solution
+};
+CushionContact the_cushion_contact(Recorder& record, const Strike& strike);
+
+/// The friction impulse in each regime and the outgoing state (v_x', v_y', ω_x', ω_y', ω_z') in each.
+struct CushionRegimes {
+  ex sticking;  ///< j = 2 m σ/7
+  ex sliding;   ///< j = μ_c P_n
+  lst sticking_state, sliding_state;
+};
+CushionRegimes the_cushion_regimes(Recorder& record, const Strike& strike, const CushionContact& contact);
+void the_cushion_energy(Recorder& record, const Strike& strike, const CushionContact& contact,
+                        const CushionRegimes& regimes);
+void the_cushion_limits(Recorder& record, const Strike& strike, const CushionContact& contact,
+                        const CushionRegimes& regimes);
+void the_cushion_in_its_frame(Recorder& record, const Strike& strike, const CushionContact& contact);
 
 /// The strike's kernels (the velocity change J/m, the spin change in the cue's frame) and the cushion's.
 std::vector<Kernel> shot_kernels(const Strike& strike);
