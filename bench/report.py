@@ -2,10 +2,11 @@
 """Turns the JSON of one billiards_bench run into bench/RESULTS.md and bench/throughput.svg.
 
 Usage: bench/report.py RESULTS_JSON [--command "how the JSON was made"] [--derive BIN] [--out-dir DIR]
-                       [--pooltool POOLTOOL_JSON] [--edmd EDMD_TEXT]
+                       [--pooltool POOLTOOL_JSON] [--fastfiz FASTFIZ_JSON] [--edmd EDMD_TEXT]
 
 POOLTOOL_JSON is what ../shared/peers/pooltool/bench_breaks.py printed in the same run (bench/run.sh runs
-both): pooltool's breaks beside ours. EDMD_TEXT is what ../shared/peers/edmd/run.py printed in the same
+both): pooltool's breaks beside ours. FASTFIZ_JSON is what ../shared/peers/fastfiz's bench_break printed
+in the same run: FastFiz's breaks beside ours. EDMD_TEXT is what ../shared/peers/edmd/run.py printed in the same
 run: the gas against Smallenburg's SingleEvent code.
 
 Both files are written atomically (tools/atomic_write.py), into bench/ unless --out-dir names another
@@ -243,10 +244,10 @@ def table_events(runs):
     return "\n".join(lines)
 
 
-def shot_section(runs, pooltool):
-    """Shots played to rest (billiards::simulation::Shot): breaks against pooltool's, random shots."""
-    lines = ["| break (7-ft table, 8 m/s at the apex, b = 0.25 R, 1e-3 R jitter) | ours: µs per break | events | µs per event | pooltool: ms per break (median, seeds 1–20) | events | pooltool / ours | goal |",
-             "|---|---:|---:|---:|---:|---:|---:|---:|"]
+def shot_section(runs, pooltool, fastfiz=None):
+    """Shots played to rest (billiards::simulation::Shot): breaks against pooltool's and FastFiz's, random shots."""
+    lines = ["| break (7-ft table, 8 m/s at the apex, b = 0.25 R, 1e-3 R jitter) | ours: µs per break | events | µs per event | pooltool: ms per break (median, seeds 1–20) | events | pooltool / ours | goal | FastFiz: µs per break (median CPU time) | events | µs per event | FastFiz / ours |",
+             "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|"]
     found = False
     for game, name in (("9ball", "9-ball"), ("8ball", "8-ball")):
         b = runs.get(f"shot/break/{game}")
@@ -259,9 +260,17 @@ def shot_section(runs, pooltool):
         if pooltool is not None:
             peer = pooltool[f"{game}_seeds1to20"]
             ms = 1e3 * peer["time_s"]["median"]
-            lines.append(f"{ours} {ms:,.1f} | {peer['events']['median']:.0f} | {1e3 * ms / us:,.0f}× | ≥ 300× |")
+            row = f"{ours} {ms:,.1f} | {peer['events']['median']:.0f} | {1e3 * ms / us:,.0f}× | ≥ 300× |"
         else:
-            lines.append(f"{ours} (pooltool not set up) | | | ≥ 300× |")
+            row = f"{ours} (pooltool not set up) | | | ≥ 300× |"
+        if fastfiz is not None and game in fastfiz:
+            peer = fastfiz[game]
+            peer_us = peer["cpu_time_per_shot_us"]["median"]
+            peer_events = peer["events_per_shot"]["median"]
+            row += f" {peer_us:,.0f} | {peer_events:.0f} | {peer_us / peer_events:.2f} | {peer_us / us:.2f}× |"
+        else:
+            row += " (FastFiz not set up) | | | |"
+        lines.append(row)
     if not found:
         return "(not in this run)"
     random = runs.get("shot/random")
@@ -282,6 +291,12 @@ def shot_section(runs, pooltool):
                      f"20 times: {1e3 * pooltool['9ball_fixed_seed0']['time_s']['median']:.1f} ms (9-ball), "
                      f"{1e3 * pooltool['8ball_fixed_seed0']['time_s']['median']:.1f} ms (8-ball); other processes' "
                      f"load meanwhile {pooltool['9ball_seeds1to20'].get('other_processes_cpu_cores', float('nan')):.2f} cores.")
+    if fastfiz is not None:
+        reps = fastfiz.get("settings", {}).get("reps", "?")
+        lines.append(f"- FastFiz on the same core in the same run: {fastfiz.get('engine', 'FastFiz')}, {reps} "
+                     f"breaks a game after a warm-up, its thread's CPU time per break (executeShot and its "
+                     f"deletion); its events count its cue strike, ball–ball, ball–rail, pocket and state-change "
+                     f"events.")
     return "\n".join(lines)
 
 
@@ -401,6 +416,7 @@ def main():
     parser.add_argument("--clean-build", help="what a clean build cost, measured by the caller (text)")
     parser.add_argument("--pooltool", help="the JSON pooltool's bench_breaks.py printed in the same run")
     parser.add_argument("--edmd", help="what ../shared/peers/edmd/run.py printed in the same run")
+    parser.add_argument("--fastfiz", help="the JSON ../shared/peers/fastfiz's bench_break printed in the same run")
     parser.add_argument("--out-dir", default=HERE, help="where RESULTS.md and throughput.svg go (default: bench/)")
     args = parser.parse_args()
     if not os.path.isdir(args.out_dir):
@@ -418,6 +434,18 @@ def main():
         except (UnicodeDecodeError, ValueError, KeyError, TypeError) as error:
             fail("--pooltool", args.pooltool, f"the JSON of pooltool's bench_breaks.py ({error!r})")
     args.pooltool_runs = pooltool
+    fastfiz = None
+    if args.fastfiz:
+        try:
+            with open(args.fastfiz, encoding="utf-8") as f:
+                fastfiz = json.load(f)
+            for game in ("9ball", "8ball"):
+                float(fastfiz[game]["cpu_time_per_shot_us"]["median"]) / float(fastfiz[game]["events_per_shot"]["median"])
+        except OSError as error:
+            fail("--fastfiz", args.fastfiz, f"a readable file ({error.strerror})")
+        except (UnicodeDecodeError, ValueError, KeyError, TypeError, ZeroDivisionError) as error:
+            fail("--fastfiz", args.fastfiz, f"the JSON of FastFiz's bench_break ({error!r})")
+    args.fastfiz_runs = fastfiz
     try:
         figure, text = report(args, context, runs)
     except (KeyError, TypeError, ValueError, ZeroDivisionError) as error:
@@ -581,16 +609,18 @@ ratio is ours over theirs.
 
 {edmd_section(args.edmd)}
 
-## Shots to rest (billiards::simulation::Shot) against pooltool
+## Shots to rest (billiards::simulation::Shot) against pooltool and FastFiz
 
 A break played to rest event by event, invariant checks off as in a release build; each iteration a new
 rack of 64 seeded ones. pooltool plays the same break (`../shared/peers/pooltool/bench_breaks.py`: its
 default 7-ft table and physics, the cue ball struck at 8 m/s at the apex with b = 0.25, its 1e-3 R
 jitter; its own racks and cue ball spot) on the same machine in the same run of `bench/run.sh`; its
-time is the median over seeds 1–20 after its JIT is warm. The models differ (docs/shot.md), so the
-event counts differ too.
+time is the median over seeds 1–20 after its JIT is warm. FastFiz, the C++ engine of the computational
+pool tournaments, plays it too (`../shared/peers/fastfiz/bench_break`: its own default table, the cue
+stick at 8 m/s at the apex with b = 0.25 R, racks with 1e-3 R jitter) on the same core in the same run.
+The models differ (docs/shot.md), so the event counts differ too.
 
-{shot_section(runs, args.pooltool_runs)}
+{shot_section(runs, args.pooltool_runs, getattr(args, "fastfiz_runs", None))}
 """
     return figure, text
 

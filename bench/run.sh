@@ -1,7 +1,8 @@
 #!/bin/sh
 # The benchmarks in one run, written to bench/RESULTS.md (and bench/throughput.svg) by bench/report.py:
 # billiards_bench pinned to one core (its shots on every core unpinned, after), then — where pooltool's harness is set up (../shared/peers/pooltool:
-# setup.sh has extracted its source) — pooltool's breaks on the same core, and — where
+# setup.sh has extracted its source) — pooltool's breaks on the same core, where FastFiz's harness is
+# built (../shared/peers/fastfiz/setup.sh) its breaks on the same core, and — where
 # ../shared/peers/edmd is — the gas against Smallenburg's SingleEvent code on the same core, so that the
 # ratios compare programs measured side by side.
 #
@@ -42,6 +43,16 @@ if [ -f "$peer/env.sh" ] && [ -d "${POOLTOOL_WORK:-$HOME/.cache/pooltool-peer}/s
 else
   echo "bench/run.sh: pooltool's harness is not set up ($peer/setup.sh); its breaks are left out" >&2
 fi
+# FastFiz's breaks on the same core, where ../shared/peers/fastfiz/setup.sh has built its harness (into
+# FASTFIZ_WORK, default ~/.cache/fastfiz-peer).
+fastfiz="${FASTFIZ_WORK:-$HOME/.cache/fastfiz-peer}/bench_break"
+fastfiz_arguments=""
+if [ -x "$fastfiz" ]; then
+  taskset -c $core "$fastfiz" --game both --reps 2000 > "$work/fastfiz.json"
+  fastfiz_arguments="--fastfiz $work/fastfiz.json"
+else
+  echo "bench/run.sh: FastFiz's harness is not built ($root/../shared/peers/fastfiz/setup.sh); its breaks are left out" >&2
+fi
 # The gas against Smallenburg's SingleEvent code, side by side on the same core, where its source and
 # harness are beside the checkout (../shared/peers/edmd: run.py builds it with gcc).
 edmd="$root/../shared/peers/edmd"
@@ -55,5 +66,5 @@ else
 fi
 # shellcheck disable=SC2086
 python3 "$here/report.py" "$work/bench.json" --command "$command" --derive "$build/derive/billiards-derive" \
-  --out-dir "$out" $pooltool_arguments $edmd_arguments
+  --out-dir "$out" $pooltool_arguments $fastfiz_arguments $edmd_arguments
 echo "wrote $out/RESULTS.md"
