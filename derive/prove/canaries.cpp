@@ -94,30 +94,9 @@ std::string one_rounding_bound(const std::string& type) {
 
 std::string verdict(const std::string& script) { return run_gappa(script).proven ? "proven" : "refused"; }
 
-// How the reader groups an expression: every operation in parentheses.
-std::string grouping(const CppExpression& e) {
-  using Kind = CppExpression::Kind;
-  std::string out;
-  switch (e.kind) {
-    case Kind::literal:
-    case Kind::name: return e.text;
-    case Kind::unary: return "(" + e.text + grouping(e.operands.at(0)) + ")";
-    case Kind::binary:
-      return "(" + grouping(e.operands.at(0)) + " " + e.text + " " + grouping(e.operands.at(1)) + ")";
-    case Kind::conditional:
-      return "(" + grouping(e.operands.at(0)) + " ? " + grouping(e.operands.at(1)) + " : " +
-             grouping(e.operands.at(2)) + ")";
-    case Kind::index: return e.text + "[" + grouping(e.operands.at(0)) + "]";
-    case Kind::call:
-    case Kind::braced:
-      for (const CppExpression& operand : e.operands) out += (out.empty() ? "" : ", ") + grouping(operand);
-      return e.kind == Kind::call ? e.text + "(" + out + ")" : "{" + out + "}";
-  }
-  return out;
-}
-
 std::string reader_grouping() {
-  // Each as C++ groups it (the standard's precedence; left to right within a row).
+  // Each as C++ groups it (the standard's precedence; left to right within a row), every binary operation
+  // in parentheses, a negation as -x.
   const std::vector<std::pair<std::string, std::string>> cases = {
       {"a * b / c", "((a * b) / c)"},
       {"a / b * c", "((a / b) * c)"},
@@ -125,14 +104,14 @@ std::string reader_grouping() {
       {"a - b - c", "((a - b) - c)"},
       {"a - (b - c)", "(a - (b - c))"},
       {"a + b * c / d", "(a + ((b * c) / d))"},
-      {"-a * b", "((-a) * b)"},
-      {"a * -b", "(a * (-b))"},
-      {"-(f(a * b, k))", "(-f((a * b), k))"},
+      {"-a * b", "(-a * b)"},
+      {"a * -b", "(a * -b)"},
+      {"-(f(a * b, k))", "-f((a * b), k)"},
       {"a < b + c && d <= e", "((a < (b + c)) && (d <= e))"},
       {"(x >> s) & m", "((x >> s) & m)"},
-      {"!(k >= a) ? b : c", "((!(k >= a)) ? b : c)"}};
+      {"!(k >= a) ? b : c", "(!(k >= a) ? b : c)"}};
   for (const auto& [text, expected] : cases) {
-    const std::string read = grouping(read_expression(text));
+    const std::string read = spelled(read_expression(text));  // every operation in parentheses
     if (read != expected) return "`" + text + "` read as " + read;
   }
   // And the round trip: a statement printed again is the text it was read from.
