@@ -24,7 +24,7 @@ fi
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 core=0
-command="BILLIARDS_BENCH_MAX_PAIRS=10000000 taskset -c $core $bench --benchmark_min_time=0.1 --benchmark_repetitions=5 --benchmark_report_aggregates_only=true --benchmark_format=json --benchmark_out=bench.json $*"
+command="BILLIARDS_BENCH_MAX_PAIRS=10000000 taskset -c $core ${bench#"$root"/} --benchmark_min_time=0.1 --benchmark_repetitions=5 --benchmark_report_aggregates_only=true --benchmark_format=json --benchmark_out=bench.json $*"
 BILLIARDS_BENCH_MAX_PAIRS=10000000 taskset -c $core "$bench" --benchmark_min_time=0.1 --benchmark_repetitions=5 \
   --benchmark_report_aggregates_only=true --benchmark_format=json --benchmark_out="$work/bench.json" "$@" > /dev/null
 # One shot per thread on every core, unpinned, merged into the same results.
@@ -38,7 +38,8 @@ json.dump(runs, open(sys.argv[1], "w"))' "$work/bench.json" "$work/threads.json"
 peer="$root/../shared/peers/pooltool"
 pooltool_arguments=""
 if [ -f "$peer/env.sh" ] && [ -d "${POOLTOOL_WORK:-$HOME/.cache/pooltool-peer}/src/pooltool" ]; then
-  ( . "$peer/env.sh" && taskset -c $core "$PY" "$peer/bench_breaks.py" ) > "$work/pooltool.json"
+  # env.sh is bash (it finds itself through BASH_SOURCE): sourced by bash, whatever sh runs this script.
+  bash -c '. "$1/env.sh" && taskset -c "$2" "$PY" "$1/bench_breaks.py"' sh "$peer" "$core" > "$work/pooltool.json"
   pooltool_arguments="--pooltool $work/pooltool.json"
 else
   echo "bench/run.sh: pooltool's harness is not set up ($peer/setup.sh); its breaks are left out" >&2
