@@ -246,15 +246,20 @@ class ReadBack {
   // What the header prints that the proofs of `kernel` must state (rounding.hpp): where it is a fast
   // path's plain form, the intervals the printed range test admits, from its comparisons as printed; and
   // each named constant's value as the header prints it for the type.
-  PrintedFacts printed_facts(const Kernel& kernel) const {
-    PrintedFacts out;
-    for (const BinaryFormat& format : emitted_formats()) {
-      GiNaC::exmap& values = out.constants[format.type];
-      for (const auto& [spelling, constant] : named_constant_spellings()) {
-        if (const std::optional<GiNaC::numeric> v = printed_constant(spelling.substr(0, spelling.find('<')), format))
-          values[constant] = *v;
+  PrintedFacts printed_facts(const Kernel& kernel) {
+    // The constants as printed are the header's, the same for every kernel: read once.
+    if (printed_constants_.empty()) {
+      for (const BinaryFormat& format : emitted_formats()) {
+        GiNaC::exmap& values = printed_constants_[format.type];
+        for (const auto& [spelling, constant] : named_constant_spellings()) {
+          if (const std::optional<GiNaC::numeric> v =
+                  printed_constant(spelling.substr(0, spelling.find('<')), format))
+            values[constant] = *v;
+        }
       }
     }
+    PrintedFacts out;
+    out.constants = printed_constants_;
     const auto guarded = std::find_if(kernels_.begin(), kernels_.end(), [&](const Kernel& k) {
       return k.fast_path && k.fast_path->kernel == kernel.name;
     });
@@ -774,6 +779,7 @@ class ReadBack {
   std::vector<RoundingBound>& bounds_;
   const std::function<bool(const std::string&)>& proves_rounding_of_;
   std::set<std::string> proven_, predicates_done_;
+  std::map<std::string, GiNaC::exmap> printed_constants_;  ///< by format type, read once (printed_facts)
   std::vector<KernelProblem> problems_;
 };
 
