@@ -15,7 +15,7 @@
 #include <billiards/reference_kernels.hpp>
 #include <billiards/spin.hpp>
 
-#include <billiards/simulation/detail/prefetch.hpp>
+#include <billiards/simulation/core/prefetch.hpp>
 
 #include <benchmark/benchmark.h>
 

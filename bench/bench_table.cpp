@@ -22,7 +22,7 @@ void table_events(benchmark::State& state) {
   billiards::simulation::Table simulation(billiards::simulation::random_setup(table, balls, 1), false);
   for (int i = 0; i < 1000; ++i) simulation.step();  // past the start, where every ball is predicted afresh
   for (auto _ : state) {
-    const billiards::simulation::TableEvent event = simulation.step();
+    const billiards::simulation::TableEvent event = *simulation.step();
     benchmark::DoNotOptimize(event);
   }
   state.SetItemsProcessed(state.iterations());
@@ -40,9 +40,9 @@ void gas_events(benchmark::State& state) {
   options.balls = static_cast<std::size_t>(state.range(0));
   options.packing_fraction = 0.3;
   billiards::simulation::Gas<D> gas(billiards::simulation::gas::lattice<D>(options));
-  gas.run_collisions(std::max<std::uint64_t>(options.balls, 20000));
+  gas.run_events(std::max<std::uint64_t>(options.balls, 20000));
   constexpr std::uint64_t per_iteration = 1000;
-  for (auto _ : state) gas.run_collisions(per_iteration);
+  for (auto _ : state) gas.run_events(per_iteration);
   state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * per_iteration));
   state.counters["balls"] = static_cast<double>(options.balls);
 }

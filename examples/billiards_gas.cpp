@@ -234,7 +234,7 @@ int main(int argc, char** argv) {
   billiards::simulation::gas::Result result;
   try {
     result = options.dimension == 2 ? run.operator()<2>() : run.operator()<3>();
-  } catch (const billiards::simulation::NoCollisions& error) {
+  } catch (const billiards::simulation::EventLimitReached& error) {
     std::cerr << "billiards-gas: " << error.what() << "\n";
     return 4;
   } catch (const std::invalid_argument& error) {

@@ -156,7 +156,7 @@ int main(int argc, char** argv) {
   int status = 0;
   try {
     shot->play();
-  } catch (const RunawayShot& error) {
+  } catch (const EventLimitReached& error) {
     std::cerr << "billiards-shot: " << error.what() << " (--event-limit)\n";
     status = 1;
   } catch (const BrokenInvariant& error) {

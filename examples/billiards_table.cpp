@@ -110,12 +110,17 @@ int main(int argc, char** argv) {
 
   Table simulation(setup, check_every_pair);
   Trajectories trajectories(setup);
-  const long double initial_energy = simulation.kinetic_energy();
+  const double initial_energy = simulation.energy();
   const auto start = std::chrono::steady_clock::now();
   try {
     for (std::uint64_t quiet = 0; simulation.ball_collisions() < collisions;) {
       const std::uint64_t before = simulation.ball_collisions();
-      const TableEvent event = simulation.step();
+      const std::optional<TableEvent> event = simulation.step();
+      if (!event) {
+        std::cerr << "billiards-table: stopped after " << simulation.ball_collisions() << " of " << collisions
+                  << " ball-ball collisions: " << simulation.why_no_event() << "\n";
+        return 4;
+      }
       quiet = simulation.ball_collisions() == before ? quiet + 1 : 0;
       if (quiet >= max_quiet_events) {
         std::cerr << "billiards-table: stopped after " << quiet
@@ -124,41 +129,37 @@ int main(int argc, char** argv) {
                   << " done): the balls' paths do not meet (--max-events-without-collision)\n";
         return 4;
       }
-      if (!svg_file.empty() && simulation.events() <= svg_events) {
-        trajectories.record(event, simulation.balls());
-        if (simulation.events() == svg_events) trajectories.finish(simulation.balls());
+      if (!svg_file.empty() && simulation.event_count() <= svg_events) {
+        trajectories.record(*event, simulation.balls());
+        if (simulation.event_count() == svg_events) trajectories.finish(simulation.balls());
       }
     }
-  } catch (const NoEvent& error) {
-    std::cerr << "billiards-table: stopped after " << simulation.ball_collisions() << " of " << collisions
-              << " ball-ball collisions: " << error.what() << "\n";
-    return 4;
-  } catch (const std::logic_error& error) {
+  } catch (const billiards::simulation::BrokenInvariant& error) {
     std::cerr << "billiards-table: " << error.what() << "\n";
     return 1;
   }
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  const long double final_energy = simulation.kinetic_energy();
+  const double final_energy = simulation.energy();
   // Relative to the initial energy; NaN (which fails any --max-drift) when there was none.
   const double drift = initial_energy > 0
-                           ? static_cast<double>(std::fabs(final_energy - initial_energy) / initial_energy)
+                           ? std::fabs(final_energy - initial_energy) / initial_energy
                            : std::numeric_limits<double>::quiet_NaN();
 
   std::printf("billiards-table: %zu balls on a %g x %g table (radius %g)\n", setup.balls.size(), setup.width,
               setup.height, setup.radius);
-  std::printf("events: %llu (ball-ball collisions %llu, cushion %llu) over %.6Lg s of table time\n",
-              static_cast<unsigned long long>(simulation.events()),
+  std::printf("events: %llu (ball-ball collisions %llu, cushion %llu) over %.6g s of table time\n",
+              static_cast<unsigned long long>(simulation.event_count()),
               static_cast<unsigned long long>(simulation.ball_collisions()),
               static_cast<unsigned long long>(simulation.cushion_collisions()), simulation.time());
-  std::printf("kinetic energy: initial %.17Lg, final %.17Lg\n", initial_energy, final_energy);
+  std::printf("kinetic energy: initial %.17g, final %.17g\n", initial_energy, final_energy);
   std::printf("relative drift of the kinetic energy: %.3e\n", drift);
   std::printf("largest overlap at an event: %.3e of a radius (allowed %.0e)\n", simulation.largest_overlap(),
-              Table::overlap_tolerance);
-  std::printf("events per second: %.4g (%.3f s)\n", static_cast<double>(simulation.events()) / seconds,
+              billiards::simulation::overlap_tolerance);
+  std::printf("events per second: %.4g (%.3f s)\n", static_cast<double>(simulation.event_count()) / seconds,
               seconds);
 
   if (!svg_file.empty()) {
-    if (simulation.events() < svg_events) trajectories.finish(simulation.balls());
+    if (simulation.event_count() < svg_events) trajectories.finish(simulation.balls());
     try {
       write_file_atomically(
           svg_file, trajectories.svg("billiards-table: the first " + std::to_string(svg_events) + " events"));

@@ -141,14 +141,14 @@ inline std::string shot_json(const Shot& shot, const std::string& table_name) {
   for (std::size_t k = 0; k < events.size(); ++k) {
     const ShotEvent& e = events[k];
     out << (k ? ",\n    " : "\n    ") << "{\"time\": " << number(e.time) << ", \"kind\": \""
-        << billiards::simulation::kind_name(e.kind) << "\", \"balls\": [" << e.ball;
-    if (e.kind == ShotEvent::Kind::ball) out << ", " << e.other;
+        << billiards::simulation::kind_name(e.kind) << "\", \"balls\": [" << e.first;
+    if (e.kind == ShotEvent::Kind::ball) out << ", " << e.second;
     out << "]";
     if (e.kind == ShotEvent::Kind::cushion || e.kind == ShotEvent::Kind::jaw || e.kind == ShotEvent::Kind::pocket)
-      out << ", \"" << billiards::simulation::kind_name(e.kind) << "\": " << e.other;
+      out << ", \"" << billiards::simulation::kind_name(e.kind) << "\": " << e.second;
     out << ", \"from\": \"" << billiards::simulation::motion_name(e.from) << "\", \"to\": \""
-        << billiards::simulation::motion_name(e.to) << "\", \"states\": [" << state_json(e.ball, e.ball_after);
-    if (e.kind == ShotEvent::Kind::ball) out << ", " << state_json(e.other, e.other_after);
+        << billiards::simulation::motion_name(e.to) << "\", \"states\": [" << state_json(e.first, e.first_after);
+    if (e.kind == ShotEvent::Kind::ball) out << ", " << state_json(e.second, e.second_after);
     out << "]}";
   }
   const std::vector<PoolBall> rest = shot.balls();

@@ -1,7 +1,10 @@
 #!/usr/bin/env python3
 """No function over a length: lists each C++ function (or lambda) body longer than --most lines.
 
-Usage: check_function_lengths.py --most N FILE...
+Usage: check_function_lengths.py --most N [--most-class M] FILE...
+
+With --most-class, also each class or struct body longer than M lines (its head `class Name …` or
+`struct Name …`).
 
 A body is the text between a '{' whose head (what stands since the last ';', '{' or '}') ends in a
 parameter list — `name(…)`, `name(…) const`, `noexcept`, `-> type`, or a lambda's `[…](…)` — and its
@@ -13,6 +16,7 @@ import re
 import sys
 
 CONTROL = re.compile(r"\b(if|for|while|switch|catch|do|else)\s*(constexpr\s*)?\(?[^()]*(\(.*\))?\s*$", re.S)
+CLASS = re.compile(r"(^|[\s;{}>])(class|struct)\s+\w+[^;(){}]*$", re.S)
 FUNCTION = re.compile(r"\)\s*(const\s*)?(noexcept\s*)?(override\s*)?(->\s*[\w:<>,\s*&]+)?\s*$", re.S)
 
 
@@ -48,7 +52,7 @@ def code_only(text):
     return "".join(out)
 
 
-def long_functions(path, most):
+def long_functions(path, most, most_class=None):
     with open(path, encoding="utf-8") as f:
         code = code_only(f.read())
     found, stack, head_start = [], [], 0
@@ -56,14 +60,16 @@ def long_functions(path, most):
         if c == "{":
             head = code[head_start:i]
             is_function = bool(FUNCTION.search(head)) and not CONTROL.search(head.strip().split("\n")[-1])
-            stack.append((i, is_function, head.strip().split("\n")[-1].strip()))
+            is_class = most_class is not None and bool(CLASS.search(head))
+            stack.append((i, "function" if is_function else "class" if is_class else "", head.strip().split("\n")[-1].strip()))
             head_start = i + 1
         elif c == "}":
             if stack:
-                start, is_function, head = stack.pop()
+                start, kind, head = stack.pop()
                 lines = code.count("\n", start, i) + 1
-                if is_function and lines > most:
-                    found.append((code.count("\n", 0, start) + 1, lines, head))
+                limit = most if kind == "function" else most_class if kind == "class" else None
+                if limit is not None and lines > limit:
+                    found.append((code.count("\n", 0, start) + 1, lines, head, kind, limit))
             head_start = i + 1
         elif c == ";":
             head_start = i + 1
@@ -73,14 +79,16 @@ def long_functions(path, most):
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--most", type=int, required=True)
+    parser.add_argument("--most-class", type=int, default=None)
     parser.add_argument("files", nargs="+")
     args = parser.parse_args()
     problems = 0
     for path in args.files:
-        for line, length, head in long_functions(path, args.most):
-            print(f"{path}:{line}: a function of {length} lines (at most {args.most}): {head[:80]}")
+        for line, length, head, kind, limit in long_functions(path, args.most, args.most_class):
+            print(f"{path}:{line}: a {kind} of {length} lines (at most {limit}): {head[:80]}")
             problems += 1
-    print(f"{len(args.files)} files: {problems} function(s) over {args.most} lines")
+    classes = f" or class(es) over {args.most_class}" if args.most_class is not None else ""
+    print(f"{len(args.files)} files: {problems} function(s) over {args.most} lines{classes}")
     return 1 if problems else 0
 
 

@@ -94,7 +94,7 @@ TEST_CASE("Setup files", "[examples][table]") {
 TEST_CASE("Trajectories as SVG", "[examples][table]") {
   Table simulation(break_setup(TableSetup{}));
   Trajectories trajectories(simulation.setup());
-  for (int i = 0; i < 40; ++i) trajectories.record(simulation.step(), simulation.balls());
+  for (int i = 0; i < 40; ++i) trajectories.record(simulation.step().value(), simulation.balls());
   trajectories.finish(simulation.balls());
   const std::string svg = trajectories.svg("the break");
   CHECK(svg.rfind("<svg xmlns=\"http://www.w3.org/2000/svg\"", 0) == 0);

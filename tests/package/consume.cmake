@@ -19,7 +19,8 @@ if(STEP STREQUAL "install")
                      include/billiards/collision.hpp include/billiards/kernels.hpp include/billiards/version.hpp
                      include/billiards/spin.hpp include/billiards/cloth.hpp include/billiards/spin_kernels.hpp include/billiards/shot_kernels.hpp
                      include/billiards/simulation/table.hpp include/billiards/simulation/gas.hpp
-                     include/billiards/simulation/event_calendar.hpp)
+                     include/billiards/simulation/shot.hpp include/billiards/simulation/core/event_calendar.hpp
+                     include/billiards/simulation/core/errors.hpp include/billiards/simulation/shot/detection.hpp)
     if(NOT EXISTS ${prefix}/${f})
       message(FATAL_ERROR "cmake --install did not write ${f}")
     endif()

@@ -55,7 +55,7 @@ int main() {
   disks.side = 10;
   disks.balls = {{{2, 5}, {1, 0}}, {{6, 5}, {-1, 0}}};
   billiards::simulation::Gas<2> gas(disks);
-  ok = ok && gas.run_until(1.0) == 0 && gas.run_collisions(1) == 1 && std::fabs(gas.time() - 1.5) < 1e-14;
+  ok = ok && gas.run_until(1.0) == 0 && gas.run_events(1) == 1 && std::fabs(gas.time() - 1.5) < 1e-14;
   std::printf("billiards %s: %s\n", BILLIARDS_VERSION, ok ? "the paper's answers" : "WRONG");
   return ok ? 0 : 1;
 }

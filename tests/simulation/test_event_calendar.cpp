@@ -2,7 +2,7 @@
 // with: a std::set of (time, item) pairs. Random moves of random items, times drawn near now, far beyond the
 // year, equal, and +∞; each step the earliest must be an item with the reference's earliest time, and what
 // the look ahead reports must be the pending items of a span of times after it, nearer first.
-#include <billiards/simulation/event_calendar.hpp>
+#include <billiards/simulation/core/event_calendar.hpp>
 
 #include <catch2/catch.hpp>
 

@@ -16,7 +16,7 @@
 
 namespace gas = billiards::simulation::gas;
 using billiards::simulation::Gas;
-using billiards::simulation::GasCollision;
+using billiards::simulation::GasEvent;
 using billiards::simulation::GasMethod;
 using billiards::simulation::GasSetup;
 
@@ -102,7 +102,7 @@ TEST_CASE("unequal radii and masses: energy and momentum kept, every collision a
   const std::vector<double> r = g.radii();
   double worst = 0;
   std::size_t checked = 0;
-  g.run_collisions(30000, [&](const GasCollision& c) {
+  g.run_events(30000, [&](const GasEvent& c) {
     if (checked >= 200 || g.collisions() % 100 != 0) return;
     const auto p = g.positions();
     worst = std::max(worst, std::fabs(g.nearest_image(p[c.first], p[c.second]).norm() / (r[c.first] + r[c.second]) - 1));
@@ -131,9 +131,9 @@ TEST_CASE("cells and neighbour lists take the same first collisions", "[gas]") {
     Gas<3> cells(setup, 0, GasMethod::cells), lists(setup, 0, GasMethod::neighbour_lists);
     CHECK(cells.method() == GasMethod::cells);
     CHECK(lists.method() == GasMethod::neighbour_lists);
-    std::vector<GasCollision> a, b;
-    cells.run_collisions(300, [&](const GasCollision& c) { a.push_back(c); });
-    lists.run_collisions(300, [&](const GasCollision& c) { b.push_back(c); });
+    std::vector<GasEvent> a, b;
+    cells.run_events(300, [&](const GasEvent& c) { a.push_back(c); });
+    lists.run_events(300, [&](const GasEvent& c) { b.push_back(c); });
     std::size_t same = 0;
     for (std::size_t k = 0; k < a.size(); ++k) {
       const bool pair = (a[k].first == b[k].first && a[k].second == b[k].second) ||

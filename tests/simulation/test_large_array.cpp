@@ -1,6 +1,6 @@
-// billiards/simulation/detail/large_array.hpp: the alignment it promises on either side of 2 MiB, memory that
+// billiards/simulation/core/large_array.hpp: the alignment it promises on either side of 2 MiB, memory that
 // holds what is written, and a clear error for a size no address space holds.
-#include <billiards/simulation/detail/large_array.hpp>
+#include <billiards/simulation/core/large_array.hpp>
 
 #include <catch2/catch.hpp>
 

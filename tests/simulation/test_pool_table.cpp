@@ -1,7 +1,7 @@
 // The pool table's geometry and racks against their definitions worked by hand: the WPA's sizes, the
 // cushions between the pockets' mouths, jaws tangent to the noses where the cushions end, capture circles
 // behind the noses, racks that touch or keep their gaps, numbered as the games rack them.
-#include <billiards/simulation/pool_table.hpp>
+#include <billiards/simulation/shot.hpp>
 
 #include <catch2/catch.hpp>
 

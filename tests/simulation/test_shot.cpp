@@ -57,7 +57,7 @@ double energy(const std::vector<PoolBall>& balls, const PoolPhysics& physics) {
 
 const ShotEvent* first_event(const Shot& shot, Kind kind, std::size_t ball) {
   for (const ShotEvent& e : shot.events()) {
-    if (e.kind == kind && (e.ball == ball || (kind == Kind::ball && e.other == ball))) return &e;
+    if (e.kind == kind && (e.first == ball || (kind == Kind::ball && e.second == ball))) return &e;
   }
   return nullptr;
 }
@@ -76,7 +76,7 @@ TEST_CASE("Shot: a natural roll along a cushion stops at v^2/(2 mu_r g) without 
   // TP A-30 for a ball at rest: v = (1 + e_tip) V / (1 + m/M + (5/2) b²).
   const double v = 2 * 0.3 / (1 + physics.mass / 0.54 + 2.5 * 0.16);
   REQUIRE(shot.events().front().to == Motion::rolling);
-  CHECK(shot.events().front().ball_after.velocity.x() == Approx(v).epsilon(1e-14));
+  CHECK(shot.events().front().first_after.velocity.x() == Approx(v).epsilon(1e-14));
   shot.play();
   // Rolls, then stops: no slide, no cushion, no other event.
   REQUIRE(shot.events().size() == 2);
@@ -106,8 +106,8 @@ TEST_CASE("Shot: a stun shot exchanges the velocity as restitution says", "[simu
   const double a = physics.cloth.sliding_friction * physics.cloth.gravity;
   const double t = (3.0 - std::sqrt(9.0 - 2 * a * 0.1)) / a, u = 3.0 - a * t;
   CHECK(hit->time == Approx(t).epsilon(1e-12));
-  const PoolBall& cue_after = hit->ball == 0 ? hit->ball_after : hit->other_after;
-  const PoolBall& object_after = hit->ball == 0 ? hit->other_after : hit->ball_after;
+  const PoolBall& cue_after = hit->first == 0 ? hit->first_after : hit->second_after;
+  const PoolBall& object_after = hit->first == 0 ? hit->second_after : hit->first_after;
   CHECK(cue_after.velocity.x() == Approx((1 - e) / 2 * u).epsilon(1e-12));
   CHECK(object_after.velocity.x() == Approx((1 + e) / 2 * u).epsilon(1e-12));
   CHECK(std::fabs(object_after.velocity.y()) <= 1e-15);
@@ -135,14 +135,14 @@ TEST_CASE("Shot: the 30 degree rule for a rolling cue ball at a half-ball hit", 
   const Eigen::Vector2d expected = (5.0 / 7.0) * vc * std::sin(phi) * t + (2.0 / 7.0) * vc * Eigen::Vector2d(1, 0);
   const ShotEvent* rolls = nullptr;
   for (const ShotEvent& e : shot.events()) {
-    if (e.time > hit->time && e.ball == 0 && e.kind == Kind::transition && e.to == Motion::rolling) {
+    if (e.time > hit->time && e.first == 0 && e.kind == Kind::transition && e.to == Motion::rolling) {
       rolls = &e;
       break;
     }
   }
   REQUIRE(rolls != nullptr);
   // No other event of the cue ball between the hit and its rolling (it rolls long before any cushion).
-  const Eigen::Vector2d after = rolls->ball_after.velocity.head<2>();
+  const Eigen::Vector2d after = rolls->first_after.velocity.head<2>();
   CHECK(after.x() == Approx(expected.x()).epsilon(1e-9));
   CHECK(after.y() == Approx(expected.y()).epsilon(1e-9));
   const double deflection = std::atan2(-after.y(), after.x()) * 180 / M_PI;
@@ -170,7 +170,7 @@ TEST_CASE("Shot: throw at a cut shot with a stun cue ball", "[simulation][shot]"
     shot.play();
     const ShotEvent* hit = first_event(shot, Kind::ball, 1);
     REQUIRE(hit != nullptr);
-    const PoolBall& object = hit->ball == 1 ? hit->ball_after : hit->other_after;
+    const PoolBall& object = hit->first == 1 ? hit->first_after : hit->second_after;
     const double u = 4.0;
     // Along the line of centres (1 + e) u cos φ / 2; across it the friction impulse, at the Coulomb bound
     // μ (1 + e) u cos φ / 2 or where the contact's slip stops, u sin φ / 7 (solid spheres, equal masses).
@@ -194,7 +194,7 @@ TEST_CASE("Shot: a ball rolled along the diagonal drops into the corner pocket",
   Shot shot(table, physics, {rolling_ball(0.3, 0.3, -1.0, -1.0, R)}, checked_options());
   shot.play();
   REQUIRE(shot.events().back().kind == Kind::pocket);
-  CHECK(shot.events().back().other == 0);  // the corner at (0, 0)
+  CHECK(shot.events().back().second == 0);  // the corner at (0, 0)
   CHECK(shot.balls()[0].pocketed);
   // Its centre entered the capture circle: at the capture circle's radius from its centre, the table's
   // circle widened (by 0.2 mm) to meet the reach of the jaws at its mouth.
@@ -244,11 +244,11 @@ TEST_CASE("Shot: a ball sent at a side pocket's jaw rebounds from it", "[simulat
   shot.play();
   const ShotEvent* hit = first_event(shot, Kind::jaw, 0);
   REQUIRE(hit != nullptr);
-  CHECK(hit->other == 5);
+  CHECK(hit->second == 5);
   const PoolBall at = shot.balls_at(hit->time)[0];
   CHECK((at.position.head<2>() - jaw.centre).norm() == Approx(R + jaw.radius).epsilon(1e-9));
   // Head-on: back along the way it came (its speed along the normal turned).
-  CHECK(hit->ball_after.velocity.head<2>().dot(towards) < 0);
+  CHECK(hit->first_after.velocity.head<2>().dot(towards) < 0);
   CHECK(!shot.balls()[0].pocketed);
 }
 
@@ -286,10 +286,10 @@ TEST_CASE("Shot: the same shot gives the same events bit for bit", "[simulation]
   for (std::size_t k = 0; k < first.size(); ++k) {
     CHECK(first[k].time == second[k].time);
     CHECK(first[k].kind == second[k].kind);
-    CHECK(first[k].ball == second[k].ball);
-    CHECK(first[k].other == second[k].other);
-    CHECK(first[k].ball_after.position == second[k].ball_after.position);
-    CHECK(first[k].ball_after.velocity == second[k].ball_after.velocity);
+    CHECK(first[k].first == second[k].first);
+    CHECK(first[k].second == second[k].second);
+    CHECK(first[k].first_after.position == second[k].first_after.position);
+    CHECK(first[k].first_after.velocity == second[k].first_after.velocity);
   }
 }
 
@@ -327,7 +327,7 @@ TEST_CASE("Shot: a shot beyond its event limit stops with an error naming it", "
   options.event_limit = 10;
   Shot shot(table, physics, billiards::simulation::rack(table, physics, billiards::simulation::Rack::nine_ball), options);
   shot.strike(0, Cue<double>{0.567, 8.0, 0.0, 0.0, 0.0, 0.0, 1.0});
-  CHECK_THROWS_AS(shot.play(), billiards::simulation::RunawayShot);
+  CHECK_THROWS_AS(shot.play(), billiards::simulation::EventLimitReached);
   CHECK_THROWS_WITH(shot.play(), Catch::Contains("more than 10 events (ShotOptions::event_limit)"));
 }
 

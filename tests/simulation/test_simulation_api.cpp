@@ -56,7 +56,7 @@ TEST_CASE("A table runs for a number of events, each reported to the callback", 
   CHECK(seen[1].first == 1);
   CHECK(seen[1].second == 1);  // the right cushion
   CHECK(seen[1].time == Approx(0.375 + 2.25).epsilon(1e-14));
-  CHECK(table.events() == 3);
+  CHECK(table.event_count() == 3);
   CHECK(table.ball_collisions() == 1);
   CHECK(table.cushion_collisions() == 2);
 }
@@ -85,7 +85,7 @@ TEST_CASE("A table runs until a time and moves every ball on to it", "[simulatio
     CHECK(table.run_until(5.0L) == 0);
     CHECK(table.time() == 5.0L);
     CHECK(table.run_events(10) == 0);  // no event can happen: fewer than asked
-    CHECK_THROWS_AS(table.step(), NoEvent);
+    CHECK_FALSE(table.step());
   }
   SECTION("a time before now or NaN is an error naming the argument") {
     Table table(table_with({{{1, 1}, {1, 0}}}));
@@ -122,8 +122,8 @@ TEST_CASE("A gas from the caller's configuration: two disks head on", "[simulati
     CHECK(p[1].x() == Approx(5).epsilon(1e-15));
   }
   SECTION("one collision, reported to the callback at contact") {
-    std::vector<GasCollision> seen;
-    CHECK(gas.run_collisions(1, [&](const GasCollision& c) { seen.push_back(c); }) == 1);
+    std::vector<GasEvent> seen;
+    CHECK(gas.run_events(1, [&](const GasEvent& c) { seen.push_back(c); }) == 1);
     REQUIRE(seen.size() == 1);
     CHECK(seen[0].time == Approx(1.75).epsilon(1e-14));
     CHECK(((seen[0].first == 0 && seen[0].second == 1) || (seen[0].first == 1 && seen[0].second == 0)));
@@ -140,7 +140,7 @@ TEST_CASE("A gas from the caller's configuration: two disks head on", "[simulati
     // apart and touch when 9.5 − σ = 9 has closed: at 1.75 + 4.5 = 6.25, ball 0 at 3.75 − 4.5 + 10 =
     // 9.25 and ball 1 at 4.25 + 4.5 = 8.75. They exchange again; 0.25 later 9.5 and 8.5.
     std::vector<double> times;
-    CHECK(gas.run_until(6.5, [&](const GasCollision& c) { times.push_back(c.time); }) == 2);
+    CHECK(gas.run_until(6.5, [&](const GasEvent& c) { times.push_back(c.time); }) == 2);
     REQUIRE(times.size() == 2);
     CHECK(times[0] == Approx(1.75).epsilon(1e-14));
     CHECK(times[1] == Approx(6.25).epsilon(1e-14));
@@ -212,7 +212,7 @@ TEST_CASE("A large gas reports its collisions by the caller's numbers after renu
   Gas<2> g(gas::lattice<2>(options));
   std::uint64_t checked = 0;
   double worst = 0;
-  g.run_collisions(5200, [&](const GasCollision& c) {
+  g.run_events(5200, [&](const GasEvent& c) {
     if (g.collisions() <= 5100 || checked >= 50) return;
     const auto p = g.positions();
     const double distance = g.nearest_image(p[c.first], p[c.second]).norm();
@@ -224,7 +224,7 @@ TEST_CASE("A large gas reports its collisions by the caller's numbers after renu
   // Run until a time gives the same collisions as running for their number, bit for bit.
   Gas<2> a(gas::lattice<2>(options)), b(gas::lattice<2>(options));
   double last = 0;
-  a.run_collisions(6000, [&](const GasCollision& c) { last = c.time; });
+  a.run_events(6000, [&](const GasEvent& c) { last = c.time; });
   CHECK(b.run_until(last) == 6000);
   CHECK(a.velocities() == b.velocities());
 }
@@ -234,7 +234,7 @@ TEST_CASE("A gas built from another's state runs on as it would have", "[simulat
   options.dimension = 3;
   options.balls = 256;
   Gas<3> first(gas::lattice<3>(options));
-  first.run_collisions(2000);
+  first.run_events(2000);
   const GasSetup<3> state = first.setup();
   Gas<3> second(state);
   CHECK(second.temperature() == Approx(first.temperature()).epsilon(1e-15));

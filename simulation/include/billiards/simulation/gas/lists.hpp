@@ -5,9 +5,9 @@
 // which documents the choice between engines.
 #pragma once
 
-#include <billiards/simulation/detail/gas_engine.hpp>
-#include <billiards/simulation/detail/large_array.hpp>
-#include <billiards/simulation/detail/prefetch.hpp>
+#include <billiards/simulation/gas/engine.hpp>
+#include <billiards/simulation/core/large_array.hpp>
+#include <billiards/simulation/core/prefetch.hpp>
 
 #include <billiards/collision.hpp>
 
@@ -99,24 +99,7 @@ class ListGas : public GasEngine<D, ListGas<D>> {
 
   // No two balls closer than the sum of their radii (less 1e-9 of it) on their nearest images: every
   // pair that close is on the neighbour lists, which hold every pair within shell (r_i + r_j).
-  void check_no_overlap() const {
-    for (std::size_t i = 0; i < ball_.size(); ++i) {
-      const std::uint32_t* list = list_of(i);
-      for (std::uint32_t k = 0; k < count_of(i); ++k) {
-        const std::size_t j = list[k];
-        if (j <= i) continue;
-        const double contact = ball_[i].radius + ball_[j].radius;
-        const double distance = nearest_image(ball_[i].position, ball_[j].position).norm();
-        if (distance < contact * (1 - 1e-9)) {
-          const std::size_t a = std::min(identity_[i], identity_[j]), b = std::max(identity_[i], identity_[j]);
-          std::ostringstream text;
-          text << "balls " << a << " and " << b << " overlap: their centres are " << distance
-               << " apart on their nearest images, expected at least the sum of their radii (" << contact << ")";
-          throw std::invalid_argument(text.str());
-        }
-      }
-    }
-  }
+  void check_no_overlap() const;
 
   std::size_t cell_of(const Vector& x) const { return this->cell_index(cell_coordinates(x)); }
   // Files ball i's list centre and radius in the slots of cell c, making room where the cell is full
@@ -186,58 +169,7 @@ class ListGas : public GasEngine<D, ListGas<D>> {
   // Ball i's neighbours: every ball of the cells around its own whose list centre is closer to its own
   // than shell (r_i + r_j) on their nearest images, put on both lists (`later_only`: only balls
   // numbered after i, for the first lists, built ball by ball).
-  void find_neighbours(std::size_t i, bool later_only) {
-    const Vector& centre = own_[i].centre;
-    const double radius = ball_[i].radius;
-    const auto take = [&](const Slot& slot, double squared_distance) {
-      const double reach = shell_ * (radius + slot.radius);
-      if (squared_distance < reach * reach && slot.ball != i && !(later_only && slot.ball < i)) {
-        add_neighbour(i, slot.ball);
-        add_neighbour(slot.ball, i);
-      }
-    };
-    if (cells_per_side_ == 1) {
-      for (std::uint32_t k = 0; k < head_[0]; ++k) take(slot_[k], nearest_image(centre, slot_[k].centre).squaredNorm());
-      return;
-    }
-    // Along each axis the three cells' terms of cell_of and where ball i's centre lies as seen from
-    // them: a cell wrapped around the box sees it a side away, so that a neighbour's distance needs no
-    // nearest image (the box is at least three cells wide).
-    std::size_t part[D][3];
-    double origin[D][3];
-    const Cell c = cell_coordinates(centre);
-    for (int k = 0; k < D; ++k) {
-      const std::uint32_t* offset = axis_offset_[k].data();
-      const double x = centre[k];
-      part[k][0] = offset[wrapped(c[k] - 1)];
-      part[k][1] = offset[c[k]];
-      part[k][2] = offset[wrapped(c[k] + 1)];
-      origin[k][0] = c[k] == 0 ? x + side_ : x;
-      origin[k][1] = x;
-      origin[k][2] = c[k] == cells_per_side_ - 1 ? x - side_ : x;
-    }
-    const auto visit = [&](std::size_t cell, double o0, double o1, double o2) {
-      for (std::uint32_t k = 0, count = head_[cell]; k < count; ++k) {
-        const Slot& other = slot_[cell * slots_ + k];
-        const double d0 = other.centre[0] - o0, d1 = other.centre[1] - o1;
-        double squared = d0 * d0 + d1 * d1;
-        if constexpr (D == 3) {
-          const double d2 = other.centre[2] - o2;
-          squared += d2 * d2;
-        }
-        take(other, squared);
-      }
-    };
-    if constexpr (D == 2) {
-      for (int b = 0; b < 3; ++b)
-        for (int a = 0; a < 3; ++a) visit(part[1][b] + part[0][a], origin[0][a], origin[1][b], 0);
-    } else {
-      for (int cc = 0; cc < 3; ++cc)
-        for (int b = 0; b < 3; ++b)
-          for (int a = 0; a < 3; ++a)
-            visit(part[2][cc] + part[1][b] + part[0][a], origin[0][a], origin[1][b], origin[2][cc]);
-    }
-  }
+  void find_neighbours(std::size_t i, bool later_only);
 
   // Ball i's list built anew around where it is now: it leaves its old neighbours' lists, moves to the
   // cell of its new centre (its position now, taken into the box) and finds its neighbours there.
@@ -322,37 +254,7 @@ class ListGas : public GasEngine<D, ListGas<D>> {
   // near in memory (a gas mixes them, and beyond the caches every prediction would otherwise miss
   // them). Nothing physical changes: every ball is brought to now on its own line, and the events keep
   // their times, with partners and neighbours renumbered, filed anew in the calendar.
-  void reorder() {
-    const std::size_t n = ball_.size();
-    for (std::size_t i = 0; i < n; ++i) bring_to_now(i);
-    std::vector<std::uint32_t>& order = order_;  // order[k]: the ball that becomes ball k
-    order.clear();
-    for (std::size_t c = 0; c < head_.size(); ++c) {
-      for (std::uint32_t k = 0; k < head_[c]; ++k) order.push_back(slot_[c * slots_ + k].ball);
-    }
-    std::vector<std::uint32_t>& renumbered = renumbered_;  // the inverse: ball i becomes renumbered[i]
-    renumbered.resize(n);
-    for (std::size_t k = 0; k < n; ++k) renumbered[order[k]] = static_cast<std::uint32_t>(k);
-    permute(ball_, spare_ball_, order);
-    permute(own_, spare_own_, order);
-    permute(identity_, spare_identity_, order);
-    permute(wraps_, spare_wraps_, order);
-    spare_lists_.resize(neighbour_.size());
-    for (std::size_t k = 0; k < n; ++k) {
-      const std::uint32_t* from = &neighbour_[order[k] * capacity_];
-      std::uint32_t* to = &spare_lists_[k * capacity_];
-      to[0] = from[0];
-      for (std::uint32_t m = 1; m <= from[0]; ++m) to[m] = renumbered[from[m]];
-    }
-    neighbour_.swap(spare_lists_);
-    for (Own& o : own_) {
-      if (o.partner != none) o.partner = renumbered[o.partner];
-    }
-    for (std::size_t c = 0; c < head_.size(); ++c) {
-      for (std::uint32_t k = 0; k < head_[c]; ++k) slot_[c * slots_ + k].ball = renumbered[slot_[c * slots_ + k].ball];
-    }
-    this->refile();
-  }
+  void reorder();
   template <class Array>
   static void permute(Array& records, Array& spare, const std::vector<std::uint32_t>& order) {
     spare.resize(records.size());
@@ -365,29 +267,7 @@ class ListGas : public GasEngine<D, ListGas<D>> {
   // for: for the balls three buckets ahead their records and lists; two ahead their neighbours'
   // records, which their predictions read, and their partners' records and lists; one ahead the
   // partners' neighbours' records.
-  void prefetch_next_events() {
-    calendar_.look_ahead(3, [this](std::uint32_t k, int ahead) {
-      if (ahead == 3) {
-        detail::prefetch(&own_[k]);
-        detail::prefetch(&ball_[k]);
-        detail::prefetch(&neighbour_[k * capacity_]);
-        return;
-      }
-      const std::uint32_t partner = own_[k].partner;
-      if (ahead == 2) {
-        prefetch_neighbours(k);
-        if (partner == none) prefetch_rebuild(k);
-        if (partner != none) {
-          detail::prefetch(&own_[partner]);
-          detail::prefetch(&ball_[partner]);
-          detail::prefetch(&neighbour_[partner * capacity_]);
-          calendar_.prefetch_record(partner);
-        }
-      } else if (partner != none) {
-        prefetch_neighbours(partner);
-      }
-    });
-  }
+  void prefetch_next_events();
   // What the rebuild of ball k's list writes and reads: its neighbours' lists, which it leaves, and the
   // 3^D cells around where it will be, their counts and first slots.
   void prefetch_rebuild(std::size_t k) const {
@@ -434,8 +314,7 @@ class ListGas : public GasEngine<D, ListGas<D>> {
     while (done < collisions) {
       const std::uint32_t earliest = calendar_.earliest();
       if (earliest == EventCalendar::none) {
-        if (until < infinity) break;  // no event ever: the run reaches `until` all the same
-        throw NoCollisions("no ball has a next event");
+        break;  // no event ever: the run ends here (at `until`, where it is finite)
       }
       const std::size_t i = earliest;
       Own& own = own_[i];
@@ -481,7 +360,7 @@ class ListGas : public GasEngine<D, ListGas<D>> {
           this->count_collision(bi.position - image, change, mi, mj, contact);
           ++done;
           quiet = 0;
-          on_collision(GasCollision{now_, identity_[i], identity_[j]});
+          on_collision(GasEvent{now_, GasEvent::Kind::ball, identity_[i], identity_[j]});
           this->refile_now_and_then();
         }
       }
@@ -534,5 +413,139 @@ class ListGas : public GasEngine<D, ListGas<D>> {
   /// From here the balls lie beyond the caches and the look ahead pays.
   static constexpr std::size_t look_ahead_from = std::size_t{1} << 13;
 };
+
+// The longer members, defined out of the class body.
+
+template <int D>
+inline void ListGas<D>::check_no_overlap() const {
+  for (std::size_t i = 0; i < ball_.size(); ++i) {
+    const std::uint32_t* list = list_of(i);
+    for (std::uint32_t k = 0; k < count_of(i); ++k) {
+      const std::size_t j = list[k];
+      if (j <= i) continue;
+      const double contact = ball_[i].radius + ball_[j].radius;
+      const double distance = nearest_image(ball_[i].position, ball_[j].position).norm();
+      if (distance < contact * (1 - overlap_tolerance)) {
+        const std::size_t a = std::min(identity_[i], identity_[j]), b = std::max(identity_[i], identity_[j]);
+        std::ostringstream text;
+        text << "balls " << a << " and " << b << " overlap: their centres are " << distance
+             << " apart on their nearest images, expected at least the sum of their radii (" << contact << ")";
+        throw std::invalid_argument(text.str());
+      }
+    }
+  }
+}
+
+template <int D>
+inline void ListGas<D>::reorder() {
+  const std::size_t n = ball_.size();
+  for (std::size_t i = 0; i < n; ++i) bring_to_now(i);
+  std::vector<std::uint32_t>& order = order_;  // order[k]: the ball that becomes ball k
+  order.clear();
+  for (std::size_t c = 0; c < head_.size(); ++c) {
+    for (std::uint32_t k = 0; k < head_[c]; ++k) order.push_back(slot_[c * slots_ + k].ball);
+  }
+  std::vector<std::uint32_t>& renumbered = renumbered_;  // the inverse: ball i becomes renumbered[i]
+  renumbered.resize(n);
+  for (std::size_t k = 0; k < n; ++k) renumbered[order[k]] = static_cast<std::uint32_t>(k);
+  permute(ball_, spare_ball_, order);
+  permute(own_, spare_own_, order);
+  permute(identity_, spare_identity_, order);
+  permute(wraps_, spare_wraps_, order);
+  spare_lists_.resize(neighbour_.size());
+  for (std::size_t k = 0; k < n; ++k) {
+    const std::uint32_t* from = &neighbour_[order[k] * capacity_];
+    std::uint32_t* to = &spare_lists_[k * capacity_];
+    to[0] = from[0];
+    for (std::uint32_t m = 1; m <= from[0]; ++m) to[m] = renumbered[from[m]];
+  }
+  neighbour_.swap(spare_lists_);
+  for (Own& o : own_) {
+    if (o.partner != none) o.partner = renumbered[o.partner];
+  }
+  for (std::size_t c = 0; c < head_.size(); ++c) {
+    for (std::uint32_t k = 0; k < head_[c]; ++k) slot_[c * slots_ + k].ball = renumbered[slot_[c * slots_ + k].ball];
+  }
+  this->refile();
+}
+
+template <int D>
+inline void ListGas<D>::find_neighbours(std::size_t i, bool later_only) {
+  const Vector& centre = own_[i].centre;
+  const double radius = ball_[i].radius;
+  const auto take = [&](const Slot& slot, double squared_distance) {
+    const double reach = shell_ * (radius + slot.radius);
+    if (squared_distance < reach * reach && slot.ball != i && !(later_only && slot.ball < i)) {
+      add_neighbour(i, slot.ball);
+      add_neighbour(slot.ball, i);
+    }
+  };
+  if (cells_per_side_ == 1) {
+    for (std::uint32_t k = 0; k < head_[0]; ++k) take(slot_[k], nearest_image(centre, slot_[k].centre).squaredNorm());
+    return;
+  }
+  // Along each axis the three cells' terms of cell_of and where ball i's centre lies as seen from
+  // them: a cell wrapped around the box sees it a side away, so that a neighbour's distance needs no
+  // nearest image (the box is at least three cells wide).
+  std::size_t part[D][3];
+  double origin[D][3];
+  const Cell c = cell_coordinates(centre);
+  for (int k = 0; k < D; ++k) {
+    const std::uint32_t* offset = axis_offset_[k].data();
+    const double x = centre[k];
+    part[k][0] = offset[wrapped(c[k] - 1)];
+    part[k][1] = offset[c[k]];
+    part[k][2] = offset[wrapped(c[k] + 1)];
+    origin[k][0] = c[k] == 0 ? x + side_ : x;
+    origin[k][1] = x;
+    origin[k][2] = c[k] == cells_per_side_ - 1 ? x - side_ : x;
+  }
+  const auto visit = [&](std::size_t cell, double o0, double o1, double o2) {
+    for (std::uint32_t k = 0, count = head_[cell]; k < count; ++k) {
+      const Slot& other = slot_[cell * slots_ + k];
+      const double d0 = other.centre[0] - o0, d1 = other.centre[1] - o1;
+      double squared = d0 * d0 + d1 * d1;
+      if constexpr (D == 3) {
+        const double d2 = other.centre[2] - o2;
+        squared += d2 * d2;
+      }
+      take(other, squared);
+    }
+  };
+  if constexpr (D == 2) {
+    for (int b = 0; b < 3; ++b)
+      for (int a = 0; a < 3; ++a) visit(part[1][b] + part[0][a], origin[0][a], origin[1][b], 0);
+  } else {
+    for (int cc = 0; cc < 3; ++cc)
+      for (int b = 0; b < 3; ++b)
+        for (int a = 0; a < 3; ++a)
+          visit(part[2][cc] + part[1][b] + part[0][a], origin[0][a], origin[1][b], origin[2][cc]);
+  }
+}
+
+template <int D>
+inline void ListGas<D>::prefetch_next_events() {
+  calendar_.look_ahead(3, [this](std::uint32_t k, int ahead) {
+    if (ahead == 3) {
+      detail::prefetch(&own_[k]);
+      detail::prefetch(&ball_[k]);
+      detail::prefetch(&neighbour_[k * capacity_]);
+      return;
+    }
+    const std::uint32_t partner = own_[k].partner;
+    if (ahead == 2) {
+      prefetch_neighbours(k);
+      if (partner == none) prefetch_rebuild(k);
+      if (partner != none) {
+        detail::prefetch(&own_[partner]);
+        detail::prefetch(&ball_[partner]);
+        detail::prefetch(&neighbour_[partner * capacity_]);
+        calendar_.prefetch_record(partner);
+      }
+    } else if (partner != none) {
+      prefetch_neighbours(partner);
+    }
+  });
+}
 
 }  // namespace billiards::simulation::detail

@@ -8,7 +8,7 @@
 /// cushion's; y across, 0 and `width` at the side cushions' noses; z up, the cloth at z = 0.
 #pragma once
 
-#include "table_setup.hpp"
+#include <billiards/simulation/core/ball.hpp>
 
 #include <billiards/cloth.hpp>
 

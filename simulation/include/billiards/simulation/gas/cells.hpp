@@ -3,9 +3,9 @@
 // the 3^D cells around it. Used by Gas (gas.hpp), which documents the choice between engines.
 #pragma once
 
-#include <billiards/simulation/detail/gas_engine.hpp>
-#include <billiards/simulation/detail/large_array.hpp>
-#include <billiards/simulation/detail/prefetch.hpp>
+#include <billiards/simulation/gas/engine.hpp>
+#include <billiards/simulation/core/large_array.hpp>
+#include <billiards/simulation/core/prefetch.hpp>
 
 #include <billiards/collision.hpp>
 
@@ -85,25 +85,7 @@ class CellGas : public GasEngine<D, CellGas<D>> {
 
   // No two balls closer than a diameter (less 1e-9 of one) on their nearest images: each ball against
   // the balls of the 3^D cells around its own, which hold every ball within a diameter of it.
-  void check_no_overlap() const {
-    const double closest = diameter_ * (1 - 1e-9);
-    for (std::size_t i = 0; i < ball_.size(); ++i) {
-      Gathered around;
-      gather(own_[i].coordinates, all_axes, 0, around);
-      for (int n = 0; n < around.cells; ++n) {
-        for (std::uint32_t j = around.first[n]; j != none; j = ball_[j].next) {
-          if (j <= i) continue;
-          const double distance = nearest_image(ball_[i].position, ball_[j].position).norm();
-          if (distance < closest) {
-            std::ostringstream text;
-            text << "balls " << i << " and " << j << " overlap: their centres are " << distance
-                 << " apart on their nearest images, expected at least a diameter (" << diameter_ << ")";
-            throw std::invalid_argument(text.str());
-          }
-        }
-      }
-    }
-  }
+  void check_no_overlap() const;
 
   void insert(std::size_t i) {
     const std::size_t c = own_[i].cell;
@@ -199,50 +181,7 @@ class CellGas : public GasEngine<D, CellGas<D>> {
   // it along `axis`) and their lists' first balls. The cells, their heads and their first balls are
   // asked of memory all at once before any is read: beyond the caches the misses then overlap instead
   // of following one another.
-  void gather(const Cell& centre, int axis, int step, Gathered& gathered) const {
-    constexpr int around = D == 2 ? 9 : 27;
-    std::uint32_t* first = gathered.first;
-    int cells = 0;
-    {
-      // Along each axis the cell coordinates to search, wrapped around the box, as the axis's terms
-      // of cell_index: three (one step either side and the ball's own), or the one beyond.
-      std::size_t part[D][3];
-      int count[D];
-      for (int k = 0; k < D; ++k) {
-        const int c = centre[k];
-        const std::uint32_t* offset = axis_offset_[k].data();
-        if (k == axis) {
-          part[k][0] = offset[wrapped(c + step)];
-          count[k] = 1;
-        } else {
-          part[k][0] = offset[wrapped(c - 1)];
-          part[k][1] = offset[c];
-          part[k][2] = offset[wrapped(c + 1)];
-          count[k] = 3;
-        }
-      }
-      std::size_t cell[around];
-      const auto add = [&](std::size_t index) {
-        detail::prefetch(&head_[index]);
-        cell[cells++] = index;
-      };
-      // The first axis fastest (cell_index's order within a tile; where ties between equal times are
-      // broken, always the same way).
-      if constexpr (D == 2) {
-        for (int b = 0; b < count[1]; ++b)
-          for (int a = 0; a < count[0]; ++a) add(part[1][b] + part[0][a]);
-      } else {
-        for (int c = 0; c < count[2]; ++c)
-          for (int b = 0; b < count[1]; ++b)
-            for (int a = 0; a < count[0]; ++a) add(part[2][c] + part[1][b] + part[0][a]);
-      }
-      for (int n = 0; n < cells; ++n) {
-        first[n] = head_[cell[n]];
-        if (first[n] != none) detail::prefetch(&ball_[first[n]]);
-      }
-    }
-    gathered.cells = cells;
-  }
+  void gather(const Cell& centre, int axis, int step, Gathered& gathered) const;
 
   // Ball i's earliest collision with a ball of the gathered cells, kept where earlier than the candidate
   // it has. Ball i is at now; the cells' lists are as they were gathered.
@@ -274,31 +213,7 @@ class CellGas : public GasEngine<D, CellGas<D>> {
   // and for those one bucket ahead, whose records were asked for before, their partners' records and
   // (2-D) the list heads of the cells their predictions will search and, for a crossing, the records
   // its removal from its cell's list writes.
-  void prefetch_next_events() {
-    calendar_.look_ahead(2, [this](std::uint32_t k, int ahead) {
-      if (ahead > 1) {
-        detail::prefetch(&own_[k]);
-        detail::prefetch(&ball_[k]);
-      } else if (const Own& own = own_[k]; !own.crossing_first()) {
-        detail::prefetch(&own_[own.partner]);
-        detail::prefetch(&ball_[own.partner]);
-        calendar_.prefetch_record(own.partner);
-        if constexpr (D == 2) {  // the 5 × 5 cells around ball k hold both balls' neighbourhoods
-          const int low[D] = {own.coordinates[0] - 2, own.coordinates[1] - 2};
-          const int high[D] = {own.coordinates[0] + 2, own.coordinates[1] + 2};
-          prefetch_heads(low, high);
-        }
-      } else if constexpr (D == 2) {  // a crossing (in 3-D neither prefetch below measured faster)
-        const Ball& ball = ball_[k];  // its neighbours in its cell's list, which its removal writes
-        if (ball.previous != none) detail::prefetch(&ball_[ball.previous]);
-        if (ball.next != none) detail::prefetch(&ball_[ball.next]);
-        int low[D] = {own.coordinates[0] - 1, own.coordinates[1] - 1};  // the cells that come around it
-        int high[D] = {own.coordinates[0] + 1, own.coordinates[1] + 1};
-        low[own.axis] = high[own.axis] = own.coordinates[own.axis] + 2 * own.step;
-        prefetch_heads(low, high);
-      }
-    });
-  }
+  void prefetch_next_events();
 
   // Asks memory for the list heads of a block of cells, low[a] to high[a] along each axis (at most five
   // cells, wrapped around the box): those of its 2^D corners, which lie in every tile the block meets
@@ -323,50 +238,7 @@ class CellGas : public GasEngine<D, CellGas<D>> {
   // kept from one pass to the next: no fresh memory, whose first touch costs a page fault a page (at
   // 10^6 disks a pass that copied the records into new arrays took about 0.6 s, most of it faults;
   // in place, about 0.1 s).
-  void reorder() {
-    const std::size_t n = ball_.size();
-    for (std::size_t i = 0; i < n; ++i) bring_to_now(i);
-    std::vector<std::uint32_t>& order = order_;  // order[k]: the ball that becomes ball k
-    order.clear();
-    for (std::size_t c = 0; c < head_.size(); ++c) {
-      for (std::uint32_t i = head_[c]; i != none; i = ball_[i].next) order.push_back(i);
-    }
-    std::vector<std::uint32_t>& renumbered = renumbered_;  // the inverse: ball i becomes renumbered[i]
-    renumbered.resize(n);
-    for (std::size_t k = 0; k < n; ++k) renumbered[order[k]] = static_cast<std::uint32_t>(k);
-    // Each cycle k → order[k] → order[order[k]] … : place k takes the records of place order[k], which
-    // the cycle has not yet overwritten, and the cycle's last place the first place's, kept aside.
-    placed_.assign(n, false);
-    for (std::size_t start = 0; start < n; ++start) {
-      if (placed_[start]) continue;
-      const Ball first_ball = ball_[start];
-      const Own first_own = own_[start];
-      const std::uint32_t first_identity = identity_[start];
-      const typename Base::Wraps first_wraps = wraps_[start];
-      for (std::size_t k = start;;) {
-        placed_[k] = true;
-        const std::size_t from = order[k];
-        if (from == start) {
-          ball_[k] = first_ball;
-          own_[k] = first_own;
-          identity_[k] = first_identity;
-          wraps_[k] = first_wraps;
-          break;
-        }
-        ball_[k] = ball_[from];
-        own_[k] = own_[from];
-        identity_[k] = identity_[from];
-        wraps_[k] = wraps_[from];
-        k = from;
-      }
-    }
-    for (Own& o : own_) {
-      if (o.partner != none) o.partner = renumbered[o.partner];
-    }
-    std::fill(head_.begin(), head_.end(), none);
-    for (std::size_t k = n; k-- > 0;) insert(k);
-    this->refile();
-  }
+  void reorder();
 
   // Runs events until `collisions` more collisions or until the next event lies beyond `until`, calling
   // `on_collision` after each collision; returns the collisions run (GasEngine::run_events picks
@@ -383,8 +255,7 @@ class CellGas : public GasEngine<D, CellGas<D>> {
     while (done < collisions) {
       const std::uint32_t earliest = calendar_.earliest();
       if (earliest == EventCalendar::none) {
-        if (until < infinity) break;  // no event ever: the run reaches `until` all the same
-        throw NoCollisions("no ball has a next event");
+        break;  // no event ever: the run ends here (at `until`, where it is finite)
       }
       const std::size_t i = earliest;
       Own& own = own_[i];
@@ -444,7 +315,7 @@ class CellGas : public GasEngine<D, CellGas<D>> {
           this->count_collision(ball_[i].position - image, impulse, this->mass_, this->mass_, diameter_);
           ++done;
           quiet = 0;
-          on_collision(GasCollision{now_, identity_[i], identity_[j]});
+          on_collision(GasEvent{now_, GasEvent::Kind::ball, identity_[i], identity_[j]});
           this->refile_now_and_then();
         }
       }
@@ -487,5 +358,147 @@ class CellGas : public GasEngine<D, CellGas<D>> {
   /// 10^5: 12–16 % faster; at 1024 it costs 10 %).
   static constexpr std::size_t look_ahead_from = std::size_t{1} << 15;
 };
+
+// The longer members, defined out of the class body.
+
+template <int D>
+inline void CellGas<D>::check_no_overlap() const {
+  const double closest = diameter_ * (1 - overlap_tolerance);
+  for (std::size_t i = 0; i < ball_.size(); ++i) {
+    Gathered around;
+    gather(own_[i].coordinates, all_axes, 0, around);
+    for (int n = 0; n < around.cells; ++n) {
+      for (std::uint32_t j = around.first[n]; j != none; j = ball_[j].next) {
+        if (j <= i) continue;
+        const double distance = nearest_image(ball_[i].position, ball_[j].position).norm();
+        if (distance < closest) {
+          std::ostringstream text;
+          text << "balls " << i << " and " << j << " overlap: their centres are " << distance
+               << " apart on their nearest images, expected at least a diameter (" << diameter_ << ")";
+          throw std::invalid_argument(text.str());
+        }
+      }
+    }
+  }
+}
+
+template <int D>
+inline void CellGas<D>::reorder() {
+  const std::size_t n = ball_.size();
+  for (std::size_t i = 0; i < n; ++i) bring_to_now(i);
+  std::vector<std::uint32_t>& order = order_;  // order[k]: the ball that becomes ball k
+  order.clear();
+  for (std::size_t c = 0; c < head_.size(); ++c) {
+    for (std::uint32_t i = head_[c]; i != none; i = ball_[i].next) order.push_back(i);
+  }
+  std::vector<std::uint32_t>& renumbered = renumbered_;  // the inverse: ball i becomes renumbered[i]
+  renumbered.resize(n);
+  for (std::size_t k = 0; k < n; ++k) renumbered[order[k]] = static_cast<std::uint32_t>(k);
+  // Each cycle k → order[k] → order[order[k]] … : place k takes the records of place order[k], which
+  // the cycle has not yet overwritten, and the cycle's last place the first place's, kept aside.
+  placed_.assign(n, false);
+  for (std::size_t start = 0; start < n; ++start) {
+    if (placed_[start]) continue;
+    const Ball first_ball = ball_[start];
+    const Own first_own = own_[start];
+    const std::uint32_t first_identity = identity_[start];
+    const typename Base::Wraps first_wraps = wraps_[start];
+    for (std::size_t k = start;;) {
+      placed_[k] = true;
+      const std::size_t from = order[k];
+      if (from == start) {
+        ball_[k] = first_ball;
+        own_[k] = first_own;
+        identity_[k] = first_identity;
+        wraps_[k] = first_wraps;
+        break;
+      }
+      ball_[k] = ball_[from];
+      own_[k] = own_[from];
+      identity_[k] = identity_[from];
+      wraps_[k] = wraps_[from];
+      k = from;
+    }
+  }
+  for (Own& o : own_) {
+    if (o.partner != none) o.partner = renumbered[o.partner];
+  }
+  std::fill(head_.begin(), head_.end(), none);
+  for (std::size_t k = n; k-- > 0;) insert(k);
+  this->refile();
+}
+
+template <int D>
+inline void CellGas<D>::gather(const Cell& centre, int axis, int step, Gathered& gathered) const {
+  constexpr int around = D == 2 ? 9 : 27;
+  std::uint32_t* first = gathered.first;
+  int cells = 0;
+  {
+    // Along each axis the cell coordinates to search, wrapped around the box, as the axis's terms
+    // of cell_index: three (one step either side and the ball's own), or the one beyond.
+    std::size_t part[D][3];
+    int count[D];
+    for (int k = 0; k < D; ++k) {
+      const int c = centre[k];
+      const std::uint32_t* offset = axis_offset_[k].data();
+      if (k == axis) {
+        part[k][0] = offset[wrapped(c + step)];
+        count[k] = 1;
+      } else {
+        part[k][0] = offset[wrapped(c - 1)];
+        part[k][1] = offset[c];
+        part[k][2] = offset[wrapped(c + 1)];
+        count[k] = 3;
+      }
+    }
+    std::size_t cell[around];
+    const auto add = [&](std::size_t index) {
+      detail::prefetch(&head_[index]);
+      cell[cells++] = index;
+    };
+    // The first axis fastest (cell_index's order within a tile; where ties between equal times are
+    // broken, always the same way).
+    if constexpr (D == 2) {
+      for (int b = 0; b < count[1]; ++b)
+        for (int a = 0; a < count[0]; ++a) add(part[1][b] + part[0][a]);
+    } else {
+      for (int c = 0; c < count[2]; ++c)
+        for (int b = 0; b < count[1]; ++b)
+          for (int a = 0; a < count[0]; ++a) add(part[2][c] + part[1][b] + part[0][a]);
+    }
+    for (int n = 0; n < cells; ++n) {
+      first[n] = head_[cell[n]];
+      if (first[n] != none) detail::prefetch(&ball_[first[n]]);
+    }
+  }
+  gathered.cells = cells;
+}
+
+template <int D>
+inline void CellGas<D>::prefetch_next_events() {
+  calendar_.look_ahead(2, [this](std::uint32_t k, int ahead) {
+    if (ahead > 1) {
+      detail::prefetch(&own_[k]);
+      detail::prefetch(&ball_[k]);
+    } else if (const Own& own = own_[k]; !own.crossing_first()) {
+      detail::prefetch(&own_[own.partner]);
+      detail::prefetch(&ball_[own.partner]);
+      calendar_.prefetch_record(own.partner);
+      if constexpr (D == 2) {  // the 5 × 5 cells around ball k hold both balls' neighbourhoods
+        const int low[D] = {own.coordinates[0] - 2, own.coordinates[1] - 2};
+        const int high[D] = {own.coordinates[0] + 2, own.coordinates[1] + 2};
+        prefetch_heads(low, high);
+      }
+    } else if constexpr (D == 2) {  // a crossing (in 3-D neither prefetch below measured faster)
+      const Ball& ball = ball_[k];  // its neighbours in its cell's list, which its removal writes
+      if (ball.previous != none) detail::prefetch(&ball_[ball.previous]);
+      if (ball.next != none) detail::prefetch(&ball_[ball.next]);
+      int low[D] = {own.coordinates[0] - 1, own.coordinates[1] - 1};  // the cells that come around it
+      int high[D] = {own.coordinates[0] + 1, own.coordinates[1] + 1};
+      low[own.axis] = high[own.axis] = own.coordinates[own.axis] + 2 * own.step;
+      prefetch_heads(low, high);
+    }
+  });
+}
 
 }  // namespace billiards::simulation::detail

@@ -1,8 +1,11 @@
 /// \file
 /// The event-driven table's setup: the balls, the table's size, the validation of a setup (no overlap,
 /// every ball on the table) and two setups made in code (balls at random, the break). The engine is in
-/// billiards/simulation/table.hpp.
+/// billiards/simulation/table/table.hpp.
 #pragma once
+
+#include <billiards/simulation/core/ball.hpp>
+#include <billiards/simulation/core/invariants.hpp>
 
 #include <billiards/checked.hpp>
 #include <billiards/collision.hpp>
@@ -21,16 +24,6 @@
 #include <vector>
 
 namespace billiards::simulation {
-
-/// A ball of a simulation: its centre and its velocity, in D dimensions.
-template <int D>
-struct Ball {
-  Eigen::Matrix<double, D, 1> position = Eigen::Matrix<double, D, 1>::Zero();  ///< the centre
-  Eigen::Matrix<double, D, 1> velocity = Eigen::Matrix<double, D, 1>::Zero();  ///< the velocity
-};
-
-/// A point or a velocity on the table.
-using TableVector = Eigen::Vector2d;
 
 /// Where a setup's values were read, for messages: "FILE:LINE: " prefixes (empty for a setup built in
 /// code, or for a value left at its default).
@@ -70,7 +63,7 @@ inline std::string too_many_balls(std::size_t count) {
 /// ε max(width, height); below this radius that rounding alone would exceed the overlap the run
 /// allows. 9.0e-6 m for the default 2.54 × 1.27 m table.
 inline double smallest_radius(double width, double height) {
-  return 16 * std::numeric_limits<double>::epsilon() * std::max(width, height) / 1e-9;
+  return 16 * std::numeric_limits<double>::epsilon() * std::max(width, height) / overlap_tolerance;
 }
 
 /// The distance of two centres, |a − b|. The square root of the squared distance where that square is
@@ -97,18 +90,23 @@ inline bool on_table(const TableSetup& setup, const TableVector& p, double slack
   return p.x() >= low && p.x() <= setup.width - low && p.y() >= low && p.y() <= setup.height - low;
 }
 
-/// Rejects a setup that is not a valid table: a clear message naming where (FILE:LINE: for a setup
-/// read from a file), the ball, the value and what was expected. Throws std::invalid_argument.
-/// O(N) expected time: the overlap check hashes the balls into cells of one diameter. Returns how many
-/// pairs of balls it compared (a handful per ball; the tests hold it to that).
-inline std::size_t validate(const TableSetup& setup) {
+namespace detail {
+
+/// Where ball i of `setup` was read ("FILE:LINE: "), or the file's prefix.
+inline std::string ball_origin(const TableSetup& setup, std::size_t i) {
+  return i < setup.origin.balls.size() ? setup.origin.balls[i] : setup.origin.file;
+}
+
+/// Throws std::invalid_argument with `message` prefixed by `where`.
+[[noreturn]] inline void fail_setup(const std::string& where, const std::string& message) {
+  throw std::invalid_argument(where + message);
+}
+
+/// The table's and each ball's values: see validate(const TableSetup&).
+inline void validate_values(const TableSetup& setup) {
   const SetupOrigin& origin = setup.origin;
-  const auto ball_origin = [&](std::size_t i) {
-    return i < origin.balls.size() ? origin.balls[i] : origin.file;
-  };
-  const auto fail = [](const std::string& where, const std::string& message) {
-    throw std::invalid_argument(where + message);
-  };
+  const auto ball_origin = [&](std::size_t i) { return detail::ball_origin(setup, i); };
+  const auto fail = fail_setup;
   const auto positive = [&](const std::string& where, const char* name, double value) {
     if (!(value > 0) || !std::isfinite(value)) {
       std::ostringstream text;
@@ -163,10 +161,14 @@ inline std::size_t validate(const TableSetup& setup) {
       fail(ball_origin(i), text.str());
     }
   }
-  // Overlaps: balls hashed into square cells of side 2r; two balls that overlap lie in the same or in
-  // neighbouring cells. Balls that do not overlap fill a cell with at most a few, so each ball is
-  // compared with a bounded number of others. The cell indices are small: the radius is at least
-  // smallest_radius(), so a side has at most about 10^8 cells.
+}
+
+/// No two balls of `setup` overlap; returns how many pairs it compared. Balls hashed into square cells
+/// of side 2r; two balls that overlap lie in the same or in neighbouring cells. Balls that do not overlap fill a cell with at most a few, so each ball is
+/// compared with a bounded number of others. The cell indices are small: the radius is at least
+/// smallest_radius(), so a side has at most about 10^8 cells.
+inline std::size_t check_overlaps(const TableSetup& setup) {
+  const double r = setup.radius;
   const double cell = 2 * r;
   const auto key = [](std::int64_t x, std::int64_t y) {
     return (static_cast<std::uint64_t>(x) << 32) ^ static_cast<std::uint64_t>(y);
@@ -188,7 +190,7 @@ inline std::size_t validate(const TableSetup& setup) {
             std::ostringstream text;
             text << "balls " << j << " and " << i << " overlap: their centres are "
                  << 2 * r - overlap(setup, j, i) << " apart, expected at least two radii (" << 2 * r << ")";
-            fail(ball_origin(i), text.str());
+            fail_setup(ball_origin(setup, i), text.str());
           }
         }
       }
@@ -196,6 +198,17 @@ inline std::size_t validate(const TableSetup& setup) {
     cells[key(cx, cy)].push_back(i);
   }
   return compared;
+}
+
+}  // namespace detail
+
+/// Rejects a setup that is not a valid table: a clear message naming where (FILE:LINE: for a setup
+/// read from a file), the ball, the value and what was expected. Throws std::invalid_argument.
+/// O(N) expected time: the overlap check hashes the balls into cells of one diameter. Returns how many
+/// pairs of balls it compared (a handful per ball; the tests hold it to that).
+inline std::size_t validate(const TableSetup& setup) {
+  detail::validate_values(setup);
+  return detail::check_overlaps(setup);
 }
 
 /// `count` balls at random, non-overlapping positions with speeds in [0.5, 1.5] × `speed` in random

@@ -18,8 +18,8 @@
 // the year. Any width gives the right order; the width decides only the speed.
 #pragma once
 
-#include <billiards/simulation/detail/large_array.hpp>
-#include <billiards/simulation/detail/prefetch.hpp>
+#include <billiards/simulation/core/large_array.hpp>
+#include <billiards/simulation/core/prefetch.hpp>
 
 #include <algorithm>
 #include <cmath>

@@ -4,8 +4,8 @@
 // events; this base reads the records through the engine's accessors (CRTP).
 #pragma once
 
-#include <billiards/simulation/event_calendar.hpp>
-#include <billiards/simulation/gas_setup.hpp>
+#include <billiards/simulation/core/event_calendar.hpp>
+#include <billiards/simulation/gas/setup.hpp>
 
 #include <Eigen/Core>
 
@@ -72,6 +72,14 @@ class GasEngine {
     return m;
   }
 
+  double energy() const {
+    long double sum = 0;
+    for (std::size_t i = 0; i < size(); ++i) {
+      sum += static_cast<long double>(engine().mass_of(i)) *
+             static_cast<long double>(engine().velocity(i).squaredNorm());
+    }
+    return static_cast<double>(sum / 2);
+  }
   double temperature() const {
     long double sum = 0;
     for (std::size_t i = 0; i < size(); ++i) {
@@ -276,11 +284,11 @@ class GasEngine {
     rate_sum_ += contact * std::sqrt(mi * mj / (mi + mj));
     ++collisions_;
   }
-  // Counts an event; throws NoCollisions when there have been too many in a row without a collision.
+  // Counts an event; throws EventLimitReached when there have been too many in a row without a collision.
   void count_quiet(std::uint64_t& quiet) const {
     if (++quiet > quiet_limit_) {
-      throw NoCollisions("stopped after " + std::to_string(quiet_limit_) +
-                         " events in a row without a collision: the balls' paths do not meet");
+      throw EventLimitReached("billiards::simulation::Gas: stopped after " + std::to_string(quiet_limit_) +
+                              " events in a row without a collision: the balls' paths do not meet");
     }
   }
 

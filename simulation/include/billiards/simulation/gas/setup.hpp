@@ -4,8 +4,11 @@
 /// callback sees it, a span's measurements. The engine is in gas.hpp.
 #pragma once
 
-#include <billiards/simulation/table_setup.hpp>
+#include <billiards/simulation/core/ball.hpp>
+#include <billiards/simulation/core/errors.hpp>
+#include <billiards/simulation/core/invariants.hpp>
 
+#include <billiards/checked.hpp>
 #include <billiards/collision.hpp>
 
 #include <Eigen/Core>
@@ -43,7 +46,7 @@ struct Options {
   std::uint64_t events = 100000;      ///< collisions measured
   std::uint64_t equilibrate = 10000;  ///< collisions run first, not measured
   std::uint64_t seed = 1;             ///< the seed of the random velocities
-  /// Stop (throw NoCollisions) after this many events in a row without a collision; 0: 10^6 + 100 N.
+  /// Stop (throw EventLimitReached) after this many events in a row without a collision; 0: 10^6 + 100 N.
   std::uint64_t max_events_without_collision = 0;
   GasMethod method = GasMethod::automatic;  ///< the engine (see gas.hpp)
   int blocks = 10;  ///< blocks the measured collisions are cut into (at least 1; at most one a collision)
@@ -142,7 +145,7 @@ inline double box_side(int dimension, std::size_t balls, double eta) {
 
 /// The widest box, in diameters, whose positions round by at most 1e-9 of a diameter: 16 ε side ≤ 1e-9,
 /// about 2.8e5 (the table example's rule for its radius). The runs hold overlaps and gaps below 1e-9.
-inline double largest_box_side() { return 1e-9 / (16 * std::numeric_limits<double>::epsilon()); }
+inline double largest_box_side() { return overlap_tolerance / (16 * std::numeric_limits<double>::epsilon()); }
 
 /// The smallest packing fraction with a box no wider than largest_box_side(): N v/side^D.
 inline double smallest_packing_fraction(int dimension, std::size_t balls) {
@@ -246,17 +249,18 @@ struct GasSetup {
   }
 };
 
-/// One collision of the gas, as Gas reports it to a callback.
-struct GasCollision {
+/// An event of the gas, as Gas reports it: a collision of two balls.
+struct GasEvent {
+  /// What happened: the gas's only reported kind, two balls meeting.
+  enum class Kind { ball };
   double time = 0;         ///< the gas's time of the collision
+  Kind kind = Kind::ball;  ///< what the ball met: another ball
   std::size_t first = 0;   ///< a ball (its index in the setup)
   std::size_t second = 0;  ///< the other ball
 };
 
-/// Thrown when a run goes on without collisions (the balls' paths never meet).
-struct NoCollisions : std::runtime_error {
-  using std::runtime_error::runtime_error;
-};
+/// The name of a gas event's kind: "ball".
+inline const char* kind_name(GasEvent::Kind) noexcept { return "ball"; }
 
 /// What a Gas measured over a span: from its start (or Gas::reset_measurements) to now.
 struct GasMeasurement {

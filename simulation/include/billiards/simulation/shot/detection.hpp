@@ -1,0 +1,139 @@
+/// \file
+/// Detection: when a moving ball next meets a ball, a straight cushion, a jaw or a pocket's capture
+/// circle, each the earliest root of a derived event polynomial (billiards::contact_polynomial,
+/// billiards::cushion_polynomial) found by billiards::earliest_contact; and the bounds that rule a pair
+/// out without solving for it (the box a ball's centre keeps to over a horizon).
+///
+/// A path is a centre's motion from now within its phase: position r, velocity v and constant
+/// acceleration a, all horizontal. Times are from now; `horizon` is the longest time looked at.
+#pragma once
+
+#include <billiards/simulation/core/invariants.hpp>
+#include <billiards/simulation/shot/pool_table.hpp>
+
+#include <billiards/events.hpp>
+
+#include <Eigen/Core>
+
+#include <algorithm>
+#include <array>
+#include <optional>
+#include <span>
+#include <utility>
+
+namespace billiards::simulation::shot {
+
+/// A centre's motion from now: r + v t + ½ a t².
+struct Path {
+  Eigen::Vector2d position = Eigen::Vector2d::Zero();      ///< r (m)
+  Eigen::Vector2d velocity = Eigen::Vector2d::Zero();      ///< v (m/s)
+  Eigen::Vector2d acceleration = Eigen::Vector2d::Zero();  ///< a (m/s²)
+  /// The centre at time t from now.
+  [[nodiscard]] Eigen::Vector2d at(double t) const { return position + t * velocity + (0.5 * t * t) * acceleration; }
+};
+
+/// The x and y ranges a centre keeps to over a horizon.
+struct Box {
+  double x_low = 0, x_high = 0, y_low = 0, y_high = 0;  ///< m
+  /// Whether `centre` lies within `reach` of the box.
+  [[nodiscard]] bool near(const Eigen::Vector2d& centre, double reach) const {
+    return centre.x() >= x_low - reach && centre.x() <= x_high + reach && centre.y() >= y_low - reach &&
+           centre.y() <= y_high + reach;
+  }
+  /// Whether a point of this box and a point of `other` may lie within `reach` of each other.
+  [[nodiscard]] bool meets(const Box& other, double reach) const {
+    return other.x_low - reach <= x_high && x_low <= other.x_high + reach && other.y_low - reach <= y_high &&
+           y_low <= other.y_high + reach;
+  }
+};
+
+/// The range of x + v t + ½ a t² over t in [0, horizon] (its extremes at the ends and at the vertex; a
+/// point where the centre does not `move`), widened by rounding's share: a millionth of the range and
+/// of `radius`.
+[[nodiscard]] inline std::pair<double, double> coordinate_range(double x, double v, double a, double horizon,
+                                                                bool moves, double radius) {
+  double low = x, high = x;
+  if (moves) {
+    const double end = x + v * horizon + 0.5 * a * horizon * horizon;
+    low = std::min(low, end);
+    high = std::max(high, end);
+    const double vertex = a != 0 ? -v / a : 0;
+    if (vertex > 0 && vertex < horizon) {
+      const double turn = x + v * vertex + 0.5 * a * vertex * vertex;
+      low = std::min(low, turn);
+      high = std::max(high, turn);
+    }
+  }
+  const double slack = 1e-6 * (high - low + radius);
+  return {low - slack, high + slack};
+}
+
+/// The box holding the centre of `path` over [0, horizon] (a point where it does not `move`).
+[[nodiscard]] inline Box path_box(const Path& path, double horizon, bool moves, double radius) {
+  const auto [x_low, x_high] =
+      coordinate_range(path.position.x(), path.velocity.x(), path.acceleration.x(), horizon, moves, radius);
+  const auto [y_low, y_high] =
+      coordinate_range(path.position.y(), path.velocity.y(), path.acceleration.y(), horizon, moves, radius);
+  return {x_low, x_high, y_low, y_high};
+}
+
+/// Bodies overlapping by at most overlap_tolerance of a radius (rounding, after a contact) count as
+/// touching: the polynomial `p` starts at 0, so that bodies that separate and then approach again meet —
+/// from a value just below 0 the polynomial might never reach 0 from above. `scale` is the polynomial's
+/// derivative by the gap at contact (1 for a cushion's, 2D for a circle's of diameter D).
+inline void touching(std::span<double> p, double scale, double radius) {
+  if (p[0] < 0 && p[0] >= -scale * radius * overlap_tolerance) p[0] = 0;
+}
+
+/// Whether a cushion's polynomial `q`, apart now and not convex (c2 ≤ 0: a ball moving off the cushion
+/// as the cloth slows it), stays above its rounding up to the horizon: its least value on [0, horizon]
+/// is at an end. earliest_contact finds the same, after a search for the turning point.
+[[nodiscard]] inline bool stays_apart(const std::array<double, 3>& q, double horizon) {
+  if (!(q[0] > 0 && q[2] <= 0)) return false;
+  const billiards::detail::EventPolynomial<double> p{{q[0], q[1], q[2], 0, 0}, 2};
+  return billiards::detail::evaluate(p, horizon) > billiards::detail::evaluation_error(p, horizon);
+}
+
+/// When a ball of radius R on `path` meets the straight part of `cushion` within `horizon`: the earliest
+/// root of its cushion polynomial where the centre then lies between the nose's ends (beyond them the
+/// jaws take the ball); empty if none.
+[[nodiscard]] inline std::optional<double> cushion_contact(const Path& path, const CushionSegment& cushion, double R,
+                                                           double horizon) {
+  std::array<double, 3> q = cushion_polynomial((path.position - cushion.start).dot(cushion.normal),
+                                               path.velocity.dot(cushion.normal),
+                                               path.acceleration.dot(cushion.normal), R);
+  touching(q, 1, R);
+  if (stays_apart(q, horizon)) return std::nullopt;
+  const std::optional<double> t = earliest_contact(q, horizon);
+  if (!t) return std::nullopt;
+  const Eigen::Vector2d along = cushion.end - cushion.start;
+  const double f = (path.at(*t) - cushion.start).dot(along);
+  if (f >= 0 && f <= along.squaredNorm()) return t;
+  return std::nullopt;
+}
+
+/// When a ball of radius R on `path` meets `jaw` within `horizon` (its centre R + the jaw's radius from
+/// the jaw's axis); empty if never.
+[[nodiscard]] inline std::optional<double> jaw_contact(const Path& path, const Jaw& jaw, double R, double horizon) {
+  const double reach = R + jaw.radius;
+  std::array<double, 5> p = contact_polynomial<double>(path.position - jaw.centre, path.velocity, path.acceleration, reach);
+  touching(p, 2 * reach, R);
+  return earliest_contact(p, horizon);
+}
+
+/// When the centre of a ball on `path` enters `pocket`'s capture circle within `horizon`; empty if never.
+[[nodiscard]] inline std::optional<double> pocket_entry(const Path& path, const Pocket& pocket, double horizon) {
+  const std::array<double, 5> p =
+      contact_polynomial<double>(path.position - pocket.centre, path.velocity, path.acceleration, pocket.radius);
+  return earliest_contact(p, horizon);
+}
+
+/// When two balls of radius R meet within `horizon`, `relative` the second's path less the first's
+/// (their centres two radii apart); empty if never.
+[[nodiscard]] inline std::optional<double> ball_contact(const Path& relative, double R, double horizon) {
+  std::array<double, 5> p = contact_polynomial<double>(relative.position, relative.velocity, relative.acceleration, 2 * R);
+  touching(p, 4 * R, R);
+  return earliest_contact(p, horizon);
+}
+
+}  // namespace billiards::simulation::shot

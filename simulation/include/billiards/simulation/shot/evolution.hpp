@@ -1,0 +1,109 @@
+/// \file
+/// Evolution: a ball's phase on the cloth (sliding, rolling, spinning, at rest), how long it lasts, the
+/// centre's constant horizontal acceleration within it, and the ball's state within and at the end of
+/// it. The closed forms are the runtime's (billiards::evolve, billiards::motion, the derived phase
+/// durations); this header adds what the shot's predictions read of them.
+#pragma once
+
+#include <billiards/cloth.hpp>
+
+#include <Eigen/Core>
+
+#include <limits>
+#include <utility>
+
+namespace billiards::simulation::shot {
+
+/// A ball's phase on the cloth from a state at its start.
+struct Phase {
+  Motion motion = Motion::stationary;                        ///< what the ball does in it
+  double duration = std::numeric_limits<double>::infinity();  ///< its length (s; +∞ at rest)
+  bool moving = false;                                        ///< sliding or rolling: the centre moves
+  Eigen::Vector2d acceleration = Eigen::Vector2d::Zero();     ///< the centre's, constant within it (m/s²)
+};
+
+/// The centre's horizontal acceleration in `phase` from state `s`: −μ_s g û sliding (û the contact's
+/// slip direction), −μ_r g v̂ rolling, 0 otherwise.
+[[nodiscard]] inline Eigen::Vector2d acceleration(const BallOnCloth<double>& s, Motion phase,
+                                                  const Cloth<double>& cloth) {
+  Eigen::Vector2d direction;
+  double size = 0;
+  if (phase == Motion::sliding) {
+    const Eigen::Vector3d u = contact_slip(s);
+    direction = {u.x(), u.y()};
+    size = cloth.sliding_friction * cloth.gravity;
+  } else if (phase == Motion::rolling) {
+    direction = {s.velocity.x(), s.velocity.y()};
+    size = cloth.rolling_friction * cloth.gravity;
+  } else {
+    return Eigen::Vector2d::Zero();
+  }
+  return -size * (direction / billiards::detail::horizontal_length(direction.x(), direction.y()));
+}
+
+/// The phase a ball in state `s` is in: its motion, duration and acceleration (the contact's slip
+/// computed once for all three).
+[[nodiscard]] inline Phase phase_of(const BallOnCloth<double>& s, const Cloth<double>& cloth) {
+  Phase p;
+  const billiards::detail::Slip<double> slip = billiards::detail::slip_of(s);
+  p.motion = billiards::detail::motion_with(s, slip);
+  p.duration = billiards::detail::phase_duration(s, cloth, p.motion, slip);
+  p.moving = p.motion == Motion::sliding || p.motion == Motion::rolling;
+  if (p.motion == Motion::sliding) {
+    const double k = cloth.sliding_friction * cloth.gravity / slip.speed;
+    p.acceleration = {-k * slip.vector.x(), -k * slip.vector.y()};
+  } else if (p.motion == Motion::rolling) {
+    p.acceleration = acceleration(s, p.motion, cloth);
+  }
+  return p;
+}
+
+/// The centre and velocity of a ball `tau` seconds into phase `p` begun in state `s` (within the phase):
+/// x0 + v0 τ + ½ a τ² and v0 + a τ, without the spin or a change of phase (billiards::evolve gives
+/// those), for the many pairs each event predicts.
+[[nodiscard]] inline std::pair<Eigen::Vector2d, Eigen::Vector2d> centre_and_velocity(const BallOnCloth<double>& s,
+                                                                                     const Phase& p, double tau) {
+  const Eigen::Vector2d r(s.position.x(), s.position.y()), v(s.velocity.x(), s.velocity.y());
+  if (!p.moving || !(tau > 0)) return {r, v};
+  return {r + tau * v + (0.5 * tau * tau) * p.acceleration, v + tau * p.acceleration};
+}
+
+/// A state that rounding left a sliver short of the end of `phase`, set to that end exactly: rolling
+/// without slip after sliding, at rest after rolling, without spin about ẑ after spinning.
+[[nodiscard]] inline BallOnCloth<double> finish(const BallOnCloth<double>& s, Motion phase) {
+  BallOnCloth<double> out = s;
+  const Eigen::Vector3d up(0, 0, 1);
+  switch (phase) {
+    case Motion::sliding: {
+      out.velocity = s.velocity - (2.0 / 7.0) * contact_slip(s);
+      out.velocity.z() = 0;
+      const Eigen::Vector3d spin = up.cross(out.velocity) / s.radius;
+      out.angular_velocity.x() = spin.x();
+      out.angular_velocity.y() = spin.y();
+      break;
+    }
+    case Motion::rolling:
+      out.velocity.setZero();
+      out.angular_velocity.x() = out.angular_velocity.y() = 0;
+      break;
+    case Motion::spinning: out.angular_velocity.z() = 0; break;
+    case Motion::stationary: break;
+  }
+  return out;
+}
+
+/// The state at the end of a phase of `duration` begun in state `s`: evolved by its duration, then set
+/// to the next phase exactly (finish) should rounding have left it short.
+[[nodiscard]] inline BallOnCloth<double> end_of_phase(const BallOnCloth<double>& s, Motion phase, double duration,
+                                                      const Cloth<double>& cloth) {
+  BallOnCloth<double> end = evolve(s, cloth, duration);
+  if (motion(end, cloth) == phase) end = finish(end, phase);
+  return end;
+}
+
+/// The kinetic energy of a ball of mass `mass` (J): ½ m v² + ⅕ m R² ω² (a solid sphere).
+[[nodiscard]] inline double kinetic_energy(const BallOnCloth<double>& s, double mass) {
+  return 0.5 * mass * s.velocity.squaredNorm() + 0.2 * mass * s.radius * s.radius * s.angular_velocity.squaredNorm();
+}
+
+}  // namespace billiards::simulation::shot

@@ -1,0 +1,491 @@
+/// \file
+/// A shot on a pool table, played event by event from the cue to rest: no time stepping. Each ball moves
+/// by its phase's closed form on the cloth (billiards::evolve: sliding, rolling, spinning, at rest), with a
+/// constant horizontal acceleration within a phase (evolution.hpp), so that each contact's time is the
+/// earliest root of a derived event polynomial (detection.hpp). Events: the cue strike, ball–ball and
+/// ball–cushion and ball–jaw contacts (resolution.hpp), ball–pocket (the ball leaves play) and each
+/// phase's end. After an event only the balls it changed are predicted again. This class keeps the loop
+/// and the bookkeeping: the balls' reference states, the predictions, the history.
+#pragma once
+
+#include <billiards/simulation/core/errors.hpp>
+#include <billiards/simulation/core/event_queue.hpp>
+#include <billiards/simulation/core/invariants.hpp>
+#include <billiards/simulation/shot/checks.hpp>
+#include <billiards/simulation/shot/detection.hpp>
+#include <billiards/simulation/shot/event.hpp>
+#include <billiards/simulation/shot/evolution.hpp>
+#include <billiards/simulation/shot/history.hpp>
+#include <billiards/simulation/shot/pool_table.hpp>
+#include <billiards/simulation/shot/resolution.hpp>
+
+#include <billiards/cloth.hpp>
+#include <billiards/shot.hpp>
+#include <billiards/spin.hpp>
+
+#include <Eigen/Core>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <tuple>
+#include <utility>
+#include <vector>
+
+namespace billiards::simulation {
+
+namespace detail {
+
+/// A body a shot's prediction leaves out at t = 0: the one of a contact that changed nothing (its bodies no
+/// longer approached), which the same rounding would otherwise report again at once.
+struct ExcludedContact {
+  ShotEvent::Kind kind = ShotEvent::Kind::strike;  ///< the body's kind (strike: none)
+  std::size_t index = 0;                           ///< the body's index
+  /// Whether a contact with body `other` of kind `k` at `t` from now is the one left out.
+  [[nodiscard]] bool operator()(ShotEvent::Kind k, std::size_t other, double t) const {
+    return t == 0 && k == kind && other == index;
+  }
+};
+
+/// A ball as a shot keeps it: its reference state and phase, and what its predictions covered.
+struct ShotBall {
+  BallOnCloth<double> state;  ///< at time `since`
+  double since = 0;           ///< the reference time (s)
+  shot::Phase phase;          ///< of `state`
+  double reach_end = std::numeric_limits<double>::infinity();  ///< its predictions' end (absolute time)
+  shot::Box box;          ///< the range of its centre from its last prediction to reach_end
+  bool pocketed = false;  ///< out of play
+  std::uint64_t version = 0;  ///< how often it changed: a prediction of an older version is stale
+};
+
+/// A predicted event of a shot, stale where a ball's version has moved on since.
+struct ShotPrediction {
+  double time;                          ///< absolute (s)
+  ShotEvent::Kind kind;                 ///< what would happen
+  std::size_t ball, other;              ///< the ball and the other body
+  std::uint64_t version, other_version;  ///< the ball's (and the other ball's) version when predicted
+  /// The earliest first; at the same time by kind, then by balls: a deterministic order.
+  bool operator>(const ShotPrediction& o) const {
+    return std::tie(time, kind, ball, other) > std::tie(o.time, o.kind, o.ball, o.other);
+  }
+};
+
+}  // namespace detail
+
+/// A shot: the table, the physics and the balls; strike() with the cue, then play() until every ball is at
+/// rest or pocketed, or step(), run_events() and run_until() in the engines' common vocabulary.
+///
+/// Events at the same time are resolved in a fixed order: by time, then kind (ShotEvent::Kind's order),
+/// then the ball's index, then the other's, so that the same shot gives the same events bit for bit. A
+/// ball touching two balls or two cushions at once meets them one after the other in that order, each
+/// contact resolved with the state the previous one left; a contact whose bodies no longer approach
+/// changes nothing and is not recorded.
+///
+/// Contacts follow the runtime's laws (resolution.hpp). Bodies that the cloth's friction presses
+/// together — a sliding ball curving into a cushion or into a ball it grazes, a ball with draw pushing one
+/// in front — would meet again and again, ever faster (inelastic collapse): a contact that leaves such
+/// bodies separating slower than pressing_speed leaves them separating at pressing_speed instead, the
+/// energy taken from their relative motion along the contact plane and then from their spins, so that no
+/// energy is added. The bodies then part by a few micrometres at most before the cloth brings them back:
+/// sustained contact as a short train of contacts.
+class Shot {
+ public:
+  /// The kinetic energy may grow at an event by at most this fraction of the largest total the shot has
+  /// had (rounding of the contact laws, which conserve or dissipate it exactly).
+  static constexpr double energy_tolerance = 1e-12;
+  /// The speed (m/s) at which bodies the cloth presses together leave a contact at the least: the
+  /// energy is taken from their relative velocity along the contact plane, then from their spins (see
+  /// the class's description).
+  static constexpr double pressing_speed = 1e-3;
+
+  /// Validates the physics (billiards::invalid_argument naming the field, shot::validate) and the balls
+  /// (std::invalid_argument naming the ball: a state not finite, a velocity not horizontal, a centre not
+  /// on the cloth at least a radius inside every cushion's nose, two balls overlapping). A ball's
+  /// position.z is set to the radius.
+  Shot(PoolTable table, PoolPhysics physics, std::vector<PoolBall> balls, ShotOptions options = {})
+      : table_(std::move(table)),
+        physics_(std::move(physics)),
+        options_(options),
+        cushions_(table_.cushions()),
+        jaws_(table_.jaws()) {
+    shot::validate(table_, physics_);
+    shot::validate(balls, table_, physics_.radius);
+    pockets_ = shot::capture_circles(table_, physics_.radius);
+    for (const PoolBall& b : balls) {
+      Entry e;
+      e.state = {{b.position.x(), b.position.y(), physics_.radius}, b.velocity, b.angular_velocity, physics_.radius};
+      e.pocketed = b.pocketed;
+      if (e.pocketed) {
+        e.state.velocity.setZero();
+        e.state.angular_velocity.setZero();
+      }
+      balls_.push_back(e);
+    }
+    for (std::size_t i = 0; i < balls_.size(); ++i) {
+      begin_phase(i);
+      keyframe(i);
+    }
+    // Every ball's own events first (its path's box), then each pair once.
+    for (std::size_t i = 0; i < balls_.size(); ++i) predict(i, balls_.size());
+    for (std::size_t i = 0; i < balls_.size(); ++i) {
+      if (!balls_[i].pocketed) predict_pairs(i, i + 1, balls_.size(), {});
+    }
+    energy_scale_ = last_energy_ = energy();
+  }
+
+  /// Strikes ball `index` with `cue` now (billiards::checked::strike: the tip's offsets and restitution;
+  /// an elevated cue's vertical velocity is dropped, the ball stays on the cloth); the strike is an event
+  /// of the shot. Throws std::invalid_argument for an index that is not a ball in play,
+  /// billiards::invalid_argument for a bad cue.
+  void strike(std::size_t index, const Cue<double>& cue) {
+    if (index >= balls_.size() || balls_[index].pocketed)
+      throw std::invalid_argument("strike: ball " + std::to_string(index) + " is not a ball in play (there are " +
+                                  std::to_string(balls_.size()) + " balls)");
+    const BallOnCloth<double> now = at(index, now_);
+    const SpinningBall<double> struck = checked::strike(shot::spinning(now, physics_.mass), cue);
+    settle(index);
+    Entry& e = balls_[index];
+    const Motion from = motion(e.state, physics_.cloth);
+    shot::take(e.state, struck);
+    changed(index, balls_.size());
+    record(ShotEvent::Kind::strike, index, index, from);
+    last_energy_ = energy();
+    energy_scale_ = std::max(energy_scale_, last_energy_);
+  }
+
+  /// Runs the next event and returns it; empty when every ball is at rest or pocketed. Throws
+  /// EventLimitReached when the shot would take more than ShotOptions::event_limit events, and
+  /// BrokenInvariant where an invariant checked (ShotOptions::check_invariants) fails: two balls, or a
+  /// ball and a cushion or jaw, overlapping by more than overlap_tolerance of a radius; a ball that is
+  /// neither on the cloth (inside the noses, or in a pocket's mouth) nor pocketed; the kinetic energy
+  /// growing at an event.
+  std::optional<ShotEvent> step() {
+    if (!advance(std::numeric_limits<double>::infinity())) return std::nullopt;
+    return events_.back();
+  }
+
+  /// Runs at most `count` events, calling `on_event(const ShotEvent&)` after each, and returns how many
+  /// ran: fewer than `count` only when every ball is at rest or pocketed. Throws as step() does.
+  template <typename OnEvent>
+  std::uint64_t run_events(std::uint64_t count, OnEvent&& on_event) {
+    std::uint64_t done = 0;
+    for (; done < count && advance(std::numeric_limits<double>::infinity()); ++done) on_event(events_.back());
+    return done;
+  }
+  /// Runs at most `count` events; see the overload with a callback.
+  std::uint64_t run_events(std::uint64_t count) {
+    return run_events(count, [](const ShotEvent&) {});
+  }
+
+  /// Runs every event up to the shot's time `until` (seconds), calling `on_event(const ShotEvent&)` after
+  /// each, and makes `until` the time now (balls() then gives the balls there); returns how many events
+  /// ran. Throws std::invalid_argument when `until` is NaN, infinite or earlier than time(), and as
+  /// step() does.
+  template <typename OnEvent>
+  std::uint64_t run_until(double until, OnEvent&& on_event) {
+    if (!(until >= now_) || !std::isfinite(until))
+      throw std::invalid_argument("billiards::simulation::Shot::run_until: until is " + detail::shortest(until) +
+                                  ", expected a finite time at or after " + detail::shortest(now_) +
+                                  " s (the shot's time now)");
+    std::uint64_t done = 0;
+    for (; advance(until); ++done) on_event(events_.back());
+    now_ = until;
+    return done;
+  }
+  /// Runs every event up to the shot's time `until`; see the overload with a callback.
+  std::uint64_t run_until(double until) {
+    return run_until(until, [](const ShotEvent&) {});
+  }
+
+  /// Plays every event until every ball is at rest or pocketed, calling `on_event(const ShotEvent&)`
+  /// after each; returns how many ran. Throws as step() does.
+  template <typename OnEvent>
+  std::uint64_t play(OnEvent&& on_event) {
+    return run_events(std::numeric_limits<std::uint64_t>::max(), on_event);
+  }
+  /// Plays every event until every ball is at rest or pocketed; see the overload with a callback.
+  std::uint64_t play() {
+    return play([](const ShotEvent&) {});
+  }
+
+  /// Every event so far, in order.
+  [[nodiscard]] const std::vector<ShotEvent>& events() const noexcept { return events_; }
+  /// How many events so far (the strike included).
+  [[nodiscard]] std::uint64_t event_count() const noexcept { return events_.size(); }
+  /// The shot's time now (s): the last event's, or the time run_until() stopped at.
+  [[nodiscard]] double time() const noexcept { return now_; }
+  /// The balls now (at time()).
+  [[nodiscard]] std::vector<PoolBall> balls() const { return balls_at(now_); }
+  /// The balls at any time `t` ≥ 0 of the shot so far, and on beyond its last event (each ball moved by
+  /// its phases from its last event at or before `t`): the trajectories, sampled at any rate. At the time
+  /// of an event, the states after it.
+  [[nodiscard]] std::vector<PoolBall> balls_at(double t) const { return history_.at(t, physics_.cloth); }
+  /// The table.
+  [[nodiscard]] const PoolTable& table() const noexcept { return table_; }
+  /// The physics.
+  [[nodiscard]] const PoolPhysics& physics() const noexcept { return physics_; }
+  /// The pockets' capture circles as the shot uses them (shot::capture_circles).
+  [[nodiscard]] const std::vector<Pocket>& pockets() const noexcept { return pockets_; }
+  /// The total kinetic energy (translation and rotation) of the balls in play now (J).
+  [[nodiscard]] double energy() const { return energy_at(now_); }
+
+ private:
+  using Entry = detail::ShotBall;
+  using Predicted = detail::ShotPrediction;
+
+  // Resolves the predictions due up to `until` until one is recorded as an event; false when none is
+  // left before `until`.
+  bool advance(double until) {
+    while (!queue_.empty()) {
+      if (!current(queue_.top())) {
+        queue_.pop();
+        continue;
+      }
+      if (queue_.top().time > until) return false;
+      if (events_.size() >= options_.event_limit)
+        throw EventLimitReached("billiards::simulation::Shot: the shot took more than " +
+                                std::to_string(options_.event_limit) + " events (ShotOptions::event_limit) at t = " +
+                                detail::shortest(now_) + " s without coming to rest");
+      const std::size_t before = events_.size();
+      resolve(queue_.pop());
+      if (events_.size() > before) return true;
+    }
+    return false;
+  }
+
+  // Ball i at time t ≥ its reference time (within its phase, or beyond it by evolve's own phases).
+  [[nodiscard]] BallOnCloth<double> at(std::size_t i, double t) const {
+    const Entry& e = balls_[i];
+    if (e.pocketed || !(t > e.since)) return e.state;
+    return evolve(e.state, physics_.cloth, t - e.since);
+  }
+  [[nodiscard]] double energy_at(double t) const {
+    double sum = 0;
+    for (std::size_t i = 0; i < balls_.size(); ++i) {
+      if (!balls_[i].pocketed) sum += shot::kinetic_energy(at(i, std::max(t, balls_[i].since)), physics_.mass);
+    }
+    return sum;
+  }
+
+  // The phase of ball i's reference state.
+  void begin_phase(std::size_t i) {
+    Entry& e = balls_[i];
+    e.phase = e.pocketed ? shot::Phase{} : shot::phase_of(e.state, physics_.cloth);
+  }
+  // Ball i's state now becomes its reference state.
+  void settle(std::size_t i) {
+    Entry& e = balls_[i];
+    if (e.pocketed) return;
+    e.state = at(i, now_);
+    e.since = now_;
+  }
+  void keyframe(std::size_t i) { history_.add(i, now_, balls_[i].state, balls_[i].pocketed); }
+
+  [[nodiscard]] bool current(const Predicted& p) const {
+    if (balls_[p.ball].version != p.version || balls_[p.ball].pocketed) return false;
+    if (p.kind == ShotEvent::Kind::ball) return balls_[p.other].version == p.other_version && !balls_[p.other].pocketed;
+    return true;
+  }
+  void push(double t, ShotEvent::Kind kind, std::size_t i, std::size_t other) {
+    const std::uint64_t other_version = kind == ShotEvent::Kind::ball ? balls_[other].version : 0;
+    queue_.push({t, kind, i, other, balls_[i].version, other_version});
+  }
+
+  // The time left in ball j's phase from now, finite (the largest double for a phase without end).
+  [[nodiscard]] double remaining(std::size_t j) const {
+    const Entry& e = balls_[j];
+    const double left = e.phase.duration - (now_ - e.since);
+    return std::isfinite(left) ? std::max(left, 0.0) : std::numeric_limits<double>::max();
+  }
+
+  // Ball i's next events from now (its reference time): its phase's end, the cushions, jaws and pockets,
+  // and the balls from index `first_other` on (all of them but i and `skip` after an event; those above i
+  // at the start, so that each pair is predicted once). A ball's events after its first contact with a
+  // cushion, jaw or pocket are not looked for: it changes there and is predicted again. Its path until
+  // then (`reach_end`) is bounded by a box, and a ball, jaw or pocket out of the box's reach is passed
+  // over without solving for its contact.
+  void predict(std::size_t i, std::size_t first_other, std::size_t skip = std::numeric_limits<std::size_t>::max(),
+               detail::ExcludedContact excluded = {}) {
+    Entry& e = balls_[i];
+    if (e.pocketed) return;
+    if (std::isfinite(e.phase.duration)) push(now_ + e.phase.duration, ShotEvent::Kind::transition, i, i);
+    double horizon = remaining(i);
+    const double R = physics_.radius;
+    const shot::Path me{{e.state.position.x(), e.state.position.y()},
+                        {e.state.velocity.x(), e.state.velocity.y()},
+                        e.phase.acceleration};
+    const auto found = [&](std::optional<double> t, ShotEvent::Kind kind, std::size_t k) {
+      if (!t || excluded(kind, k, *t)) return;
+      push(now_ + *t, kind, i, k);
+      horizon = std::min(horizon, *t);
+    };
+    if (e.phase.moving) {
+      for (std::size_t k = 0; k < cushions_.size(); ++k)
+        found(shot::cushion_contact(me, cushions_[k], R, horizon), ShotEvent::Kind::cushion, k);
+      e.box = shot::path_box(me, horizon, true, R);
+      for (std::size_t k = 0; k < jaws_.size(); ++k) {
+        if (e.box.near(jaws_[k].centre, R + jaws_[k].radius))
+          found(shot::jaw_contact(me, jaws_[k], R, horizon), ShotEvent::Kind::jaw, k);
+      }
+      for (std::size_t k = 0; k < pockets_.size(); ++k) {
+        if (e.box.near(pockets_[k].centre, pockets_[k].radius))
+          found(shot::pocket_entry(me, pockets_[k], horizon), ShotEvent::Kind::pocket, k);
+      }
+    }
+    e.box = shot::path_box(me, horizon, e.phase.moving, R);
+    e.reach_end = e.phase.moving ? now_ + horizon : std::numeric_limits<double>::infinity();
+    predict_pairs(i, first_other, skip, excluded);
+  }
+
+  // Ball i's contacts with the balls from `first_other` on but `skip`, until the earlier of the two's
+  // reach_end (see predict).
+  void predict_pairs(std::size_t i, std::size_t first_other, std::size_t skip, detail::ExcludedContact excluded) {
+    const Entry& e = balls_[i];
+    const double R = physics_.radius;
+    const Eigen::Vector2d r(e.state.position.x(), e.state.position.y()), v(e.state.velocity.x(), e.state.velocity.y());
+    for (std::size_t j = first_other; j < balls_.size(); ++j) {
+      const Entry& o = balls_[j];
+      if (j == i || j == skip || o.pocketed || (!e.phase.moving && !o.phase.moving)) continue;
+      const double end = std::min(e.reach_end, o.reach_end);
+      if (!(end >= now_)) continue;  // the other's box ends before now: it changes at once
+      if (!e.box.meets(o.box, 2 * R)) continue;
+      const auto [position, velocity] = shot::centre_and_velocity(o.state, o.phase, now_ - o.since);
+      const shot::Path relative{position - r, velocity - v, o.phase.acceleration - e.phase.acceleration};
+      const double pair_horizon = std::isfinite(end) ? end - now_ : std::numeric_limits<double>::max();
+      const std::optional<double> t = shot::ball_contact(relative, R, pair_horizon);
+      if (t && !excluded(ShotEvent::Kind::ball, j, *t)) push(now_ + *t, ShotEvent::Kind::ball, i, j);
+    }
+  }
+
+  // Ball i changed now: its old predictions are stale; its phase begins again and it is predicted against
+  // everything but `skip` (the other ball of a ball–ball event, predicted with it already).
+  void changed(std::size_t i, std::size_t skip, detail::ExcludedContact excluded = {}) {
+    ++balls_[i].version;
+    begin_phase(i);
+    keyframe(i);
+    predict(i, 0, skip, excluded);
+  }
+
+  void record(ShotEvent::Kind kind, std::size_t i, std::size_t other, Motion from) {
+    ShotEvent event;
+    event.time = now_;
+    event.kind = kind;
+    event.first = i;
+    event.second = other;
+    event.from = from;
+    event.to = balls_[i].phase.motion;
+    event.first_after = shot::as_pool_ball(balls_[i].state, balls_[i].pocketed);
+    event.second_after = kind == ShotEvent::Kind::ball ? shot::as_pool_ball(balls_[other].state, false) : event.first_after;
+    events_.push_back(event);
+  }
+
+  void resolve(const Predicted& p) {
+    const double energy_before_event = options_.check_invariants ? energy_at(p.time) : 0;
+    now_ = p.time;
+    const std::size_t i = p.ball;
+    Entry& e = balls_[i];
+    const Motion from = e.phase.motion;
+    std::size_t skip = balls_.size();
+    switch (p.kind) {
+      case ShotEvent::Kind::transition:
+        // Evolved by the phase's predicted duration from its start (now − since may round a sliver short).
+        e.state = shot::end_of_phase(e.state, from, e.phase.duration, physics_.cloth);
+        e.since = now_;
+        break;
+      case ShotEvent::Kind::ball: {
+        const BallOnCloth<double> a = at(i, now_), b = at(p.other, now_);
+        const auto after = shot::ball_ball(a, b, physics_);
+        settle(i);
+        settle(p.other);
+        if (!after) {
+          // No longer approaching (rounding at a graze): nothing changes, but the two are predicted again
+          // from here, with each other only after now.
+          changed(i, balls_.size(), {ShotEvent::Kind::ball, p.other});
+          changed(p.other, i);
+          return;
+        }
+        shot::take(e.state, after->first);
+        shot::take(balls_[p.other].state, after->second);
+        Eigen::Vector3d n = b.position - a.position;
+        n.z() = 0;
+        n /= n.norm();
+        shot::separate_pressed_pair(e.state, balls_[p.other].state, n, physics_.cloth, pressing_speed);
+        skip = p.other;
+        break;
+      }
+      case ShotEvent::Kind::cushion:
+      case ShotEvent::Kind::jaw: {
+        const BallOnCloth<double> a = at(i, now_);
+        const Eigen::Vector3d n = p.kind == ShotEvent::Kind::cushion ? shot::towards(cushions_[p.other])
+                                                                      : shot::towards(jaws_[p.other], a.position);
+        const std::optional<SpinningBall<double>> after = shot::ball_cushion(a, n, table_, physics_);
+        settle(i);
+        if (!after) {
+          changed(i, balls_.size(), {p.kind, p.other});
+          return;
+        }
+        shot::take(e.state, *after);
+        shot::separate_pressed_ball(e.state, n, physics_.cloth, pressing_speed);
+        break;
+      }
+      case ShotEvent::Kind::pocket:
+        settle(i);
+        e.pocketed = true;
+        e.state.velocity.setZero();
+        e.state.angular_velocity.setZero();
+        break;
+      case ShotEvent::Kind::strike: break;
+    }
+    changed(i, skip);
+    if (p.kind == ShotEvent::Kind::ball) changed(p.other, balls_.size());
+    record(p.kind, i, p.other, from);
+    if (options_.check_invariants) check(energy_before_event);
+  }
+
+  // The invariants after an event (every ball, every pair): see step().
+  void check(double energy_before_event) {
+    const auto fail = [&](std::size_t i, const std::string& what) {
+      throw BrokenInvariant("billiards::simulation::Shot: at t = " + detail::shortest(now_) + " s (event " +
+                            std::to_string(events_.size()) + ", " + kind_name(events_.back().kind) + "), ball " +
+                            std::to_string(i) + " " + what);
+    };
+    std::vector<Eigen::Vector2d> centres(balls_.size());
+    std::vector<bool> in_play(balls_.size());
+    for (std::size_t i = 0; i < balls_.size(); ++i) {
+      const Eigen::Vector3d r = at(i, now_).position;
+      centres[i] = {r.x(), r.y()};
+      in_play[i] = !balls_[i].pocketed;
+    }
+    if (const auto broken = shot::broken_invariant(table_, cushions_, jaws_, pockets_, centres, in_play, physics_.radius))
+      fail(broken->first, broken->second);
+    const double after = energy();
+    const double allowed = energy_tolerance * energy_scale_;
+    if (!(energy_before_event <= last_energy_ + allowed))
+      fail(events_.back().first, "gained kinetic energy between events: " + detail::shortest(last_energy_) +
+                                     " J to " + detail::shortest(energy_before_event) + " J");
+    if (!(after <= energy_before_event + allowed))
+      fail(events_.back().first, "gained kinetic energy at the event: " + detail::shortest(energy_before_event) +
+                                     " J to " + detail::shortest(after) + " J");
+    last_energy_ = after;
+  }
+
+  PoolTable table_;
+  PoolPhysics physics_;
+  ShotOptions options_;
+  std::vector<CushionSegment> cushions_;
+  std::vector<Jaw> jaws_;
+  std::vector<Pocket> pockets_;
+  std::vector<Entry> balls_;
+  shot::History history_;
+  std::vector<ShotEvent> events_;
+  detail::EventHeap<Predicted> queue_;
+  double now_ = 0;
+  double energy_scale_ = 0;
+  double last_energy_ = 0;
+};
+
+}  // namespace billiards::simulation

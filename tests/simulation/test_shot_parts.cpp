@@ -1,0 +1,242 @@
+// The shot engine's parts on their own — detection (shot/detection.hpp), evolution (shot/evolution.hpp),
+// resolution (shot/resolution.hpp), checks (shot/checks.hpp) and history (shot/history.hpp) — each
+// against answers worked by hand from the motion (uniform acceleration, the rolling condition, the
+// conservation of momentum and energy), never captured from the code.
+#include <billiards/simulation/shot.hpp>
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <optional>
+#include <stdexcept>
+#include <vector>
+
+using namespace billiards::simulation;
+using billiards::BallOnCloth;
+using billiards::Motion;
+
+namespace {
+
+constexpr double R = 0.028575;
+
+BallOnCloth<double> ball(Eigen::Vector3d velocity, Eigen::Vector3d spin, Eigen::Vector3d position = {1, 0.5, R}) {
+  return {position, velocity, spin, R};
+}
+
+}  // namespace
+
+TEST_CASE("Detection: the next contact of a path, worked by hand", "[simulation][shot][detection]") {
+  SECTION("two balls closing at 2 m/s from 1 m apart touch when their centres are 2R apart") {
+    const shot::Path relative{{1, 0}, {-2, 0}, {0, 0}};
+    const std::optional<double> t = shot::ball_contact(relative, R, 10);
+    REQUIRE(t);
+    CHECK(*t == Approx((1 - 2 * R) / 2).epsilon(1e-14));
+    CHECK_FALSE(shot::ball_contact(relative, R, 0.4));  // beyond the horizon
+    CHECK_FALSE(shot::ball_contact({{1, 0}, {2, 0}, {0, 0}}, R, 10));  // moving apart
+  }
+  SECTION("a ball slowing towards a cushion meets it where r − v t + ½ a t² = R") {
+    const CushionSegment left{{0, 0}, {0, 1}, {1, 0}};  // the line x = 0, its normal into the table
+    const shot::Path path{{1, 0.5}, {-2, 0}, {0.5, 0}};
+    const std::optional<double> t = shot::cushion_contact(path, left, R, 10);
+    REQUIRE(t);
+    // 0.25 t² − 2 t + (1 − R) = 0, the earlier root.
+    CHECK(*t == Approx((2 - std::sqrt(4 - (1 - R))) / 0.5).epsilon(1e-13));
+    // The same motion beyond the segment's end (y = 5): the jaws, not the straight part, take the ball.
+    CHECK_FALSE(shot::cushion_contact({{1, 5}, {-2, 0}, {0.5, 0}}, left, R, 10));
+    // Too slow to get there: 1 − R at 2 m/s with a deceleration of 3 m/s² stops after 2/3 m.
+    CHECK_FALSE(shot::cushion_contact({{1, 0.5}, {-2, 0}, {3, 0}}, left, R, 10));
+  }
+  SECTION("a centre enters a pocket's circle, and a ball meets a jaw, at the reach's distance") {
+    const Pocket pocket{{0, 0}, 0.05};
+    const std::optional<double> in = shot::pocket_entry({{1, 0}, {-1, 0}, {0, 0}}, pocket, 10);
+    REQUIRE(in);
+    CHECK(*in == Approx(0.95).epsilon(1e-14));
+    const Jaw jaw{{0, 0}, 0.01};
+    const std::optional<double> hit = shot::jaw_contact({{1, 0}, {-2, 0}, {0, 0}}, jaw, R, 10);
+    REQUIRE(hit);
+    CHECK(*hit == Approx((1 - R - 0.01) / 2).epsilon(1e-14));
+  }
+  SECTION("a path's box holds its turning point and rules far bodies out") {
+    // x(t) = t − t²/2 over [0, 2]: out to 0.5 at t = 1 and back to 0.
+    const shot::Path path{{0, 0}, {1, 0}, {-1, 0}};
+    const shot::Box box = shot::path_box(path, 2, true, R);
+    CHECK(box.x_low <= 0);
+    CHECK(box.x_high >= 0.5);
+    CHECK(box.x_high - 0.5 <= 1e-6 * (0.5 + R) * 1.0000001);
+    CHECK(box.y_low <= 0);
+    CHECK(box.y_high >= 0);
+    CHECK(box.near({0.55, 0}, 0.06));
+    CHECK_FALSE(box.near({0.7, 0}, 0.06));
+    const shot::Box near = shot::path_box({{0.5 + 1.9 * R, 0}, {0, 0}, {0, 0}}, 2, false, R);
+    CHECK(box.meets(near, 2 * R));
+    CHECK_FALSE(box.meets(shot::path_box({{0.6 + 2 * R + 0.01, 0}, {0, 0}, {0, 0}}, 2, false, R), 2 * R));
+  }
+  SECTION("bodies overlapping within the tolerance count as touching; deeper ones do not") {
+    std::vector<double> p = {-0.5 * R * overlap_tolerance, 1, 1};
+    shot::touching(p, 1, R);
+    CHECK(p[0] == 0);
+    p[0] = -2 * R * overlap_tolerance;
+    shot::touching(p, 1, R);
+    CHECK(p[0] == -2 * R * overlap_tolerance);
+  }
+  SECTION("a cushion's polynomial moving off stays apart only while it stays positive") {
+    const std::array<double, 3> q = {1, -0.1, -0.01};  // 1 − 0.1 t − 0.01 t²: 0.89 at t = 1, < 0 at t = 10
+    CHECK(shot::stays_apart(q, 1));
+    CHECK_FALSE(shot::stays_apart(q, 10));
+  }
+}
+
+TEST_CASE("Evolution: a ball's phase, its duration and acceleration, worked by hand", "[simulation][shot][evolution]") {
+  const billiards::Cloth<double> cloth{0.2, 0.01, 0.0127, 9.81};
+  SECTION("a ball struck without spin slides for 2|u|/(7 μs g), slowing at μs g, then rolls at 5/7 of v") {
+    const BallOnCloth<double> s = ball({1, 0, 0}, {0, 0, 0});
+    const shot::Phase p = shot::phase_of(s, cloth);
+    CHECK(p.motion == Motion::sliding);
+    CHECK(p.moving);
+    CHECK(p.duration == Approx(2.0 / (7 * 0.2 * 9.81)).epsilon(1e-14));
+    CHECK(p.acceleration.x() == Approx(-0.2 * 9.81).epsilon(1e-14));
+    CHECK(p.acceleration.y() == 0);
+    const auto [r, v] = shot::centre_and_velocity(s, p, 0.1);
+    CHECK(r.x() == Approx(1 + 0.1 - 0.5 * 0.2 * 9.81 * 0.01).epsilon(1e-14));
+    CHECK(v.x() == Approx(1 - 0.2 * 9.81 * 0.1).epsilon(1e-14));
+    const BallOnCloth<double> end = shot::end_of_phase(s, p.motion, p.duration, cloth);
+    CHECK(billiards::motion(end, cloth) == Motion::rolling);
+    CHECK(end.velocity.x() == Approx(5.0 / 7).epsilon(1e-13));
+    CHECK(shot::finish(s, Motion::sliding).velocity.x() == Approx(5.0 / 7).epsilon(1e-15));
+  }
+  SECTION("a rolling ball slows at μr g and stops after v/(μr g)") {
+    const BallOnCloth<double> s = ball({0.5, 0, 0}, {0, 0.5 / R, 0});  // ω = ẑ × v / R: no slip
+    const shot::Phase p = shot::phase_of(s, cloth);
+    CHECK(p.motion == Motion::rolling);
+    CHECK(p.duration == Approx(0.5 / (0.01 * 9.81)).epsilon(1e-13));
+    CHECK(p.acceleration.x() == Approx(-0.01 * 9.81).epsilon(1e-14));
+    const BallOnCloth<double> stopped = shot::finish(s, Motion::rolling);
+    CHECK(stopped.velocity.isZero(0));
+  }
+  SECTION("a ball at rest has no end to its phase and does not move") {
+    const shot::Phase p = shot::phase_of(ball({0, 0, 0}, {0, 0, 0}), cloth);
+    CHECK(p.motion == Motion::stationary);
+    CHECK_FALSE(p.moving);
+    CHECK(std::isinf(p.duration));
+    CHECK(p.acceleration.isZero(0));
+  }
+  SECTION("the kinetic energy of a solid sphere: ½ m v² + ⅕ m R² ω²") {
+    CHECK(shot::kinetic_energy(ball({3, 4, 0}, {0, 0, 10}), 0.17) ==
+          Approx(0.5 * 0.17 * 25 + 0.2 * 0.17 * R * R * 100).epsilon(1e-15));
+  }
+}
+
+TEST_CASE("Resolution: the contact laws and the pressed contacts, worked by hand", "[simulation][shot][resolution]") {
+  PoolPhysics physics;
+  physics.radius = R;
+  physics.ball_restitution = 1;
+  physics.ball_friction = 0;
+  SECTION("equal balls head on, elastic and frictionless, exchange their velocities") {
+    const BallOnCloth<double> a = ball({1, 0, 0}, {0, 0, 0}, {1, 0.5, R});
+    const BallOnCloth<double> b = ball({0, 0, 0}, {0, 0, 0}, {1 + 2 * R, 0.5, R});
+    const auto after = shot::ball_ball(a, b, physics);
+    REQUIRE(after);
+    CHECK(after->first.velocity.norm() <= 1e-15);
+    CHECK(after->second.velocity.x() == Approx(1).epsilon(1e-15));
+    // Moving apart: nothing changes.
+    CHECK_FALSE(shot::ball_ball(ball({-1, 0, 0}, {0, 0, 0}, a.position), b, physics));
+  }
+  SECTION("a ball meets a cushion whose nose is at its centre's height: reflected, on the cloth") {
+    PoolTable table = pool_table("9ft");
+    table.nose_height = R;
+    physics.cushion_restitution = 1;
+    physics.cushion_friction = 0;
+    const CushionSegment left{{0, 0}, {0, 1}, {1, 0}};
+    CHECK(shot::towards(left) == Eigen::Vector3d(-1, 0, 0));
+    BallOnCloth<double> a = ball({-1, 0.25, 0}, {0, 0, 0}, {R, 0.5, R});
+    const auto after = shot::ball_cushion(a, shot::towards(left), table, physics);
+    REQUIRE(after);
+    shot::take(a, *after);
+    CHECK(a.velocity.x() == Approx(1).epsilon(1e-15));
+    CHECK(a.velocity.y() == Approx(0.25).epsilon(1e-15));
+    CHECK(a.velocity.z() == 0);
+    CHECK_FALSE(shot::ball_cushion(ball({1, 0, 0}, {0, 0, 0}, {R, 0.5, R}), shot::towards(left), table, physics));
+    const Jaw jaw{{0, 0.5}, 0.01};
+    CHECK((shot::towards(jaw, {0.1, 0.5, R}) - Eigen::Vector3d(-1, 0, 0)).norm() <= 1e-16);
+  }
+  SECTION("separation: the speed raised from the motion along the plane, then the spins, energy kept") {
+    const shot::Separation s = shot::separation(0, 4e-6, 0, 1e-3);
+    CHECK(s.normal == Approx(1e-3).epsilon(1e-15));
+    CHECK(s.tangential_factor == Approx(std::sqrt(0.75)).epsilon(1e-15));
+    CHECK(s.spin_factor == 1);
+    // Not enough to pay for it: everything spent, the separation below the speed.
+    const shot::Separation poor = shot::separation(0, 1e-7, 1e-7, 1e-3);
+    CHECK(poor.normal == Approx(std::sqrt(2e-7)).epsilon(1e-14));
+    CHECK(poor.tangential_factor == 0);
+    CHECK(poor.spin_factor == 0);
+  }
+  SECTION("a pressed pair leaves at the pressing speed, momentum and energy kept") {
+    const billiards::Cloth<double> cloth{0.2, 0.01, 0.0127, 9.81};
+    const double m = 0.17;
+    // a at rest; b touching it along +x, at rest but spinning so that its contact slips along +x: the
+    // cloth pushes b back into a.
+    BallOnCloth<double> a = ball({0, 0, 0}, {0, 0, 0}, {1, 0.5, R});
+    BallOnCloth<double> b = ball({0, 0, 0}, {0, -0.01 / R, 0}, {1 + 2 * R, 0.5, R});
+    REQUIRE(shot::acceleration(b, billiards::motion(b, cloth), cloth).x() < 0);
+    const double before = shot::kinetic_energy(a, m) + shot::kinetic_energy(b, m);
+    CHECK(shot::separate_pressed_pair(a, b, {1, 0, 0}, cloth, 1e-3));
+    CHECK((b.velocity - a.velocity).x() == Approx(1e-3).epsilon(1e-14));
+    CHECK((a.velocity + b.velocity).norm() <= 1e-18);
+    CHECK(shot::kinetic_energy(a, m) + shot::kinetic_energy(b, m) == Approx(before).epsilon(1e-14));
+    // Not pressed (nothing pushes them together): left alone.
+    BallOnCloth<double> c = ball({0, 0, 0}, {0, 0, 0}, {1, 0.5, R});
+    BallOnCloth<double> d = ball({0, 0, 0}, {0, 0, 0}, {1 + 2 * R, 0.5, R});
+    CHECK_FALSE(shot::separate_pressed_pair(c, d, {1, 0, 0}, cloth, 1e-3));
+    CHECK(d.velocity.isZero(0));
+  }
+  SECTION("a ball pressed into a cushion leaves it at the pressing speed, energy kept") {
+    const billiards::Cloth<double> cloth{0.2, 0.01, 0.0127, 9.81};
+    const double m = 0.17;
+    // At the left cushion, spinning so that its contact slips along −x: the cloth pushes it into it.
+    BallOnCloth<double> a = ball({0, 0.002, 0}, {0, -0.01 / R, 0}, {R, 0.5, R});
+    REQUIRE(shot::acceleration(a, billiards::motion(a, cloth), cloth).x() < 0);
+    const double before = shot::kinetic_energy(a, m);
+    CHECK(shot::separate_pressed_ball(a, {-1, 0, 0}, cloth, 1e-3));
+    CHECK(a.velocity.x() == Approx(1e-3).epsilon(1e-14));
+    CHECK(shot::kinetic_energy(a, m) == Approx(before).epsilon(1e-14));
+  }
+}
+
+TEST_CASE("Checks: bad physics and balls named, capture circles closing the mouths, invariants",
+          "[simulation][shot][checks]") {
+  const PoolTable table = pool_table("9ft");
+  PoolPhysics physics;
+  physics.cushion_restitution = 1.5;
+  CHECK_THROWS_WITH(shot::validate(table, physics), Catch::Contains("physics.cushion_restitution"));
+  std::vector<PoolBall> balls(2);
+  balls[0].position = {1, 0.5, 0};
+  balls[1].position = {1 + 0.01, 0.5, 0};
+  CHECK_THROWS_WITH(shot::validate(balls, table, R), Catch::Contains("balls 0 and 1 overlap"));
+  // Each widened circle reaches into both its jaws' reach (a centre R + ρ from each jaw's axis).
+  const std::vector<Pocket> pockets = shot::capture_circles(table, R);
+  for (const Pocket& pocket : pockets) {
+    std::vector<double> gaps;
+    for (const Jaw& jaw : table.jaws()) gaps.push_back((jaw.centre - pocket.centre).norm() - (R + jaw.radius));
+    std::sort(gaps.begin(), gaps.end());
+    CHECK(pocket.radius > gaps[1]);
+  }
+  const std::vector<Eigen::Vector2d> centres = {{1, 0.5}, {1 + 1.5 * R, 0.5}};
+  const auto broken = shot::broken_invariant(table, table.cushions(), table.jaws(), pockets, centres, {true, true}, R);
+  REQUIRE(broken);
+  CHECK(broken->first == 0);
+  CHECK_THAT(broken->second, Catch::Contains("overlaps ball 1"));
+  CHECK_FALSE(shot::broken_invariant(table, table.cushions(), table.jaws(), pockets, centres, {true, false}, R));
+}
+
+TEST_CASE("History: the balls at any time from their states at their events", "[simulation][shot][history]") {
+  const billiards::Cloth<double> cloth{0.2, 0.01, 0.0127, 9.81};
+  shot::History history;
+  history.add(0, 0, ball({0.5, 0, 0}, {0, 0.5 / R, 0}), false);  // rolling from t = 0
+  history.add(0, 2, ball({0, 0, 0}, {0, 0, 0}, {3, 0.5, R}), false);
+  const std::vector<PoolBall> at_one = history.at(1, cloth);
+  REQUIRE(at_one.size() == 1);
+  // Rolling: x = 1 + 0.5 t − ½ μr g t².
+  CHECK(at_one[0].position.x() == Approx(1 + 0.5 - 0.5 * 0.01 * 9.81).epsilon(1e-14));
+  CHECK(history.at(2, cloth)[0].position.x() == 3);  // at a keyframe: its state
+  CHECK(history.at(-1, cloth)[0].position.x() == 1);  // before the first: the first
+}
