@@ -58,12 +58,12 @@ fi
 # harness are beside the checkout (../shared/peers/edmd: run.py builds it with gcc).
 edmd="$root/../shared/peers/edmd"
 edmd_arguments=""
-if [ -f "$edmd/run.py" ] && [ -x "$build/examples/billiards-gas" ]; then
-  python3 "$edmd/run.py" "$build/examples/billiards-gas" --sizes 4000,32000,256000,1048576 --etas 0.3,0.45 \
+if [ -f "$edmd/run.py" ] && [ -x "$build/programs/billiards-gas" ]; then
+  python3 "$edmd/run.py" "$build/programs/billiards-gas" --sizes 4000,32000,256000,1048576 --etas 0.3,0.45 \
     --pairs 3 --seconds 3 --cpu $core > "$work/edmd.txt"
   edmd_arguments="--edmd $work/edmd.txt"
 else
-  echo "bench/run.sh: ../shared/peers/edmd/run.py or $build/examples/billiards-gas is missing; the gas's comparison is left out" >&2
+  echo "bench/run.sh: ../shared/peers/edmd/run.py or $build/programs/billiards-gas is missing; the gas's comparison is left out" >&2
 fi
 # shellcheck disable=SC2086
 python3 "$here/report.py" "$work/bench.json" --command "$command" --derive "$build/derive/billiards-derive" \

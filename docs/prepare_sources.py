@@ -26,6 +26,7 @@ PAGES = {
     "bench/RESULTS.md": "results.html",
     "CHANGELOG.md": "changelog.html",
     "examples/README.md": "examples_page.html",
+    "programs/README.md": "programs_page.html",
 }
 LINK = re.compile(r"(\]\()([^)\s#]+)(#[^)\s]*)?(\))")
 
@@ -44,7 +45,7 @@ def rewrite(text, page_folder, source, guides):
         elif in_tree.startswith("docs/") and in_tree.endswith(".md") and os.path.basename(in_tree) in guides:
             new = os.path.basename(in_tree)
         elif in_tree.endswith((".svg", ".png")):
-            new = os.path.basename(in_tree)  # Doxygen's IMAGE_PATH: examples/ and bench/
+            new = os.path.basename(in_tree)  # Doxygen's IMAGE_PATH: docs/figures/ and bench/
         else:
             new = "file://" + os.path.join(source, in_tree)
         return match.group(1) + new + anchor + match.group(4)
@@ -68,7 +69,7 @@ def main():
     os.makedirs(out, exist_ok=True)
     guides = sorted(os.path.basename(p) for p in glob.glob(os.path.join(source, "docs", "*.md")))
     pages = [("README.md", "README.md"), ("bench/RESULTS.md", "RESULTS.md"), ("CHANGELOG.md", "CHANGELOG.md"),
-             ("examples/README.md", "examples.md")] + [(f"docs/{g}", g) for g in guides]
+             ("examples/README.md", "examples.md"), ("programs/README.md", "programs.md")] + [(f"docs/{g}", g) for g in guides]
     for path, name in pages:
         with open(os.path.join(source, path), encoding="utf-8") as f:
             text = f.read()
@@ -78,6 +79,8 @@ def main():
             text = re.sub(r"^# Benchmark results", "# Benchmark results {#results}", text)
         if name == "examples.md":
             text = re.sub(r"^# examples", "# The examples {#examples_page}", text)
+        if name == "programs.md":
+            text = re.sub(r"^# programs", "# The programs {#programs_page}", text)
         write_atomically(os.path.join(out, name), rewrite(text, os.path.dirname(path), source, guides))
     return 0
 

@@ -1,6 +1,6 @@
 #include "core/output_files.hpp"
 
-#include <billiards_support/atomic_file.hpp>
+#include <billiards/io/atomic_file.hpp>
 
 #include <stdexcept>
 #include <system_error>
@@ -22,7 +22,7 @@ void ensure_directory(const fs::path& directory) {
 
 void write_file_atomically(const fs::path& path, const std::string& contents) {
   ensure_directory(path.has_parent_path() ? path.parent_path() : fs::path("."));
-  billiards_support::write_file_atomically(path, contents);
+  billiards::io::write_file_atomically(path, contents);
 }
 
 }  // namespace billiards::derive

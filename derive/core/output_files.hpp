@@ -11,7 +11,7 @@ namespace billiards::derive {
 /// the reason when it cannot be created or is not a folder.
 void ensure_directory(const std::filesystem::path& directory);
 
-/// Writes `contents` to `path` atomically (billiards_support::write_file_atomically: a uniquely named
+/// Writes `contents` to `path` atomically (billiards::io::write_file_atomically: a uniquely named
 /// temporary file in the destination folder, flushed, then renamed; removed on every failure and on
 /// SIGINT/SIGTERM/SIGHUP; a killed run's temporaries are removed by the next write). Creates the
 /// folder first. Throws std::runtime_error naming the path and the reason on any failure, leaving

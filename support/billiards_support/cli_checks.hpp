@@ -9,6 +9,8 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
+#include <iostream>
+#include <optional>
 #include <limits>
 #include <string>
 
@@ -58,6 +60,21 @@ inline CLI::Validator path_given(const std::string& expected) {
         return text.empty() ? "the path is empty, expected " + expected : std::string();
       },
       "");
+}
+
+/// Parses the command line with `app`; the exit status where the program ends here: 0 after --help
+/// (the usage printed), 2 after a usage error (one line on stderr: "NAME: what (run with --help for
+/// usage)", NAME the app's name).
+inline std::optional<int> parse_command_line(CLI::App& app, int argc, char** argv) {
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& help) {
+    return app.exit(help);
+  } catch (const CLI::ParseError& error) {
+    std::cerr << app.get_name() << ": " << error.what() << " (run with --help for usage)\n";
+    return 2;
+  }
+  return std::nullopt;
 }
 
 }  // namespace billiards_support

@@ -1,7 +1,7 @@
 // Files are written atomically, and failures name the path and the reason.
 #include "core/output_files.hpp"
 
-#include <billiards_support/atomic_file.hpp>
+#include <billiards/io/atomic_file.hpp>
 
 #include <catch2/catch.hpp>
 
@@ -95,11 +95,11 @@ TEST_CASE("Atomic output files", "[derive][files]") {
     if (child == 0) {
       // Catch has its own SIGTERM handler here, so install_signal_cleanup() (which never replaces a
       // program's handler) would leave it: the child installs the cleanup handler itself.
-      std::signal(SIGTERM, billiards_support::detail::remove_pending_and_reraise);
+      std::signal(SIGTERM, billiards::io::detail::remove_pending_and_reraise);
       { std::ofstream(temporary) << "half"; }
       const std::string name = temporary.string();
-      std::copy(name.c_str(), name.c_str() + name.size() + 1, billiards_support::detail::pending_path);
-      billiards_support::detail::pending = 1;
+      std::copy(name.c_str(), name.c_str() + name.size() + 1, billiards::io::detail::pending_path);
+      billiards::io::detail::pending = 1;
       std::raise(SIGTERM);
       ::_exit(0);  // not reached
     }

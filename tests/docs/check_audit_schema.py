@@ -1,10 +1,11 @@
 #!/usr/bin/env python3
-"""Validates audit.json files against docs/audit.schema.json (JSON Schema 2020-12, Debian's
-python3-jsonschema). Every error is printed with the file and the place in it; exit status 1 when any
-file does not conform, 2 on a bad command line or a file that is not JSON.
+"""Validates JSON files against a JSON Schema of docs/ (2020-12, Debian's python3-jsonschema): the
+audit's (docs/audit.schema.json) or a shot's events' (docs/events.schema.json, --kind events). Every
+error is printed with the file and the place in it; exit status 1 when any file does not conform, 2 on
+a bad command line or a file that is not JSON.
 
   check_audit_schema.py --schema docs/audit.schema.json AUDIT.json [AUDIT.json ...]
-  check_audit_schema.py --schema ... --expect-rejected AUDIT.json
+  check_audit_schema.py --schema ... [--kind events] --expect-rejected FILE.json
       (the validator's own check: each file is damaged in the ways the schema forbids, one at a time,
        and every damaged copy must be rejected)
 """
@@ -51,10 +52,39 @@ def damaged(audit):
     yield "the previous format's version", copy_
 
 
+def damaged_events(shot):
+    """Copies of a shot's events `shot`, each with one mistake the schema must catch."""
+    ball = next(i for i, e in enumerate(shot["events"]) if e["kind"] == "ball")
+    cushion = next(i for i, e in enumerate(shot["events"]) if e["kind"] in ("cushion", "jaw"))
+    copy_ = copy.deepcopy(shot)
+    del copy_["events"][0]["kind"]
+    yield "an event without its kind", copy_
+    copy_ = copy.deepcopy(shot)
+    copy_["events"][0]["kind"] = "bounce"
+    yield "a kind that is not one of the six", copy_
+    copy_ = copy.deepcopy(shot)
+    copy_["events"][ball]["states"].pop()
+    yield "a ball-ball event with one state", copy_
+    copy_ = copy.deepcopy(shot)
+    kind = copy_["events"][cushion]["kind"]
+    del copy_["events"][cushion][kind]
+    yield f"a {kind} event without the {kind}", copy_
+    copy_ = copy.deepcopy(shot)
+    copy_["start"][0]["position"].append(0.0)
+    yield "a position with three numbers", copy_
+    copy_ = copy.deepcopy(shot)
+    copy_["physics"]["ball_restitution"] = 1.5
+    yield "a restitution above 1", copy_
+    copy_ = copy.deepcopy(shot)
+    copy_["surprise"] = 1
+    yield "a field the schema does not name", copy_
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--schema", required=True)
     parser.add_argument("--expect-rejected", action="store_true")
+    parser.add_argument("--kind", choices=["audit", "events"], default="audit")
     parser.add_argument("audits", nargs="+")
     args = parser.parse_args()
     schema = load(args.schema)
@@ -65,7 +95,7 @@ def main():
     for path in args.audits:
         audit = load(path)
         if args.expect_rejected:
-            for what, copy_ in damaged(audit):
+            for what, copy_ in (damaged_events if args.kind == "events" else damaged)(audit):
                 if not list(validator.iter_errors(copy_)):
                     print(f"{path}: {what} was accepted, expected the schema to reject it")
                     failed = True
@@ -78,6 +108,8 @@ def main():
             print(f"{path}: {place}: {error.message}")
         if errors:
             failed = True
+        elif args.kind == "events":
+            print(f"{path}: conforms ({len(audit['events'])} events)")
         else:
             print(f"{path}: conforms ({len(audit['claims'])} claims, {len(audit['kernels'])} kernels)")
     return 1 if failed else 0

@@ -1,7 +1,7 @@
 # billiards-spin-figures agrees with the closed forms (exit 0), finds the 30° rule's maximum, and the
 # figures checked in beside it are what it draws now: a change to the runtime, the curves or the plot
 # that alters a figure fails here until the figures are redrawn. PROGRAM, WORK (a scratch folder),
-# FIGURES (the checked-in folder, examples/).
+# FIGURES (the checked-in folder, docs/figures/).
 file(REMOVE_RECURSE ${WORK})
 file(MAKE_DIRECTORY ${WORK})
 execute_process(COMMAND ${PROGRAM} --out ${WORK} RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)
@@ -15,8 +15,8 @@ foreach(figure IN ITEMS throw.svg thirty_degree_rule.svg)
   execute_process(COMMAND ${CMAKE_COMMAND} -E compare_files ${WORK}/${figure} ${FIGURES}/${figure}
                   RESULT_VARIABLE different)
   if(different)
-    message(FATAL_ERROR "examples/${figure} is not what billiards-spin-figures draws now; redraw with "
-                        "billiards-spin-figures --out examples")
+    message(FATAL_ERROR "docs/figures/${figure} is not what billiards-spin-figures draws now; redraw with "
+                        "billiards-spin-figures --out docs/figures")
   endif()
 endforeach()
 file(GLOB leftovers ${WORK}/.*.tmp-*)

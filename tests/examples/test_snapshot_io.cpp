@@ -1,6 +1,6 @@
-// Snapshot files (examples/snapshot_io.hpp): .sph as Smallenburg's code writes it and extended XYZ as
+// Snapshot files (billiards/io/snapshots.hpp): .sph as Smallenburg's code writes it and extended XYZ as
 // OVITO reads it, read back bit for bit, and every bad file told by its name, line and what was expected.
-#include "snapshot_io.hpp"
+#include <billiards/io/snapshots.hpp>
 
 #include <catch2/catch.hpp>
 
@@ -9,7 +9,7 @@
 #include <sstream>
 #include <string>
 
-using namespace billiards_example;
+using namespace billiards::io;
 using Catch::Matchers::Contains;
 
 namespace {

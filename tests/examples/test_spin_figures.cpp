@@ -1,6 +1,6 @@
 // The figures' library of examples/: the SVG line plot (plot.hpp) and the spinning-ball curves
 // (spin_curves.hpp) against the closed forms written here again by hand.
-#include "plot.hpp"
+#include <billiards/io/plot.hpp>
 #include "spin_curves.hpp"
 
 #include <catch2/catch.hpp>
@@ -10,7 +10,8 @@
 #include <stdexcept>
 #include <string>
 
-using namespace billiards_example;
+using namespace billiards::io;
+using namespace billiards::programs;
 
 namespace {
 

@@ -1,6 +1,6 @@
-// The billiards-table program's setup files and SVG (examples/table_io.hpp) over the simulation
+// billiards::io's table setup files and SVG (billiards/io/table.hpp) over the simulation
 // library's table.
-#include "table_io.hpp"
+#include <billiards/io/table.hpp>
 
 #include <catch2/catch.hpp>
 
@@ -10,7 +10,7 @@
 #include <string>
 
 using namespace billiards::simulation;
-using namespace billiards_example;
+using namespace billiards::io;
 
 TEST_CASE("Setup files", "[examples][table]") {
   SECTION("every directive, comments and blank lines") {

@@ -20,7 +20,8 @@ if(STEP STREQUAL "install")
                      include/billiards/spin.hpp include/billiards/cloth.hpp include/billiards/spin_kernels.hpp include/billiards/shot_kernels.hpp
                      include/billiards/simulation/table.hpp include/billiards/simulation/gas.hpp
                      include/billiards/simulation/shot.hpp include/billiards/simulation/core/event_calendar.hpp
-                     include/billiards/simulation/core/errors.hpp include/billiards/simulation/shot/detection.hpp)
+                     include/billiards/simulation/core/errors.hpp include/billiards/simulation/shot/detection.hpp
+                     include/billiards/io.hpp include/billiards/io/shot.hpp include/billiards/io/atomic_file.hpp)
     if(NOT EXISTS ${prefix}/${f})
       message(FATAL_ERROR "cmake --install did not write ${f}")
     endif()
@@ -64,9 +65,10 @@ elseif(STEP STREQUAL "examples")
       -DCMAKE_BUILD_TYPE= -DCMAKE_PREFIX_PATH=${prefix})
   cmake_host_system_information(RESULT processors QUERY NUMBER_OF_LOGICAL_CORES)
   run(${CMAKE_COMMAND} --build ${SCRATCH}/examples --parallel ${processors})
-  run(${SCRATCH}/examples/billiards-table --collisions 1000 --max-drift 1e-12)
-  run(${SCRATCH}/examples/billiards-gas --balls 100 --events 1000 --equilibrate 0)
-  run(${SCRATCH}/examples/billiards-spin-figures --out ${SCRATCH}/examples)
+  run(${SCRATCH}/examples/billiards-own-engine)
+  run(${SCRATCH}/examples/shot-files ${SCRATCH}/examples)
+  run(${SCRATCH}/examples/gas-snapshot ${SCRATCH}/examples)
+  run(${SCRATCH}/examples/table-events)
 elseif(STEP STREQUAL "readme_examples")
   # The C++ examples of README.md, as a user copies them: every ```cpp block is extracted from the
   # README (not copied into the tests), built as a program of its own against the installed package

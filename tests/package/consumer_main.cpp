@@ -3,6 +3,7 @@
 // with the simulation library.
 #include <billiards/cloth.hpp>
 #include <billiards/collision.hpp>
+#include <billiards/io/table.hpp>
 #include <billiards/simulation/gas.hpp>
 #include <billiards/simulation/table.hpp>
 #include <billiards/spin.hpp>
@@ -12,6 +13,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <sstream>
 
 int main() {
   // Equal masses, the first at rest, hit head-on: the first takes all the velocity, the second stops.
@@ -56,6 +58,10 @@ int main() {
   disks.balls = {{{2, 5}, {1, 0}}, {{6, 5}, {-1, 0}}};
   billiards::simulation::Gas<2> gas(disks);
   ok = ok && gas.run_until(1.0) == 0 && gas.run_events(1) == 1 && std::fabs(gas.time() - 1.5) < 1e-14;
+  // billiards::io: a table setup file's text read into the same setup.
+  std::istringstream text("table 4 2\nradius 0.125\nball 1 1 1 0\nball 2 1 -1 0\n");
+  const billiards::simulation::TableSetup read = billiards::io::read_setup(text, "consumer");
+  ok = ok && read.width == 4 && read.balls.size() == 2 && read.balls[1].velocity.x() == -1;
   std::printf("billiards %s: %s\n", BILLIARDS_VERSION, ok ? "the paper's answers" : "WRONG");
   return ok ? 0 : 1;
 }

@@ -14,7 +14,7 @@ times) and where they part, and, for shots short enough not to be chaotic, where
 status 0 when every compared shot's first collisions agree in kind and balls and within --time-tolerance
 in time, 1 otherwise, 77 (ctest's skip) where pooltool is not importable.
 
-  compare_shots_pooltool.py --program build/examples/billiards-shot [--time-tolerance 0.02]
+  compare_shots_pooltool.py --program build/programs/billiards-shot [--time-tolerance 0.02]
 """
 import argparse
 import json

@@ -34,7 +34,10 @@ struct Path {
 
 /// The x and y ranges a centre keeps to over a horizon.
 struct Box {
-  double x_low = 0, x_high = 0, y_low = 0, y_high = 0;  ///< m
+  double x_low = 0;   ///< the least x (m)
+  double x_high = 0;  ///< the greatest x (m)
+  double y_low = 0;   ///< the least y (m)
+  double y_high = 0;  ///< the greatest y (m)
   /// Whether `centre` lies within `reach` of the box.
   [[nodiscard]] bool near(const Eigen::Vector2d& centre, double reach) const {
     return centre.x() >= x_low - reach && centre.x() <= x_high + reach && centre.y() >= y_low - reach &&

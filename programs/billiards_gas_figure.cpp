@@ -8,9 +8,10 @@
 // status: 0; 1 when a run's Z is farther from its equation of state than 3 % plus five standard
 // errors; 2 on a bad command line; 3 when the SVG cannot be written.
 #include <billiards/simulation/gas.hpp>
-#include "plot.hpp"
+#include <billiards/io/plot.hpp>
 
-#include <billiards_support/atomic_file.hpp>
+#include <billiards/io/atomic_file.hpp>
+#include <billiards_support/cli_checks.hpp>
 #include <billiards_support/standard_output.hpp>
 
 #include <CLI/CLI.hpp>
@@ -23,7 +24,7 @@
 #include <vector>
 
 int main(int argc, char** argv) {
-  using namespace billiards_example;
+  using namespace billiards::io;
   namespace gas = billiards::simulation::gas;
   CLI::App app{"Draws the hard-sphere gas's Z(eta) over its equations of state as SVG.",
                "billiards-gas-figure"};
@@ -32,14 +33,7 @@ int main(int argc, char** argv) {
   app.add_option("--out", out, "Folder the SVG is written to (default: the current folder)");
   app.add_option("--events", events, "Collisions measured per run (default 200000)")
       ->check(CLI::PositiveNumber);
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::CallForHelp& help) {
-    return app.exit(help);
-  } catch (const CLI::ParseError& error) {
-    std::cerr << "billiards-gas-figure: " << error.what() << " (run with --help for usage)\n";
-    return 2;
-  }
+  if (const std::optional<int> code = billiards_support::parse_command_line(app, argc, argv)) return *code;
   std::error_code folder_error;
   if (!std::filesystem::is_directory(out, folder_error)) {
     std::cerr << "billiards-gas-figure: --out: '" << out
@@ -82,7 +76,7 @@ int main(int argc, char** argv) {
 
   const std::filesystem::path path = std::filesystem::path(out) / "gas_equation_of_state.svg";
   try {
-    billiards_support::write_file_atomically(
+    billiards::io::write_file_atomically(
         path,
         line_plot_svg("Hard disks and spheres: Z = PV/(N kT) against the packing fraction",
                       Axis{"packing fraction η", 0, 0.65, 0.05}, Axis{"Z = PV/(N kT)", 0, 10, 1},

@@ -1,32 +1,33 @@
-// Snapshots of spheres or disks in a periodic box, read and written in two formats:
-//
-// - .sph, the format of Smallenburg's event-driven code and of the Colloid Visualization Tool:
-//
-//     N
-//     Lx Ly Lz
-//     a x y z r          one line a particle: its type (one character), centre and radius
-//
-//   It holds no velocities and no masses: read, every velocity is 0 and every mass 1. Always 3-D (a 2-D
-//   snapshot goes in extended XYZ).
-//
-// - extended XYZ, which OVITO reads (one frame; a file of several frames is read up to its first):
-//
-//     N
-//     Lattice="Lx 0 0 0 Ly 0 0 0 Lz" Properties=species:S:1:pos:R:3:velo:R:3:radius:R:1:mass:R:1 Time=t pbc="T T T"
-//     a x y z vx vy vz r m
-//
-//   Properties names the columns (name:type:count); species and pos are required, velo, radius and
-//   mass optional (0, 0.5 and 1 where absent), and any other column is skipped. pbc="T T F" makes the
-//   snapshot 2-D (every z then 0; the lattice's third side is the cell's thickness, not a period). The
-//   box must be orthogonal (a diagonal Lattice).
-//
-// A bad file gets one line naming the file, the line and what was expected (std::invalid_argument).
-// gas_setup and snapshot_of convert to and from the gas of billiards/simulation/gas.hpp, which runs
-// equal spheres (or disks) in a square or cubic box.
-// Written numbers keep every digit (%.17g): a snapshot read back is the snapshot written.
+/// \file
+/// Snapshots of spheres or disks in a periodic box, read and written in two formats.
+///
+/// .sph, the format of Smallenburg's event-driven code and of the Colloid Visualization Tool, one line a
+/// particle: its type (one character), centre and radius. It holds no velocities and no masses: read,
+/// every velocity is 0 and every mass 1. Always 3-D (a 2-D snapshot goes in extended XYZ).
+/// \verbatim
+///     N
+///     Lx Ly Lz
+///     a x y z r
+/// \endverbatim
+///
+/// Extended XYZ, which OVITO reads (one frame; a file of several frames is read up to its first).
+/// Properties names the columns (name:type:count); species and pos are required, velo, radius and mass
+/// optional (0, 0.5 and 1 where absent), and any other column is skipped. `pbc="T T F"` makes the
+/// snapshot 2-D (every z then 0; the lattice's third side is the cell's thickness, not a period). The
+/// box must be orthogonal (a diagonal Lattice).
+/// \code{.unparsed}
+///     N
+///     Lattice="Lx 0 0 0 Ly 0 0 0 Lz" Properties=species:S:1:pos:R:3:velo:R:3:radius:R:1:mass:R:1 Time=t pbc="T T T"
+///     a x y z vx vy vz r m
+/// \endcode
+///
+/// A bad file gets one line naming the file, the line and what was expected (std::invalid_argument).
+/// gas_setup and snapshot_of convert to and from the gas of billiards/simulation/gas.hpp, which runs
+/// equal spheres (or disks) in a square or cubic box.
+/// Written numbers keep every digit (%.17g): a snapshot read back is the snapshot written.
 #pragma once
 
-#include "table_io.hpp"
+#include <billiards/io/table.hpp>
 
 #include <billiards/simulation/gas.hpp>
 
@@ -44,7 +45,7 @@
 #include <string>
 #include <vector>
 
-namespace billiards_example {
+namespace billiards::io {
 
 /// One particle of a snapshot.
 struct SnapshotParticle {
@@ -60,7 +61,7 @@ struct Snapshot {
   int dimension = 3;                                  ///< 2 (disks: x and y periodic) or 3
   Eigen::Vector3d box = Eigen::Vector3d::Ones();  ///< the box's sides (in 2-D the third is a thickness)
   double time = 0;                                    ///< the time the state is at
-  std::vector<SnapshotParticle> particles;
+  std::vector<SnapshotParticle> particles;            ///< the particles, in the file's order
 };
 
 /// The most particles a snapshot file may declare: the gas's own limit.
@@ -436,4 +437,4 @@ inline void write_snapshot_file(const std::string& path, const Snapshot& s) {
   write_file_atomically(path, is_extended_xyz(path) ? extended_xyz_text(s) : sph_text(s));
 }
 
-}  // namespace billiards_example
+}  // namespace billiards::io

@@ -1,16 +1,20 @@
-// A shot's setup files and outputs, for billiards-shot: placements read from a file, the events as
-// JSON, the trajectories sampled at a rate (CSV), the shot drawn as SVG, and one self-contained HTML
-// page that animates it (a slider over time).
-//
-// A shot setup file holds one directive per line; '#' starts a comment, blank lines are ignored:
-//
-//   table  7ft | 8ft | 9ft                  the table (default: the command line's --table)
-//   ball   <x> <y> [<vx> <vy> [<wx> <wy> <wz>]]
-//                                           one ball: centre (m), velocity (m/s) and spin (rad/s), at
-//                                           rest and without spin where left out; ball i is the i-th
+/// \file
+/// A shot's setup files and outputs (billiards-shot's, and any program's): placements read from a
+/// file, the events as JSON (docs/events.schema.json), the trajectories sampled at a rate (CSV), the
+/// shot drawn as SVG, and one self-contained HTML page that animates it (a slider over time).
+///
+/// A shot setup file holds one directive per line; '#' starts a comment, blank lines are ignored:
+///
+/// \verbatim
+///   table  7ft | 8ft | 9ft                  the table (default: the command line's --table)
+///   ball   <x> <y> [<vx> <vy> [<wx> <wy> <wz>]]
+///                                           one ball: centre (m), velocity (m/s) and spin (rad/s), at
+///                                           rest and without spin where left out; ball i is the i-th
+/// \endverbatim
 #pragma once
 
-#include "table_io.hpp"
+#include <billiards/io/json.hpp>
+#include <billiards/io/table.hpp>
 
 #include <billiards/simulation/shot.hpp>
 
@@ -22,7 +26,7 @@
 #include <string>
 #include <vector>
 
-namespace billiards_example {
+namespace billiards::io {
 
 using billiards::simulation::PoolBall;
 using billiards::simulation::PoolPhysics;
@@ -85,16 +89,10 @@ inline ShotSetup read_shot_setup_file(const std::string& path, double radius) {
 
 namespace shot_detail {
 
-inline std::string number(double x) {
-  if (!std::isfinite(x)) return "null";
-  char text[32];
-  std::snprintf(text, sizeof text, "%.17g", x);
-  return text;
-}
 
 inline std::string vector_json(const Eigen::Vector3d& v, int size) {
-  std::string out = "[" + number(v.x()) + ", " + number(v.y());
-  if (size == 3) out += ", " + number(v.z());
+  std::string out = "[" + json_number(v.x()) + ", " + json_number(v.y());
+  if (size == 3) out += ", " + json_number(v.z());
   return out + "]";
 }
 
@@ -117,20 +115,19 @@ inline std::string colour(std::size_t i) {
 /// the cushion, jaw or pocket, the phases, and the balls' states after it), the balls at rest and the
 /// pocketed balls.
 inline std::string shot_json(const Shot& shot, const std::string& table_name) {
-  using shot_detail::number;
   using shot_detail::state_json;
   std::ostringstream out;
   const PoolTable& t = shot.table();
   const PoolPhysics& p = shot.physics();
-  out << "{\n  \"table\": {\"size\": \"" << table_name << "\", \"length\": " << number(t.length)
-      << ", \"width\": " << number(t.width) << ", \"nose_height\": " << number(t.nose_height) << "},\n"
-      << "  \"physics\": {\"radius\": " << number(p.radius) << ", \"mass\": " << number(p.mass)
-      << ", \"sliding_friction\": " << number(p.cloth.sliding_friction)
-      << ", \"rolling_friction\": " << number(p.cloth.rolling_friction)
-      << ", \"spinning_friction\": " << number(p.cloth.spinning_friction) << ", \"gravity\": " << number(p.cloth.gravity)
-      << ", \"ball_restitution\": " << number(p.ball_restitution) << ", \"ball_friction\": " << number(p.ball_friction)
-      << ", \"cushion_restitution\": " << number(p.cushion_restitution)
-      << ", \"cushion_friction\": " << number(p.cushion_friction) << "},\n";
+  out << "{\n  \"table\": {\"size\": \"" << table_name << "\", \"length\": " << json_number(t.length)
+      << ", \"width\": " << json_number(t.width) << ", \"nose_height\": " << json_number(t.nose_height) << "},\n"
+      << "  \"physics\": {\"radius\": " << json_number(p.radius) << ", \"mass\": " << json_number(p.mass)
+      << ", \"sliding_friction\": " << json_number(p.cloth.sliding_friction)
+      << ", \"rolling_friction\": " << json_number(p.cloth.rolling_friction)
+      << ", \"spinning_friction\": " << json_number(p.cloth.spinning_friction) << ", \"gravity\": " << json_number(p.cloth.gravity)
+      << ", \"ball_restitution\": " << json_number(p.ball_restitution) << ", \"ball_friction\": " << json_number(p.ball_friction)
+      << ", \"cushion_restitution\": " << json_number(p.cushion_restitution)
+      << ", \"cushion_friction\": " << json_number(p.cushion_friction) << "},\n";
   const auto balls_json = [&](const std::vector<PoolBall>& balls) {
     std::string text = "[";
     for (std::size_t i = 0; i < balls.size(); ++i) text += (i ? ",\n    " : "\n    ") + state_json(i, balls[i]);
@@ -140,7 +137,7 @@ inline std::string shot_json(const Shot& shot, const std::string& table_name) {
   const auto& events = shot.events();
   for (std::size_t k = 0; k < events.size(); ++k) {
     const ShotEvent& e = events[k];
-    out << (k ? ",\n    " : "\n    ") << "{\"time\": " << number(e.time) << ", \"kind\": \""
+    out << (k ? ",\n    " : "\n    ") << "{\"time\": " << json_number(e.time) << ", \"kind\": \""
         << billiards::simulation::kind_name(e.kind) << "\", \"balls\": [" << e.first;
     if (e.kind == ShotEvent::Kind::ball) out << ", " << e.second;
     out << "]";
@@ -152,7 +149,7 @@ inline std::string shot_json(const Shot& shot, const std::string& table_name) {
     out << "]}";
   }
   const std::vector<PoolBall> rest = shot.balls();
-  out << "\n  ],\n  \"time\": " << number(shot.time()) << ",\n  \"final\": " << balls_json(rest)
+  out << "\n  ],\n  \"time\": " << json_number(shot.time()) << ",\n  \"final\": " << balls_json(rest)
       << ",\n  \"pocketed\": [";
   bool first = true;
   for (std::size_t i = 0; i < rest.size(); ++i) {
@@ -177,14 +174,13 @@ inline std::vector<double> sample_times(const Shot& shot, double rate) {
 
 /// The trajectories as CSV, one row per ball per sample: time,ball,x,y,vx,vy,pocketed.
 inline std::string trajectories_csv(const Shot& shot, double rate) {
-  using shot_detail::number;
   std::string out = "time,ball,x,y,vx,vy,pocketed\n";
   for (const double t : sample_times(shot, rate)) {
     const std::vector<PoolBall> balls = shot.balls_at(t);
     for (std::size_t i = 0; i < balls.size(); ++i) {
-      out += number(t) + "," + std::to_string(i) + "," + number(balls[i].position.x()) + "," +
-             number(balls[i].position.y()) + "," + number(balls[i].velocity.x()) + "," +
-             number(balls[i].velocity.y()) + "," + (balls[i].pocketed ? "1" : "0") + "\n";
+      out += json_number(t) + "," + std::to_string(i) + "," + json_number(balls[i].position.x()) + "," +
+             json_number(balls[i].position.y()) + "," + json_number(balls[i].velocity.x()) + "," +
+             json_number(balls[i].velocity.y()) + "," + (balls[i].pocketed ? "1" : "0") + "\n";
     }
   }
   return out;
@@ -283,23 +279,22 @@ inline std::string shot_svg(const Shot& shot, const std::string& title) {
 /// is a circle with id "ball-i" whose data-x and data-y hold its centre (m) at the slider's time, and
 /// the address's fragment "#t=SECONDS" sets the slider when the page opens.
 inline std::string shot_html(const Shot& shot, const std::string& title, double rate) {
-  using shot_detail::number;
   const PoolTable& table = shot.table();
   const double margin = 0.12, R = shot.physics().radius;
   const std::vector<double> times = sample_times(shot, rate);
   std::ostringstream data;
-  data << "{\"length\": " << number(table.length) << ", \"width\": " << number(table.width)
-       << ", \"margin\": " << number(margin) << ", \"times\": [";
-  for (std::size_t k = 0; k < times.size(); ++k) data << (k ? "," : "") << number(times[k]);
+  data << "{\"length\": " << json_number(table.length) << ", \"width\": " << json_number(table.width)
+       << ", \"margin\": " << json_number(margin) << ", \"times\": [";
+  for (std::size_t k = 0; k < times.size(); ++k) data << (k ? "," : "") << json_number(times[k]);
   data << "], \"balls\": [";
   std::vector<std::vector<PoolBall>> samples;
   for (const double t : times) samples.push_back(shot.balls_at(t));
   const std::size_t n = samples.front().size();
   for (std::size_t i = 0; i < n; ++i) {
     data << (i ? "," : "") << "{\"x\": [";
-    for (std::size_t k = 0; k < samples.size(); ++k) data << (k ? "," : "") << number(samples[k][i].position.x());
+    for (std::size_t k = 0; k < samples.size(); ++k) data << (k ? "," : "") << json_number(samples[k][i].position.x());
     data << "], \"y\": [";
-    for (std::size_t k = 0; k < samples.size(); ++k) data << (k ? "," : "") << number(samples[k][i].position.y());
+    for (std::size_t k = 0; k < samples.size(); ++k) data << (k ? "," : "") << json_number(samples[k][i].position.y());
     data << "], \"pocketed\": [";
     for (std::size_t k = 0; k < samples.size(); ++k) data << (k ? "," : "") << (samples[k][i].pocketed ? 1 : 0);
     data << "]}";
@@ -370,4 +365,4 @@ show(hash ? at(Number(hash[1])) : 0);
   return out.str();
 }
 
-}  // namespace billiards_example
+}  // namespace billiards::io

@@ -1,12 +1,13 @@
-// Writing a file so that nothing is ever half-written, shared by billiards-derive and the examples
-// (internal: not installed). The contents go to a temporary file created in the destination folder
-// with mkstemp (a unique name, O_CREAT | O_EXCL: it never opens an existing file or follows a link
-// planted there), are flushed to disk, and the file is renamed over the destination (rename replaces a
-// link at the destination itself, never what it points to; a device, a FIFO or a socket there is
-// refused, never replaced). Every failure removes the temporary file;
-// so do SIGINT, SIGTERM and SIGHUP while one is open. A run killed outright (SIGKILL) leaves its
-// temporary behind: its name carries the writer's process id, and the next write to the same
-// destination removes the temporaries of processes that no longer exist.
+/// \file
+/// Writing a file so that nothing is ever half-written, for billiards::io's writers, the programs and
+/// billiards-derive. The contents go to a temporary file created in the destination folder
+/// with mkstemp (a unique name, O_CREAT | O_EXCL: it never opens an existing file or follows a link
+/// planted there), are flushed to disk, and the file is renamed over the destination (rename replaces a
+/// link at the destination itself, never what it points to; a device, a FIFO or a socket there is
+/// refused, never replaced). Every failure removes the temporary file;
+/// so do SIGINT, SIGTERM and SIGHUP while one is open. A run killed outright (SIGKILL) leaves its
+/// temporary behind: its name carries the writer's process id, and the next write to the same
+/// destination removes the temporaries of processes that no longer exist.
 #pragma once
 
 #include <cerrno>
@@ -26,7 +27,7 @@
 #include <sys/types.h>
 #include <unistd.h>
 
-namespace billiards_support {
+namespace billiards::io {
 
 namespace detail {
 
@@ -92,6 +93,8 @@ inline void remove_stale_temporaries(const std::filesystem::path& path) {
 /// never a stale errno), leaving `path` as it was and no temporary file behind.
 class AtomicFile {
  public:
+  /// Creates the temporary file beside `path` (std::runtime_error naming the path and why, where it
+  /// cannot: a folder, a device, a FIFO or a socket at `path`, or no room).
   explicit AtomicFile(const std::filesystem::path& path) : path_(path) {
     namespace fs = std::filesystem;
     if (path.filename().empty()) throw failure("expected a file name, not a folder", 0);
@@ -183,4 +186,4 @@ inline void write_file_atomically(const std::filesystem::path& path, const std::
   file.commit();
 }
 
-}  // namespace billiards_support
+}  // namespace billiards::io

@@ -1,6 +1,7 @@
-// A line plot as SVG, for the examples' figures: one frame, ticks and grid on both axes, series drawn
-// as lines (solid or dashed) or as markers, a legend, all in plain SVG 1.1 that any browser shows.
-// Deterministic: the same series give the same bytes (fixed two-decimal coordinates, no dates).
+/// \file
+/// A line plot as SVG, for the figures: one frame, ticks and grid on both axes, series drawn
+/// as lines (solid or dashed) or as markers, a legend, all in plain SVG 1.1 that any browser shows.
+/// Deterministic: the same series give the same bytes (fixed two-decimal coordinates, no dates).
 #pragma once
 
 #include <cmath>
@@ -12,21 +13,24 @@
 #include <utility>
 #include <vector>
 
-namespace billiards_example {
+namespace billiards::io {
 
 /// One axis: what it shows, its range and the spacing of its ticks (all finite, low < high, tick > 0).
 struct Axis {
-  std::string label;
-  double low = 0, high = 1, tick = 0.1;
+  std::string label;  ///< what it shows, with its unit
+  double low = 0;     ///< the range's start
+  double high = 1;    ///< the range's end
+  double tick = 0.1;  ///< the spacing of the ticks and grid lines
 };
 
 /// One series of (x, y) points in axis units.
 struct Series {
+  /// How the points are drawn: joined by a solid or dashed line, or each a marker.
   enum class Style { line, dashed, markers };
   std::string label;   ///< its legend entry (empty: none)
   std::string colour;  ///< an SVG colour, "#rrggbb"
-  Style style = Style::line;
-  std::vector<std::pair<double, double>> points;
+  Style style = Style::line;                       ///< how it is drawn
+  std::vector<std::pair<double, double>> points;  ///< the (x, y) points, in axis units
 };
 
 /// `text` with the five XML special characters escaped.
@@ -148,4 +152,4 @@ inline std::string line_plot_svg(const std::string& title, const Axis& x, const 
   return out.str();
 }
 
-}  // namespace billiards_example
+}  // namespace billiards::io

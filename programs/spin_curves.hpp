@@ -15,7 +15,7 @@
 #include <cmath>
 #include <stdexcept>
 
-namespace billiards_example {
+namespace billiards::programs {
 
 /// A pool ball: 57.15 mm across, 170 g (the table example's too).
 inline constexpr double pool_ball_radius = 0.028575, pool_ball_mass = 0.17;
@@ -67,4 +67,4 @@ inline double thirty_degree_formula(double cut_angle) {
   return std::atan(s * c / (s * s + 0.4));
 }
 
-}  // namespace billiards_example
+}  // namespace billiards::programs

@@ -1,18 +1,21 @@
-// Reading a table setup file and drawing trajectories as SVG, for the billiards-table example.
-//
-// A setup file holds one directive per line; '#' starts a comment, blank lines are ignored:
-//
-//   table  <width> <height>     the playing area in metres (default 2.54 1.27)
-//   radius <r>                  every ball's radius in metres (default 0.028575)
-//   mass   <m>                  every ball's mass in kilograms (default 0.17)
-//   ball   <x> <y> <vx> <vy>    one ball: centre and velocity (at least one ball)
-//
-// The cushions are the lines x = 0, x = width, y = 0, y = height.
+/// \file
+/// Reading a table setup file and drawing trajectories as SVG (billiards-table's, and any program's).
+///
+/// A setup file holds one directive per line; '#' starts a comment, blank lines are ignored:
+///
+/// \verbatim
+///   table  <width> <height>     the playing area in metres (default 2.54 1.27)
+///   radius <r>                  every ball's radius in metres (default 0.028575)
+///   mass   <m>                  every ball's mass in kilograms (default 0.17)
+///   ball   <x> <y> <vx> <vy>    one ball: centre and velocity (at least one ball)
+/// \endverbatim
+///
+/// The cushions are the lines x = 0, x = width, y = 0, y = height.
 #pragma once
 
 #include <billiards/simulation/table.hpp>
 
-#include <billiards_support/atomic_file.hpp>
+#include <billiards/io/atomic_file.hpp>
 
 #include <cerrno>
 #include <cmath>
@@ -29,7 +32,7 @@
 #include <string>
 #include <vector>
 
-namespace billiards_example {
+namespace billiards::io {
 
 using billiards::simulation::Ball;
 using billiards::simulation::TableEvent;
@@ -39,8 +42,8 @@ using billiards::simulation::TableVector;
 /// Limits on what a setup file may hold, so that a hostile file (/dev/zero, a endless stream) is
 /// rejected promptly instead of growing memory: a line of at most 4096 characters, at most 256 MiB in
 /// all (a million balls take about 40 MB).
-inline constexpr std::size_t longest_setup_line = 4096;
-inline constexpr std::size_t largest_setup_file = std::size_t(256) << 20;
+inline constexpr std::size_t longest_setup_line = 4096;                ///< characters a line
+inline constexpr std::size_t largest_setup_file = std::size_t(256) << 20;  ///< bytes a file
 
 /// `text` for a message: at most 40 characters, the rest elided.
 inline std::string excerpt(const std::string& text) {
@@ -193,6 +196,7 @@ inline TableSetup read_setup_file(const std::string& path) {
 /// Each ball's path: its position at the start and at every event, and at the end.
 class Trajectories {
  public:
+  /// Starts every ball's path at its position in `setup`.
   explicit Trajectories(const TableSetup& setup) : setup_(setup), paths_(setup.balls.size()) {
     for (std::size_t i = 0; i < setup.balls.size(); ++i) paths_[i].push_back(setup.balls[i].position);
   }
@@ -254,6 +258,4 @@ class Trajectories {
   std::vector<Ball<2>> final_;
 };
 
-using billiards_support::write_file_atomically;
-
-}  // namespace billiards_example
+}  // namespace billiards::io
