@@ -318,22 +318,23 @@ class Shot {
     const shot::Path me{{e.state.position.x(), e.state.position.y()},
                         {e.state.velocity.x(), e.state.velocity.y()},
                         e.phase.acceleration};
-    const auto found = [&](std::optional<double> t, ShotEvent::Kind kind, std::size_t k) {
-      if (!t || excluded(kind, k, *t)) return;
-      push(now_ + *t, kind, i, k);
-      horizon = std::min(horizon, *t);
+    // A contact at t from now with body k (none: +∞): queued, and the horizon brought in to it.
+    const auto found = [&](double t, ShotEvent::Kind kind, std::size_t k) {
+      if (t == std::numeric_limits<double>::infinity() || excluded(kind, k, t)) return;
+      push(now_ + t, kind, i, k);
+      horizon = std::min(horizon, t);
     };
     if (e.phase.moving) {
       for (std::size_t k = 0; k < cushions_.size(); ++k)
         found(shot::cushion_contact(me, cushions_[k], R, horizon), ShotEvent::Kind::cushion, k);
       e.box = shot::path_box(me, horizon, true, R);
       for (std::size_t k = 0; k < jaws_.size(); ++k) {
-        if (e.box.near(jaws_[k].centre, R + jaws_[k].radius))
-          found(shot::jaw_contact(me, jaws_[k], R, horizon), ShotEvent::Kind::jaw, k);
+        if (!e.box.near(jaws_[k].centre, R + jaws_[k].radius)) continue;
+        found(shot::jaw_contact(me, jaws_[k], R, horizon), ShotEvent::Kind::jaw, k);
       }
       for (std::size_t k = 0; k < pockets_.size(); ++k) {
-        if (e.box.near(pockets_[k].centre, pockets_[k].radius))
-          found(shot::pocket_entry(me, pockets_[k], horizon), ShotEvent::Kind::pocket, k);
+        if (!e.box.near(pockets_[k].centre, pockets_[k].radius)) continue;
+        found(shot::pocket_entry(me, pockets_[k], horizon), ShotEvent::Kind::pocket, k);
       }
     }
     e.box = shot::path_box(me, horizon, e.phase.moving, R);
@@ -356,8 +357,9 @@ class Shot {
       const auto [position, velocity] = shot::centre_and_velocity(o.state, o.phase, now_ - o.since);
       const shot::Path relative{position - r, velocity - v, o.phase.acceleration - e.phase.acceleration};
       const double pair_horizon = std::isfinite(end) ? end - now_ : std::numeric_limits<double>::max();
-      const std::optional<double> t = shot::ball_contact(relative, R, pair_horizon);
-      if (t && !excluded(ShotEvent::Kind::ball, j, *t)) push(now_ + *t, ShotEvent::Kind::ball, i, j);
+      const double t = shot::ball_contact(relative, R, pair_horizon);
+      if (t != std::numeric_limits<double>::infinity() && !excluded(ShotEvent::Kind::ball, j, t))
+        push(now_ + t, ShotEvent::Kind::ball, i, j);
     }
   }
 
