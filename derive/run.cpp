@@ -25,8 +25,10 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// One model: derived, validated, written, reported. Returns its exit status.
-int run_model(const ModelEntry& entry, const fs::path& folder, const std::vector<CanaryOutcome>& canaries) {
+// One model: derived, validated, written, reported. Returns its exit status. The support header, the same
+// for every model, is written with the first model whose headers are (`support_written`).
+int run_model(const ModelEntry& entry, const fs::path& folder, const std::vector<CanaryOutcome>& canaries,
+              bool& support_written) {
   std::optional<Derivation> derived;
   try {
     derived = entry.derive();
@@ -56,6 +58,7 @@ int run_model(const ModelEntry& entry, const fs::path& folder, const std::vector
       if (!path.empty())
         out.push_back({path, entry.edit_printed ? entry.edit_printed(path, text) : text, kernels});
     };
+    add(kernel_support_path, kernel_support_header(), nullptr);
     add(model.kernels_path, kernels_header(derivation, audit_text), &derivation.kernels);
     add(model.reference_path, reference_kernels_header(derivation, audit_text),
         &derivation.reference_kernels);
@@ -82,12 +85,16 @@ int run_model(const ModelEntry& entry, const fs::path& folder, const std::vector
   }
   const bool verified = problems.empty() && summarize(derivation.claims).failed == 0;
   if (verified) {
-    for (const Header& header : headers("")) {
+    // The kernels are read with the helpers they call: the support header's text, as printed, first.
+    const std::vector<Header> printed = headers("");
+    const std::string support = printed.front().text;
+    for (const Header& header : printed) {
+      if (header.path == kernel_support_path) continue;
       const std::vector<KernelProblem> found =
           header.kernels == nullptr
               ? prove_kernel_list(header.text, derivation.kernels, derivation.reference_kernels,
                                   model.reference_namespace)
-              : prove_printed(header.text, *header.kernels, derivation.claims, derivation.rounding,
+              : prove_printed(support + header.text, *header.kernels, derivation.claims, derivation.rounding,
                               entry.proves_rounding_of);
       problems.insert(problems.end(), found.begin(), found.end());
     }
@@ -104,7 +111,10 @@ int run_model(const ModelEntry& entry, const fs::path& folder, const std::vector
     write(model.markdown_path, audit_markdown(derivation));
     write(model.json_path, json_text);
     if (verified && problems.empty()) {
-      for (const Header& header : headers(json_text)) write(header.path, header.text);
+      for (const Header& header : headers(json_text)) {
+        if (header.path == kernel_support_path && std::exchange(support_written, true)) continue;
+        write(header.path, header.text);
+      }
     }
   } catch (const std::exception& error) {
     std::cerr << "billiards-derive: " << error.what() << "\n";
@@ -164,8 +174,9 @@ int derive_main(int argc, const char* const* argv, const std::vector<ModelEntry>
                 << canary.expected << "`, answered `" << canary.answered << "`\n";
   }
   int status = 0;
+  bool support_written = false;
   for (const ModelEntry* entry : chosen) {
-    const int model_status = run_model(*entry, fs::path(out), answers);
+    const int model_status = run_model(*entry, fs::path(out), answers, support_written);
     if (model_status == exit_io) return exit_io;
     status = std::max(status, model_status);
   }

@@ -32,10 +32,20 @@ EmittedKernel emit_kernel(const Kernel& kernel);
 std::string fingerprint(const std::string& text);
 
 /// The model's kernels header (billiards/kernels.hpp for the paper): a preamble whose fingerprint covers
-/// the header's own text and `audit_text` (the audit's JSON), then every kernel with a comment naming
-/// the claim it was proven equal to, the claims it implements and its operation count. The kernels must
-/// have been validated (validate.hpp) first.
+/// the header's own text and `audit_text` (the audit's JSON), the support header's include, then every
+/// kernel with a comment naming the claim it was proven equal to, the claims it implements and its
+/// operation count. The kernels must have been validated (validate.hpp) first.
 std::string kernels_header(const Derivation& derivation, const std::string& audit_text);
+
+/// Where the numeric helpers are printed, once (the output folder's billiards/kernel_support.hpp), and
+/// their namespace, which every model's kernels namespace lies in.
+inline constexpr const char* kernel_support_path = "billiards/kernel_support.hpp";
+inline constexpr const char* support_namespace = "billiards::kernels";
+
+/// The numeric helpers every kernels header includes (kernel_support_path): the fast-math check, the
+/// device macro, |x|, the smallest normal number, +∞, the plain and moderate ranges, the bit comparison
+/// and the scaling by powers of two; fingerprinted by its own text.
+std::string kernel_support_header();
 
 /// The reference header (billiards/reference_kernels.hpp for the paper): the model's reference kernels
 /// (the raw derivation before simplification, for the benchmark only) on top of its kernels header,

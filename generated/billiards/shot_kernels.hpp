@@ -6,25 +6,12 @@
 // claims it implements. They take masses and dot products, so they serve vectors of any dimension and need no
 // Eigen.
 //
-// Fingerprint: fnv1a64:3c880773cb1c4bdd (of this header and the audit)
+// Fingerprint: fnv1a64:3edb15296a91bbdf (of this header and the audit)
 #pragma once
 
+#include <billiards/kernel_support.hpp>
+
 #include <limits>
-
-#if defined(__FINITE_MATH_ONLY__) && __FINITE_MATH_ONLY__
-// -ffast-math assumes no infinities, but an infinite mass is how an immovable body is modelled.
-#error "billiards: -ffast-math breaks infinite masses (immovable bodies); add -fno-finite-math-only"
-#endif
-
-// BILLIARDS_HOST_DEVICE marks every kernel __host__ __device__ under a CUDA compiler, so the same
-// derived code runs in CUDA kernels; elsewhere it is empty. Define it first to override.
-#ifndef BILLIARDS_HOST_DEVICE
-#if defined(__CUDACC__)
-#define BILLIARDS_HOST_DEVICE __host__ __device__
-#else
-#define BILLIARDS_HOST_DEVICE
-#endif
-#endif
 
 namespace billiards::kernels::shot {
 
@@ -55,44 +42,6 @@ struct CushionSpinChange {
   Scalar first;   ///< Δω·t, t = (sin θ_a, 0, −cos θ_a)
   Scalar second;  ///< Δω·ŷ, along the cushion
 };
-
-/// |x|, constexpr (std::abs is not before C++23).
-template <typename Scalar>
-BILLIARDS_HOST_DEVICE constexpr Scalar absolute_value(Scalar x) noexcept {
-  return x < Scalar(0) ? -x : x;
-}
-
-/// The smallest positive normal number, `std::numeric_limits<Scalar>::min()`, also in device code.
-template <typename Scalar>
-BILLIARDS_HOST_DEVICE constexpr Scalar smallest_normal() noexcept {
-  return std::numeric_limits<Scalar>::min();
-}
-/// The smallest positive normal float, 2^−126.
-template <>
-BILLIARDS_HOST_DEVICE constexpr float smallest_normal<float>() noexcept {
-  return 0x1p-126f;
-}
-/// The smallest positive normal double, 2^−1022.
-template <>
-BILLIARDS_HOST_DEVICE constexpr double smallest_normal<double>() noexcept {
-  return 0x1p-1022;
-}
-
-/// +∞, `std::numeric_limits<Scalar>::infinity()`, also in device code.
-template <typename Scalar>
-BILLIARDS_HOST_DEVICE constexpr Scalar infinity() noexcept {
-  return std::numeric_limits<Scalar>::infinity();
-}
-/// +∞ in float.
-template <>
-BILLIARDS_HOST_DEVICE constexpr float infinity<float>() noexcept {
-  return __builtin_huge_valf();
-}
-/// +∞ in double.
-template <>
-BILLIARDS_HOST_DEVICE constexpr double infinity<double>() noexcept {
-  return __builtin_huge_val();
-}
 
 /// J/m = (1 + e_tip) w/(1 + m/M + (5/2)(a² + b²)): the struck ball's velocity change along the cue
 /// (its speed, for a ball at rest), from the ball's and the cue's masses, the tip's approach speed w =

@@ -5,29 +5,13 @@
 // verified claim of the derivation audit before it was printed, and names the claims it implements. They take
 // masses and dot products, so they serve vectors of any dimension and need no Eigen.
 //
-// Fingerprint: fnv1a64:035586563b3c1a5c (of this header and the audit)
+// Fingerprint: fnv1a64:7a0bc5fc9b02b730 (of this header and the audit)
 #pragma once
 
-#include <bit>
+#include <billiards/kernel_support.hpp>
+
 #include <cmath>
-#include <cstdint>
 #include <limits>
-#include <type_traits>
-
-#if defined(__FINITE_MATH_ONLY__) && __FINITE_MATH_ONLY__
-// -ffast-math assumes no infinities, but an infinite mass is how an immovable body is modelled.
-#error "billiards: -ffast-math breaks infinite masses (immovable bodies); add -fno-finite-math-only"
-#endif
-
-// BILLIARDS_HOST_DEVICE marks every kernel __host__ __device__ under a CUDA compiler, so the same
-// derived code runs in CUDA kernels; elsewhere it is empty. Define it first to override.
-#ifndef BILLIARDS_HOST_DEVICE
-#if defined(__CUDACC__)
-#define BILLIARDS_HOST_DEVICE __host__ __device__
-#else
-#define BILLIARDS_HOST_DEVICE
-#endif
-#endif
 
 namespace billiards::kernels::spin {
 
@@ -38,159 +22,6 @@ struct TangentialVelocityChange {
   Scalar first;   ///< j/m1, ball 1's change along û_t
   Scalar second;  ///< j/m2, ball 2's change against û_t
 };
-
-/// |x|, constexpr (std::abs is not before C++23).
-template <typename Scalar>
-BILLIARDS_HOST_DEVICE constexpr Scalar absolute_value(Scalar x) noexcept {
-  return x < Scalar(0) ? -x : x;
-}
-
-/// The smallest positive normal number, `std::numeric_limits<Scalar>::min()`, also in device code.
-template <typename Scalar>
-BILLIARDS_HOST_DEVICE constexpr Scalar smallest_normal() noexcept {
-  return std::numeric_limits<Scalar>::min();
-}
-/// The smallest positive normal float, 2^−126.
-template <>
-BILLIARDS_HOST_DEVICE constexpr float smallest_normal<float>() noexcept {
-  return 0x1p-126f;
-}
-/// The smallest positive normal double, 2^−1022.
-template <>
-BILLIARDS_HOST_DEVICE constexpr double smallest_normal<double>() noexcept {
-  return 0x1p-1022;
-}
-
-/// +∞, `std::numeric_limits<Scalar>::infinity()`, also in device code.
-template <typename Scalar>
-BILLIARDS_HOST_DEVICE constexpr Scalar infinity() noexcept {
-  return std::numeric_limits<Scalar>::infinity();
-}
-/// +∞ in float.
-template <>
-BILLIARDS_HOST_DEVICE constexpr float infinity<float>() noexcept {
-  return __builtin_huge_valf();
-}
-/// +∞ in double.
-template <>
-BILLIARDS_HOST_DEVICE constexpr double infinity<double>() noexcept {
-  return __builtin_huge_val();
-}
-
-/// The plain form's mass range [4 √x_min, 1/(4 √x_min)], x_min = `smallest_normal<Scalar>()`:
-/// 2^−509 to 2^509 in double, 2^−61 to 2^61 in float. Within it m1 + m2, (1 + e)/(m1 + m2) and each
-/// (1 + e) m_i/(m1 + m2) are normal numbers, so the one-division form keeps every digit.
-template <typename Scalar>
-BILLIARDS_HOST_DEVICE constexpr Scalar plain_mass_low() noexcept {
-  Scalar low = Scalar(4);  // 4 √x_min = 4 · 2^((min_exponent − 1)/2)
-  for (int k = 0; k < (1 - std::numeric_limits<Scalar>::min_exponent) / 2; ++k) low /= Scalar(2);
-  return low;
-}
-/// 2^−61 in float.
-template <>
-BILLIARDS_HOST_DEVICE constexpr float plain_mass_low<float>() noexcept {
-  return 0x1p-61f;
-}
-/// 2^−509 in double.
-template <>
-BILLIARDS_HOST_DEVICE constexpr double plain_mass_low<double>() noexcept {
-  return 0x1p-509;
-}
-/// `1/plain_mass_low<Scalar>()`, exactly (a power of two).
-template <typename Scalar>
-BILLIARDS_HOST_DEVICE constexpr Scalar plain_mass_high() noexcept {
-  return Scalar(1) / plain_mass_low<Scalar>();
-}
-
-/// The moderate range [2^−(E/4 − 2), 2^(E/4 − 2)], E =
-/// `std::numeric_limits<Scalar>::max_exponent`: 2^−254 to 2^254 in double, 2^−30 to 2^30 in float.
-/// A product or quotient of four numbers in it, times 2/7 or 5/2, is a normal number, so a monomial
-/// kernel's plain form keeps every digit there.
-template <typename Scalar>
-BILLIARDS_HOST_DEVICE constexpr Scalar moderate_low() noexcept {
-  Scalar low = Scalar(1);
-  for (int k = 0; k < std::numeric_limits<Scalar>::max_exponent / 4 - 2; ++k) low /= Scalar(2);
-  return low;
-}
-/// 2^−30 in float.
-template <>
-BILLIARDS_HOST_DEVICE constexpr float moderate_low<float>() noexcept {
-  return 0x1p-30f;
-}
-/// 2^−254 in double.
-template <>
-BILLIARDS_HOST_DEVICE constexpr double moderate_low<double>() noexcept {
-  return 0x1p-254;
-}
-/// `1/moderate_low<Scalar>()`, exactly (a power of two).
-template <typename Scalar>
-BILLIARDS_HOST_DEVICE constexpr Scalar moderate_high() noexcept {
-  return Scalar(1) / moderate_low<Scalar>();
-}
-
-/// Whether Scalar is IEEE float or double, whose positive numbers order as their bits.
-template <typename Scalar>
-constexpr bool orders_as_bits() noexcept {
-  return std::numeric_limits<Scalar>::is_iec559 && (sizeof(Scalar) == 4 || sizeof(Scalar) == 8);
-}
-/// The unsigned integer type of Scalar's width, for IEEE float and double.
-template <typename Scalar>
-using BitsOf = std::conditional_t<sizeof(Scalar) == 4, std::uint32_t, std::uint64_t>;
-/// The bits of x minus those of low, as an unsigned integer of Scalar's width, for IEEE float and
-/// double (orders_as_bits). For finite 0 < low ≤ high, low ≤ x ≤ high exactly when
-/// bits_above(x, low) ≤ bits_above(high, low): positive numbers order as their bits, and an x below
-/// low (+0 included) wraps around, and a negative x (−0 included), +∞ and a NaN lie above it.
-/// Host code; on the device the predicates compare the numbers.
-template <typename Scalar>
-constexpr auto bits_above(Scalar x, Scalar low) noexcept {
-  using Bits = BitsOf<Scalar>;
-  return static_cast<Bits>(std::bit_cast<Bits>(x) - std::bit_cast<Bits>(low));
-}
-/// The larger of two unsigned integers.
-template <typename Bits>
-constexpr Bits larger(Bits a, Bits b) noexcept {
-  return a > b ? a : b;
-}
-
-/// The exponent k of x = f · 2^k, 1 ≤ |f| < 2: ⌊log2 |x|⌋ for a finite nonzero x, subnormals included,
-/// as a Scalar (an integer, exact); 0 for ±0, ±∞ and NaN, which times_power_of_two(x, −k) then leaves
-/// as they are. On the host, for IEEE float and double (orders_as_bits), it reads the exponent field
-/// of a normal x; elsewhere, and for a subnormal x, std::ilogb.
-template <typename Scalar>
-BILLIARDS_HOST_DEVICE Scalar binary_exponent(Scalar x) noexcept {
-#if !defined(__CUDA_ARCH__)
-  if constexpr (orders_as_bits<Scalar>()) {
-    using Bits = BitsOf<Scalar>;
-    constexpr int stored = std::numeric_limits<Scalar>::digits - 1;
-    constexpr int bias = std::numeric_limits<Scalar>::max_exponent - 1;
-    constexpr Bits all_ones = static_cast<Bits>(2 * bias + 1);
-    const Bits field = static_cast<Bits>((std::bit_cast<Bits>(x) >> stored) & all_ones);
-    if (field != 0 && field != all_ones) return Scalar(static_cast<int>(field) - bias);
-  }
-#endif
-  if (x == Scalar(0) || !(absolute_value(x) < infinity<Scalar>())) return Scalar(0);
-  return Scalar(std::ilogb(x));
-}
-
-/// x · 2^k for an integer k (a Scalar, as binary_exponent gives it), correctly rounded: exact unless
-/// the result is subnormal, ±∞ beyond the largest finite number. k is first clamped to [−4096, 4096]
-/// (a NaN to −4096), beyond which every finite x · 2^k is ±0 or ±∞ anyway. On the host, for IEEE float
-/// and double, one multiplication by 2^k built from its bits where 2^k is a normal number; elsewhere
-/// std::ldexp.
-template <typename Scalar>
-BILLIARDS_HOST_DEVICE Scalar times_power_of_two(Scalar x, Scalar k) noexcept {
-  const int exponent = !(k >= Scalar(-4096)) ? -4096 : k > Scalar(4096) ? 4096 : static_cast<int>(k);
-#if !defined(__CUDA_ARCH__)
-  if constexpr (orders_as_bits<Scalar>()) {
-    using Bits = BitsOf<Scalar>;
-    constexpr int stored = std::numeric_limits<Scalar>::digits - 1;
-    constexpr int bias = std::numeric_limits<Scalar>::max_exponent - 1;
-    if (exponent >= 1 - bias && exponent <= bias)
-      return x * std::bit_cast<Scalar>(static_cast<Bits>(static_cast<Bits>(exponent + bias) << stored));
-  }
-#endif
-  return std::ldexp(x, exponent);
-}
 
 /// The tangential inverse effective mass k = (7/2)(1/m1 + 1/m2) of a contact between two solid spheres:
 /// a tangential impulse j changes the tangential slip by k j.

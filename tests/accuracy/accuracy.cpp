@@ -500,10 +500,10 @@ class SpinInputGenerator {
       }
       for (const ex& parameter : kernel.parameters) {
         in[GiNaC::ex_to<GiNaC::symbol>(parameter).get_name()] =
-            mode == 0   ? billiards::kernels::spin::moderate_low<Scalar>()
-            : mode == 1 ? billiards::kernels::spin::moderate_high<Scalar>()
-                        : log_uniform(billiards::kernels::spin::moderate_low<Scalar>(),
-                                      billiards::kernels::spin::moderate_high<Scalar>());
+            mode == 0   ? billiards::kernels::moderate_low<Scalar>()
+            : mode == 1 ? billiards::kernels::moderate_high<Scalar>()
+                        : log_uniform(billiards::kernels::moderate_low<Scalar>(),
+                                      billiards::kernels::moderate_high<Scalar>());
       }
       return in;
     }

@@ -25,6 +25,7 @@ Mutation printed(const std::string& name, const std::string& culprit, const std:
 }
 
 const std::string kernels_header = "billiards/kernels.hpp";
+const std::string support_header = "billiards/kernel_support.hpp";
 const std::string spin_header = "billiards/spin_kernels.hpp";
 const std::string list_header = "billiards/kernel_list.hpp";
 const std::string spin_list_header = "billiards/spin_kernel_list.hpp";
@@ -71,9 +72,9 @@ Mutation domain_widened(const std::string& name, const std::string& culprit, con
 const std::vector<Mutation>& paper_class_mutations() {
   static const std::vector<Mutation> mutations = {
       // The bit comparison's helpers, one off.
-      printed("support_bits_above_off_by_one", "bits_above", kernels_header, "bits_above",
+      printed("support_bits_above_off_by_one", "bits_above", support_header, "bits_above",
               "std::bit_cast<Bits>(low))", "std::bit_cast<Bits>(low) + 1)"),
-      printed("support_larger_takes_the_smaller", "larger", kernels_header, "larger", "a > b ? a : b",
+      printed("support_larger_takes_the_smaller", "larger", support_header, "larger", "a > b ? a : b",
               "a < b ? a : b"),
       // The printer: each relational and arithmetic operator, literals and their suffixes.
       printed("printer_less_as_less_or_equal", "full_normal_velocity_change", kernels_header,
@@ -95,9 +96,9 @@ const std::vector<Mutation>& paper_class_mutations() {
               "cushion_normal_velocity_change", "return -(Scalar(2) * vn);", "return (Scalar(2) * vn);"),
       printed("printer_bare_double_literal", "plain_elastic_normal_velocity_change", kernels_header,
               "plain_elastic_normal_velocity_change", "Scalar(2) * m2", "2.0 * m2"),
-      printed("printer_float_suffix_dropped", "plain_mass_low", kernels_header, "plain_mass_low<float>",
+      printed("printer_float_suffix_dropped", "plain_mass_low", support_header, "plain_mass_low<float>",
               "0x1p-61f", "0x1p-61"),
-      printed("printer_float_suffix_on_double", "plain_mass_low", kernels_header, "plain_mass_low<double>",
+      printed("printer_float_suffix_on_double", "plain_mass_low", support_header, "plain_mass_low<double>",
               "0x1p-509", "0x1p-509f"),
       // The emitter: the arguments of every call a fast path prints, and which plain form it takes.
       printed("emitter_fast_call_masses_swapped", "normal_velocity_change", kernels_header,
@@ -113,18 +114,18 @@ const std::vector<Mutation>& paper_class_mutations() {
               "direction_velocity_change", "return plain_direction_velocity_change(",
               "return plain_approaching_direction_velocity_change("),
       // Printed support code: a wrong constant, an off-by-one exponent, a wrong range end, |x|.
-      printed("support_constant_off_by_one", "plain_mass_low", kernels_header, "plain_mass_low<double>",
+      printed("support_constant_off_by_one", "plain_mass_low", support_header, "plain_mass_low<double>",
               "0x1p-509", "0x1p-508"),
-      printed("support_generic_loop_off_by_one", "plain_mass_low", kernels_header, "plain_mass_low",
+      printed("support_generic_loop_off_by_one", "plain_mass_low", support_header, "plain_mass_low",
               "min_exponent) / 2;", "min_exponent) / 2 + 1;"),
-      printed("support_smallest_normal_off_by_one", "smallest_normal", kernels_header,
+      printed("support_smallest_normal_off_by_one", "smallest_normal", support_header,
               "smallest_normal<float>", "0x1p-126f", "0x1p-125f"),
       printed("support_predicate_range_end", "within_plain_mass_range", kernels_header,
               "within_plain_mass_range", "m2 <= plain_mass_high<Scalar>()", "m2 <= infinity<Scalar>()"),
       printed("support_predicate_bits_range_end", "within_plain_mass_range", kernels_header,
               "within_plain_mass_range", "bits_above(plain_mass_high<Scalar>(), low)",
               "bits_above(infinity<Scalar>(), low)"),
-      printed("support_absolute_value_sign", "absolute_value", kernels_header, "absolute_value", "? -x : x",
+      printed("support_absolute_value_sign", "absolute_value", support_header, "absolute_value", "? -x : x",
               "? x : -x"),
       // Parameter meanings, written from the definitions: D with its operands swapped (−D), a meaning
       // negated or two swapped.
@@ -192,16 +193,16 @@ const std::vector<Mutation>& spin_class_mutations() {
       printed("emitter_fast_call_arguments_swapped", "slide_time", spin_header, "slide_time",
               "plain_slide_time(slip_speed, sliding_friction, gravity)",
               "plain_slide_time(slip_speed, gravity, sliding_friction)"),
-      printed("support_moderate_loop_off_by_one", "moderate_low", spin_header, "moderate_low",
+      printed("support_moderate_loop_off_by_one", "moderate_low", support_header, "moderate_low",
               "max_exponent / 4 - 2", "max_exponent / 4 - 1"),
       // The bit helpers, one off: run from their text over every exponent, each answers wrongly somewhere.
-      printed("support_binary_exponent_bias_off_by_one", "binary_exponent", spin_header, "binary_exponent",
+      printed("support_binary_exponent_bias_off_by_one", "binary_exponent", support_header, "binary_exponent",
               "static_cast<int>(field) - bias", "static_cast<int>(field) - bias + 1"),
-      printed("support_binary_exponent_device_path_off_by_one", "binary_exponent", spin_header,
+      printed("support_binary_exponent_device_path_off_by_one", "binary_exponent", support_header,
               "binary_exponent", "return Scalar(std::ilogb(x));", "return Scalar(std::ilogb(x) - 1);"),
-      printed("support_times_power_of_two_bias_off_by_one", "times_power_of_two", spin_header,
+      printed("support_times_power_of_two_bias_off_by_one", "times_power_of_two", support_header,
               "times_power_of_two", "static_cast<Bits>(exponent + bias)", "static_cast<Bits>(exponent + bias + 1)"),
-      printed("support_times_power_of_two_clamp_off_by_one", "times_power_of_two", spin_header,
+      printed("support_times_power_of_two_clamp_off_by_one", "times_power_of_two", support_header,
               "times_power_of_two", "exponent >= 1 - bias", "exponent >= -bias"),
       meanings_swapped("meaning_roll_time_speed_and_gravity_swapped", "roll_time", "speed", "gravity"),
       uncited_claim_wrong("uncited_claim_linear_momentum", "conservation.linear_momentum"),

@@ -7,6 +7,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <string>
 
 using namespace billiards::derive;
@@ -137,9 +138,18 @@ TEST_CASE("Kernels", "[derive][emitter]") {
                    "test_kernel("));
     CHECK(contains(header, ") noexcept {"));
     CHECK_FALSE(contains(header, "pow("));
-    // Only the standard library: no Eigen, nothing of ours.
-    CHECK(contains(header, "#include <limits>\n"));
-    CHECK(header.find("#include") == header.rfind("#include"));
+    // The support header, then only the standard library: no Eigen.
+    CHECK(contains(header, "#include <billiards/kernel_support.hpp>\n\n#include <limits>\n"));
+    CHECK_FALSE(contains(header, "#include <Eigen"));
+    // The helpers are printed once, in the support header, which includes only the standard library.
+    CHECK_FALSE(contains(header, "/// |x|,"));
+    const std::string support = kernel_support_header();
+    CHECK(contains(support, "/// |x|,"));
+    CHECK(contains(support, "namespace billiards::kernels {"));
+    CHECK(std::count(support.begin(), support.end(), '#') > 0);
+    for (std::size_t at = support.find("#include "); at != std::string::npos; at = support.find("#include ", at + 1))
+      CHECK(support.compare(at, 10, "#include <") == 0);
+    CHECK_FALSE(contains(support, "#include <billiards"));
   }
 }
 
@@ -166,8 +176,8 @@ TEST_CASE("A fast path's predicate compares bits where its conditions are one in
   };
   SECTION("both masses in [low, high]: bits on the host, the comparisons on the device") {
     const std::string text = header();
-    CHECK(contains(text, "#include <bit>\n"));
-    CHECK(contains(text, "constexpr auto bits_above(Scalar x, Scalar low) noexcept {"));
+    CHECK(contains(kernel_support_header(), "#include <bit>\n"));
+    CHECK(contains(kernel_support_header(), "constexpr auto bits_above(Scalar x, Scalar low) noexcept {"));
     CHECK(contains(text,
                    "BILLIARDS_HOST_DEVICE constexpr bool in_range(Scalar m1, Scalar m2) noexcept {\n"
                    "#if !defined(__CUDA_ARCH__)\n"
@@ -227,7 +237,6 @@ TEST_CASE("A fast path's predicate compares bits where its conditions are one in
       const std::string text = header();
       CHECK(contains(text, "BILLIARDS_HOST_DEVICE constexpr bool in_range("));
       CHECK_FALSE(contains(text, "bits_above"));
-      CHECK_FALSE(contains(text, "#include <bit>"));
     }
   }
 }

@@ -178,7 +178,7 @@ TEST_CASE("The reader's round trip: a statement printed again is the text it was
 
 TEST_CASE("The bit helpers are run from their text over every exponent", "[derive][prover]") {
   const std::string header =
-      read_text(std::string(BILLIARDS_SOURCE_DIR) + "/generated/billiards/spin_kernels.hpp");
+      read_text(std::string(BILLIARDS_SOURCE_DIR) + "/generated/billiards/kernel_support.hpp");
   const std::vector<CppFunction> functions = read_functions(header);
   CHECK(prove_bit_helpers(functions).empty());
   SECTION("an exponent one off is found, in both formats") {

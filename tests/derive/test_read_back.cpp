@@ -18,6 +18,9 @@ using GiNaC::ex;
 
 namespace {
 
+// A kernels header as the prover reads it: the support header's helpers first.
+std::string with_support(const std::string& header) { return kernel_support_header() + header; }
+
 std::string replaced(std::string text, const std::string& from, const std::string& to) {
   const std::size_t at = text.find(from);
   REQUIRE(at != std::string::npos);
@@ -99,7 +102,7 @@ TEST_CASE("The reader of the emitted C++", "[derive][read_back]") {
 TEST_CASE("A printed header is proven from its text", "[derive][read_back]") {
   SECTION("every model's header, and the slips the reader must see") {
     for (const Derivation& derivation : {parkin2023::derive(), spinning::derive()}) {
-      const std::string header = kernels_header(derivation, "{}");
+      const std::string header = with_support(kernels_header(derivation, "{}"));
       INFO(derivation.model.name);
       CHECK(reasons(prove_printed(header, derivation.kernels, derivation.claims)).empty());
       // Each of these is a slip the reader must see: a relational operator changed, a function printed
@@ -172,7 +175,7 @@ TEST_CASE("A step that stops names itself and the claim it was building", "[deri
 TEST_CASE("Gappa proves each fast path's domain safe, from the plain form as printed",
           "[derive][read_back]") {
   const Derivation derivation = parkin2023::derive();
-  const std::string header = kernels_header(derivation, "{}");
+  const std::string header = with_support(kernels_header(derivation, "{}"));
   std::vector<RoundingBound> bounds;
   REQUIRE(reasons(billiards::derive::prove_printed(header, derivation.kernels, derivation.claims, bounds))
               .empty());
@@ -246,7 +249,7 @@ TEST_CASE("Gappa proves each fast path's domain safe, from the plain form as pri
           condition = condition.subs(plain_mass_low() == smallest_normal());
     }
     std::vector<RoundingBound> none;
-    CHECK_THAT(reasons(billiards::derive::prove_printed(kernels_header(widened, "{}"), widened.kernels,
+    CHECK_THAT(reasons(billiards::derive::prove_printed(with_support(kernels_header(widened, "{}")), widened.kernels,
                                                         widened.claims, none)),
                Catch::Contains("plain_elastic_normal_velocity_change: its rounding proof: in float"));
   }

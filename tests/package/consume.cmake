@@ -18,6 +18,7 @@ if(STEP STREQUAL "install")
                      share/cmake/billiards/billiardsTargets.cmake share/pkgconfig/billiards.pc
                      include/billiards/collision.hpp include/billiards/kernels.hpp include/billiards/version.hpp
                      include/billiards/spin.hpp include/billiards/cloth.hpp include/billiards/spin_kernels.hpp include/billiards/shot_kernels.hpp
+                     include/billiards/kernel_support.hpp
                      include/billiards/simulation/table.hpp include/billiards/simulation/gas.hpp
                      include/billiards/simulation/shot.hpp include/billiards/simulation/core/event_calendar.hpp
                      include/billiards/simulation/core/errors.hpp include/billiards/simulation/shot/detection.hpp

@@ -294,22 +294,22 @@ bool within_ulps(Scalar computed, long double exact, long double ulps) {
 
 }  // namespace
 
-TEMPLATE_TEST_CASE("kernels::spin::binary_exponent and times_power_of_two are std::ilogb and std::ldexp",
+TEMPLATE_TEST_CASE("kernels::binary_exponent and times_power_of_two are std::ilogb and std::ldexp",
                    "[runtime][spin]", float, double) {
   using Scalar = TestType;
-  namespace spin = billiards::kernels::spin;
+  namespace support = billiards::kernels;  // the helpers of billiards/kernel_support.hpp
   std::mt19937_64 random(29);
   std::uniform_int_distribution<int> exponent(-2 * std::numeric_limits<Scalar>::max_exponent - 60,
                                               2 * std::numeric_limits<Scalar>::max_exponent + 60);
   for (const Scalar x : billiards_test::every_kind_of<Scalar>(17, 3000)) {
     INFO("x = " << x);
     const bool ordinary = std::isfinite(x) && x != 0;
-    CHECK(spin::binary_exponent(x) == (ordinary ? Scalar(std::ilogb(x)) : Scalar(0)));
+    CHECK(support::binary_exponent(x) == (ordinary ? Scalar(std::ilogb(x)) : Scalar(0)));
     if (ordinary)
-      CHECK(std::ldexp(x, -std::ilogb(x)) == spin::times_power_of_two(x, -spin::binary_exponent(x)));
+      CHECK(std::ldexp(x, -std::ilogb(x)) == support::times_power_of_two(x, -support::binary_exponent(x)));
     for (const int k : {0, 1, -1, 4096, -4096, 5000, -5000, exponent(random), exponent(random)}) {
       INFO("k = " << k);
-      const Scalar expected = std::ldexp(x, k), scaled = spin::times_power_of_two(x, Scalar(k));
+      const Scalar expected = std::ldexp(x, k), scaled = support::times_power_of_two(x, Scalar(k));
       if (std::isnan(x)) {
         CHECK(std::isnan(scaled));
       } else {
@@ -318,7 +318,7 @@ TEMPLATE_TEST_CASE("kernels::spin::binary_exponent and times_power_of_two are st
     }
   }
   // A NaN exponent is clamped, not converted (which would be undefined): 1 · 2^−4096 is +0.
-  CHECK(spin::times_power_of_two(Scalar(1), std::numeric_limits<Scalar>::quiet_NaN()) == Scalar(0));
+  CHECK(support::times_power_of_two(Scalar(1), std::numeric_limits<Scalar>::quiet_NaN()) == Scalar(0));
 }
 
 TEMPLATE_TEST_CASE("The spin kernels over the whole exponent range, against long double", "[runtime][spin]",

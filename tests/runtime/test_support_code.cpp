@@ -1,4 +1,4 @@
-// The bit manipulation printed beside the kernels — binary_exponent, times_power_of_two and the range
+// The bit manipulation printed for the kernels (billiards/kernel_support.hpp) — binary_exponent, times_power_of_two and the range
 // tests on bits (bits_above, larger) — checked over every exponent of float and double against exact
 // references: long double, whose range holds every x · 2^k exactly, and the comparisons the range tests
 // stand for. Built twice: as host code, and with BILLIARDS_TEST_DEVICE_PATH, which defines __CUDA_ARCH__
@@ -16,6 +16,7 @@
 #include <billiards/spin_kernels.hpp>
 
 namespace spin = billiards::kernels::spin;
+namespace support = billiards::kernels;  // the helpers of billiards/kernel_support.hpp
 
 namespace {
 
@@ -55,11 +56,11 @@ TEMPLATE_TEST_CASE("binary_exponent is ⌊log2 |x|⌋ at every exponent, 0 for �
     // frexp gives x = f 2^e with f in [1/2, 1): ⌊log2 |x|⌋ = e − 1, exactly, subnormals included.
     std::frexp(static_cast<long double>(x), &exponent);
     INFO("x = " << x);
-    CHECK(spin::binary_exponent(x) == Scalar(exponent - 1));
+    CHECK(support::binary_exponent(x) == Scalar(exponent - 1));
   }
   for (const Scalar special :
        {Scalar(0), -Scalar(0), limits::infinity(), -limits::infinity(), limits::quiet_NaN()})
-    CHECK(spin::binary_exponent(special) == Scalar(0));
+    CHECK(support::binary_exponent(special) == Scalar(0));
 }
 
 TEMPLATE_TEST_CASE("times_power_of_two is x · 2^k rounded once, for every exponent of x and of the result",
@@ -77,24 +78,24 @@ TEMPLATE_TEST_CASE("times_power_of_two is x · 2^k rounded once, for every expon
   for (int k = -span; k <= span; ++k) {
     for (const Scalar x : {Scalar(1), Scalar(-1.5)}) {
       INFO("x = " << x << ", k = " << k);
-      CHECK(same_bits(spin::times_power_of_two(x, Scalar(k)), expected(x, k)));
+      CHECK(same_bits(support::times_power_of_two(x, Scalar(k)), expected(x, k)));
     }
   }
   // Every x, moved by the k that take it to each end of the range and over it.
   for (const Scalar x : xs) {
-    const int e = static_cast<int>(spin::binary_exponent(x));
+    const int e = static_cast<int>(support::binary_exponent(x));
     for (const int k : {0, 1, -1, -e, limits::max_exponent - 1 - e, limits::max_exponent - e,
                         limits::min_exponent - 1 - e, limits::min_exponent - limits::digits - e,
                         limits::min_exponent - limits::digits - 1 - e, 4096, -4096, 5000, -5000}) {
       INFO("x = " << x << ", k = " << k);
-      CHECK(same_bits(spin::times_power_of_two(x, Scalar(k)), expected(x, k)));
+      CHECK(same_bits(support::times_power_of_two(x, Scalar(k)), expected(x, k)));
     }
   }
   // ±0, ±∞ and NaN stay as they are; a NaN exponent is clamped to −4096, not converted.
-  CHECK(same_bits(spin::times_power_of_two(-Scalar(0), Scalar(7)), -Scalar(0)));
-  CHECK(spin::times_power_of_two(limits::infinity(), Scalar(-7)) == limits::infinity());
-  CHECK(std::isnan(spin::times_power_of_two(limits::quiet_NaN(), Scalar(3))));
-  CHECK(spin::times_power_of_two(Scalar(1), limits::quiet_NaN()) == Scalar(0));
+  CHECK(same_bits(support::times_power_of_two(-Scalar(0), Scalar(7)), -Scalar(0)));
+  CHECK(support::times_power_of_two(limits::infinity(), Scalar(-7)) == limits::infinity());
+  CHECK(std::isnan(support::times_power_of_two(limits::quiet_NaN(), Scalar(3))));
+  CHECK(support::times_power_of_two(Scalar(1), limits::quiet_NaN()) == Scalar(0));
 }
 
 TEMPLATE_TEST_CASE("The range tests on bits are the comparisons they stand for, at every exponent",
@@ -102,8 +103,8 @@ TEMPLATE_TEST_CASE("The range tests on bits are the comparisons they stand for, 
   using Scalar = TestType;
   using limits = std::numeric_limits<Scalar>;
   std::vector<Scalar> xs = every_exponent<Scalar>();
-  for (const Scalar end : {spin::plain_mass_low<Scalar>(), spin::plain_mass_high<Scalar>(),
-                           spin::moderate_low<Scalar>(), spin::moderate_high<Scalar>()}) {
+  for (const Scalar end : {support::plain_mass_low<Scalar>(), support::plain_mass_high<Scalar>(),
+                           support::moderate_low<Scalar>(), support::moderate_high<Scalar>()}) {
     xs.push_back(end);
     xs.push_back(std::nextafter(end, Scalar(0)));
     xs.push_back(std::nextafter(end, limits::infinity()));
@@ -112,8 +113,8 @@ TEMPLATE_TEST_CASE("The range tests on bits are the comparisons they stand for, 
                                limits::quiet_NaN(), limits::denorm_min(), limits::max()})
     xs.push_back(special);
   const auto in = [](Scalar x, Scalar low, Scalar high) { return low <= x && x <= high; };
-  const Scalar mass_low = spin::plain_mass_low<Scalar>(), mass_high = spin::plain_mass_high<Scalar>();
-  const Scalar low = spin::moderate_low<Scalar>(), high = spin::moderate_high<Scalar>();
+  const Scalar mass_low = support::plain_mass_low<Scalar>(), mass_high = support::plain_mass_high<Scalar>();
+  const Scalar low = support::moderate_low<Scalar>(), high = support::moderate_high<Scalar>();
   const Scalar one = Scalar(1);
   for (const Scalar x : xs) {
     INFO("x = " << x);
