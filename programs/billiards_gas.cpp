@@ -7,9 +7,9 @@
 //                 [--seed S] [--json FILE] [--read SNAPSHOT] [--write SNAPSHOT] [--blocks B]
 //                 [--series CSV] [--snapshots XYZ --snapshot-every T] [--method automatic|cells|lists]
 //
-// --read starts from a snapshot (.sph, or extended XYZ: .xyz or .extxyz; see snapshot_io.hpp) instead of
-// the lattice: its dimension, balls and box, each ball's radius and mass, and its velocities (or Gaussian
-// ones at kT = 1, --seed, where it has none). --write writes the state at the end as a snapshot, each
+// --read starts from a snapshot (.sph, or extended XYZ: .xyz or .extxyz; billiards/io/snapshots.hpp)
+// instead of the lattice: its dimension, balls and box, each ball's radius and mass, and its velocities
+// (or Gaussian ones at kT = 1, --seed, where it has none). --write writes the state at the end as a snapshot, each
 // ball's species as it was read. --series writes the measured span's time series, one CSV row a block:
 // time, collisions, Z, pressure, kT, mean squared displacement (unwrapped positions), collisions a ball
 // a unit of time. --snapshots writes extended XYZ frames every --snapshot-every of the gas's time over
