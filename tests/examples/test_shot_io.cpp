@@ -81,3 +81,30 @@ TEST_CASE("A shot's trajectories and events as files", "[io][shot]") {
     CHECK(json.find("\"size\": \"9ft\"") != std::string::npos);
   }
 }
+
+TEST_CASE("The events JSON's start: the balls as placed, the strike applied, before any contact", "[io][shot]") {
+  // The cue ball frozen to an object ball: the strike and the contact both at t = 0. The start holds the
+  // object ball at rest (before the contact) and the cue ball as struck.
+  const PoolTable table = pool_table("9ft");
+  const PoolPhysics physics;
+  std::vector<PoolBall> balls(2);
+  balls[0].position = {1, 0.6, physics.radius};
+  const double touching = 1 + 2 * physics.radius * (1 - 1e-12);  // within rounding: touching now
+  balls[1].position = {touching, 0.6, physics.radius};
+  Shot shot(table, physics, balls);
+  shot.strike(0, billiards::Cue<double>{0.567, 2.0});
+  shot.play();
+  REQUIRE(shot.events().size() > 1);
+  REQUIRE(shot.events()[1].kind == ShotEvent::Kind::ball);
+  REQUIRE(shot.events()[1].time == 0);
+  const std::string json = shot_json(shot, "9ft");
+  const std::size_t start = json.find("\"start\": ["), events = json.find("\"events\": [");
+  REQUIRE(start < events);
+  const std::string section = json.substr(start, events - start);
+  CHECK(section.find("{\"ball\": 1, \"position\": [" + json_number(touching) +
+                     ", 0.59999999999999998], \"velocity\": [0, 0]") != std::string::npos);
+  CHECK(section.find("{\"ball\": 0, \"position\": [1, 0.59999999999999998], \"velocity\": [" +
+                     json_number(shot.events()[0].first_after.velocity.x())) != std::string::npos);
+  // The balls at t = 0 after every event there are not the start: ball 1 moves.
+  CHECK(shot.balls_at(0)[1].velocity.x() > 0);
+}

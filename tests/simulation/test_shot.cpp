@@ -344,6 +344,23 @@ TEST_CASE("Shot: bad balls, physics and cues are named", "[simulation][shot]") {
   PoolBall nan = ball_at(1, 0.6, R);
   nan.angular_velocity.x() = std::nan("");
   CHECK_THROWS_WITH(Shot(table, physics, {nan}), Catch::Contains("not finite"));
+  // Every ball's velocity and spin within the component limit, struck or not: at 1e300 m/s the kinetic
+  // energy is infinite. The limit itself passes.
+  const double limit = billiards::component_limit<double>();
+  PoolBall fast = ball_at(1.5, 0.6, R);
+  fast.velocity.x() = 1e300;
+  CHECK_THROWS_WITH(Shot(table, physics, {ball_at(1, 0.6, R), fast}),
+                    Catch::StartsWith("ball 1 has velocity (1e+300, 0, 0) m/s, expected components of magnitude at most"));
+  fast.velocity.x() = limit;
+  CHECK_NOTHROW(Shot(table, physics, {ball_at(1, 0.6, R), fast}));
+  PoolBall spinning = ball_at(1.5, 0.6, R);
+  spinning.angular_velocity.z() = 1.01 * limit / R;
+  CHECK_THROWS_WITH(Shot(table, physics, {spinning}),
+                    Catch::StartsWith("ball 0 has spin (") && Catch::Contains("times the radius"));
+  PoolBall pocketed = fast;
+  pocketed.velocity.x() = -1e300;
+  pocketed.pocketed = true;
+  CHECK_THROWS_WITH(Shot(table, physics, {ball_at(1, 0.6, R), pocketed}), Catch::StartsWith("ball 1 has velocity"));
   PoolPhysics bad = physics;
   bad.cushion_restitution = 1.5;
   CHECK_THROWS_WITH(Shot(table, bad, {}), "Shot: physics.cushion_restitution is 1.5, expected in [0, 1]");

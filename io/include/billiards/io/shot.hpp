@@ -111,7 +111,8 @@ inline std::string colour(std::size_t i) {
 
 }  // namespace shot_detail
 
-/// The shot as JSON: the table, the physics, the balls at the start, every event (time, kind, the balls,
+/// The shot as JSON: the table, the physics, the balls at the start (as placed, the strikes at t = 0
+/// applied, before any contact), every event (time, kind, the balls,
 /// the cushion, jaw or pocket, the phases, and the balls' states after it), the balls at rest and the
 /// pocketed balls.
 inline std::string shot_json(const Shot& shot, const std::string& table_name) {
@@ -133,7 +134,13 @@ inline std::string shot_json(const Shot& shot, const std::string& table_name) {
     for (std::size_t i = 0; i < balls.size(); ++i) text += (i ? ",\n    " : "\n    ") + state_json(i, balls[i]);
     return text + "\n  ]";
   };
-  out << "  \"start\": " << balls_json(shot.balls_at(0)) << ",\n  \"events\": [";
+  // The balls as placed, with the strikes at t = 0 applied: before any contact at t = 0.
+  std::vector<PoolBall> start = shot.placed();
+  for (const ShotEvent& e : shot.events()) {
+    if (e.kind != ShotEvent::Kind::strike || e.time != 0) break;
+    start[e.first] = e.first_after;
+  }
+  out << "  \"start\": " << balls_json(start) << ",\n  \"events\": [";
   const auto& events = shot.events();
   for (std::size_t k = 0; k < events.size(); ++k) {
     const ShotEvent& e = events[k];

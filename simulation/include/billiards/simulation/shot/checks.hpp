@@ -51,8 +51,11 @@ inline void validate(const PoolTable& table, const PoolPhysics& p) {
 }
 
 /// Throws std::invalid_argument naming the ball where `balls` cannot start a shot on `table` with balls
-/// of radius R: a state not finite; a ball in play whose centre is not on the cloth at least a radius
-/// inside every cushion's nose, or whose velocity is not horizontal; two balls in play overlapping.
+/// of radius R: a state not finite; a velocity component, or R times a spin component, beyond
+/// billiards::component_limit (the checked calls' bound, within which the kinetic energy and every
+/// contact stay finite), struck or not; a ball in play whose centre is not on the cloth at least a
+/// radius inside every cushion's nose, or whose velocity is not horizontal; two balls in play
+/// overlapping.
 inline void validate(const std::vector<PoolBall>& balls, const PoolTable& table, double R) {
   using detail::shortest;
   for (std::size_t i = 0; i < balls.size(); ++i) {
@@ -60,6 +63,15 @@ inline void validate(const std::vector<PoolBall>& balls, const PoolTable& table,
     const auto fail = [&](const std::string& what) { throw std::invalid_argument("ball " + std::to_string(i) + " " + what); };
     if (!b.position.allFinite() || !b.velocity.allFinite() || !b.angular_velocity.allFinite())
       fail("has a position, velocity or spin that is not finite");
+    const double limit = billiards::component_limit<double>();
+    const auto bounded = [&](const char* what, const Eigen::Vector3d& v, double scale, const char* unit) {
+      if (!(scale * v.cwiseAbs().maxCoeff() <= limit))
+        fail("has " + std::string(what) + " (" + shortest(v.x()) + ", " + shortest(v.y()) + ", " + shortest(v.z()) +
+             ")" + unit + ", expected components" + (scale == 1 ? "" : " times the radius") + " of magnitude at most " +
+             shortest(limit) + " (billiards::component_limit: within it the energy and every contact stay finite)");
+    };
+    bounded("velocity", b.velocity, 1, " m/s");
+    bounded("spin", b.angular_velocity, R, " rad/s");
     if (b.pocketed) continue;
     const double x = b.position.x(), y = b.position.y(), slack = R * overlap_tolerance;
     if (!(x >= R - slack && x <= table.length - R + slack && y >= R - slack && y <= table.width - R + slack))

@@ -22,6 +22,13 @@ namespace billiards::simulation::shot {
 /// Each ball's states at its events, in time order.
 class History {
  public:
+  /// Every ball's first state: as placed.
+  [[nodiscard]] std::vector<PoolBall> first() const {
+    std::vector<PoolBall> out;
+    out.reserve(frames_.size());
+    for (const std::vector<Keyframe>& frames : frames_) out.push_back(as_pool_ball(frames.front().state, frames.front().pocketed));
+    return out;
+  }
   /// Ball `ball`'s state from time `time` on (until its next keyframe).
   void add(std::size_t ball, double time, const BallOnCloth<double>& state, bool pocketed) {
     if (frames_.size() <= ball) frames_.resize(ball + 1);

@@ -220,6 +220,9 @@ class Shot {
   [[nodiscard]] double time() const noexcept { return now_; }
   /// The balls now (at time()).
   [[nodiscard]] std::vector<PoolBall> balls() const { return balls_at(now_); }
+  /// The balls as placed, before any event (their centres at the cloth's height R, a pocketed ball at
+  /// rest).
+  [[nodiscard]] std::vector<PoolBall> placed() const { return history_.first(); }
   /// The balls at any time `t` ≥ 0 of the shot so far, and on beyond its last event (each ball moved by
   /// its phases from its last event at or before `t`): the trajectories, sampled at any rate. At the time
   /// of an event, the states after it.
