@@ -3,8 +3,8 @@
 #include "audit/audit.hpp"
 #include "core/output_files.hpp"
 #include "emit/emitter.hpp"
-#include "prove/read_back.hpp"
 #include "emit/validate.hpp"
+#include "prove/read_back.hpp"
 
 #include <CLI/CLI.hpp>
 #include <billiards_support/cli_checks.hpp>
@@ -72,9 +72,10 @@ int run_model(const ModelEntry& entry, const fs::path& folder, const std::vector
   // Every kernel (the reference kernels aside) has a proven error bound: it states where.
   for (const Kernel& kernel : derivation.kernels) {
     if (kernel.domain.empty() && kernel.rounding_cases.empty())
-      problems.push_back({kernel.name, kernel.equals,
-                          "no rounding bound: it states neither a domain nor the cases its rounding is proven "
-                          "over"});
+      problems.push_back(
+          {kernel.name, kernel.equals,
+           "no rounding bound: it states neither a domain nor the cases its rounding is proven "
+           "over"});
   }
   // A prover that answered a canary wrongly proves nothing: the kernels are left unproven.
   for (const CanaryOutcome& canary : canaries) {
@@ -87,7 +88,9 @@ int run_model(const ModelEntry& entry, const fs::path& folder, const std::vector
   if (verified) {
     // The kernels are read with the helpers they call: the support header's text, as printed, first.
     const std::vector<Header> printed = headers("");
-    const std::string support = printed.front().text;
+    const std::string support = std::find_if(printed.begin(), printed.end(), [](const Header& h) {
+                                  return h.path == kernel_support_path;
+                                })->text;
     for (const Header& header : printed) {
       if (header.path == kernel_support_path) continue;
       const std::vector<KernelProblem> found =
@@ -147,7 +150,8 @@ int derive_main(int argc, const char* const* argv, const std::vector<ModelEntry>
       "claim failed, a kernel is not proven or one of the prover's canaries (its own checks, asked first) "
       "answered wrongly (each is named on stderr; the audit is still written, the kernels are not), 2 on a "
       "usage error, 3 when an output cannot be written.\n"
-      "Environment: BILLIARDS_PROOF_CACHE=DIR keeps Gappa's answers in DIR and takes them from there on later "
+      "Environment: BILLIARDS_PROOF_CACHE=DIR keeps Gappa's answers in DIR and takes them from there on "
+      "later "
       "runs (the same Gappa version and script only); unset, every proof is run.");
   try {
     app.parse(argc, argv);

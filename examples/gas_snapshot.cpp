@@ -19,8 +19,8 @@ int main(int argc, char** argv) {
   Gas<3> again(billiards::io::gas_setup<3>(read, file.string(), 1));
   const double drift = (again.energy() - gas.energy()) / gas.energy();
   std::printf("%llu collisions to t = %.4f; %s holds %zu balls, energy %.17g (read back: %.1e apart)\n",
-              static_cast<unsigned long long>(ran), gas.time(), file.c_str(), again.balls().size(), gas.energy(),
-              drift);
+              static_cast<unsigned long long>(ran), gas.time(), file.c_str(), again.balls().size(),
+              gas.energy(), drift);
   again.run_until(again.time() + 1.0);
   std::printf("run on from the snapshot to t = %.4f: %llu collisions\n", again.time(),
               static_cast<unsigned long long>(again.event_count()));

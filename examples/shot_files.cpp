@@ -18,6 +18,6 @@ int main(int argc, char** argv) {
   billiards::io::write_file_atomically(folder / "break.json", billiards::io::shot_json(shot, "9ft"));
   billiards::io::write_file_atomically(folder / "break.csv", billiards::io::trajectories_csv(shot, 100));
   billiards::io::write_file_atomically(folder / "break.svg", billiards::io::shot_svg(shot, "A 9-ball break"));
-  std::printf("%zu events to rest after %.3f s: break.json, break.csv, break.svg in %s\n", shot.events().size(),
-              shot.time(), folder.c_str());
+  std::printf("%zu events to rest after %.3f s: break.json, break.csv, break.svg in %s\n",
+              shot.events().size(), shot.time(), folder.c_str());
 }

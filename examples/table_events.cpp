@@ -18,8 +18,9 @@ int main() {
     std::printf("t = %.4f s: %s, ball %zu and %s %zu\n", e.time, kind_name(e.kind), e.first,
                 e.kind == TableEvent::Kind::ball ? "ball" : "cushion", e.second);
   });
-  std::printf("%llu events; at t = %.1f s the energy is %.6f J\n", static_cast<unsigned long long>(ran), table.time(),
-              table.energy());
-  for (const Ball<2>& b : table.balls()) std::printf("  (%.4f, %.4f) moving at (%.4f, %.4f)\n", b.position.x(),
-                                                      b.position.y(), b.velocity.x(), b.velocity.y());
+  std::printf("%llu events; at t = %.1f s the energy is %.6f J\n", static_cast<unsigned long long>(ran),
+              table.time(), table.energy());
+  for (const Ball<2>& b : table.balls())
+    std::printf("  (%.4f, %.4f) moving at (%.4f, %.4f)\n", b.position.x(), b.position.y(), b.velocity.x(),
+                b.velocity.y());
 }

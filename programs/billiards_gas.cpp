@@ -9,8 +9,8 @@
 //
 // --read starts from a snapshot (.sph, or extended XYZ: .xyz or .extxyz; billiards/io/snapshots.hpp)
 // instead of the lattice: its dimension, balls and box, each ball's radius and mass, and its velocities
-// (or Gaussian ones at kT = 1, --seed, where it has none). --write writes the state at the end as a snapshot, each
-// ball's species as it was read. --series writes the measured span's time series, one CSV row a block:
+// (or Gaussian ones at kT = 1, --seed, where it has none). --write writes the state at the end as a snapshot,
+// each ball's species as it was read. --series writes the measured span's time series, one CSV row a block:
 // time, collisions, Z, pressure, kT, mean squared displacement (unwrapped positions), collisions a ball
 // a unit of time. --snapshots writes extended XYZ frames every --snapshot-every of the gas's time over
 // the measured span, from its start.
@@ -68,32 +68,38 @@ std::optional<int> parse(int argc, char** argv, Command& c) {
   app.add_option("--seed", c.options.seed, "Seed of the initial velocities (default 1)")->check(count(0));
   app.add_option("--json", c.json_file, "Write the JSON object to FILE (default: standard output)")
       ->check(billiards_support::path_given("a file's path"));
-  CLI::Option* read = app.add_option("--read", c.read_file,
-                                     "Start from the snapshot FILE (.sph, .xyz or .extxyz) instead of the lattice")
-                          ->check(billiards_support::path_given("a snapshot file's path"));
-  app.add_option("--write", c.write_file, "Write the state at the end to the snapshot FILE (.sph, .xyz or .extxyz)")
+  CLI::Option* read =
+      app.add_option("--read", c.read_file,
+                     "Start from the snapshot FILE (.sph, .xyz or .extxyz) instead of the lattice")
+          ->check(billiards_support::path_given("a snapshot file's path"));
+  app.add_option("--write", c.write_file,
+                 "Write the state at the end to the snapshot FILE (.sph, .xyz or .extxyz)")
       ->check(billiards_support::path_given("a snapshot file's path"));
-  for (const char* lattice : {"--dimension", "--balls", "--packing-fraction"}) read->excludes(app.get_option(lattice));
+  for (const char* lattice : {"--dimension", "--balls", "--packing-fraction"})
+    read->excludes(app.get_option(lattice));
   app.add_option("--blocks", c.options.blocks,
-                 "Blocks the measured collisions are cut into, for the errors and the time series (default 10; at most "
+                 "Blocks the measured collisions are cut into, for the errors and the time series (default "
+                 "10; at most "
                  "--events)")
       ->check(count(1));
   app.add_option("--series", c.series_file, "Write the time series, one CSV row a block, to FILE")
       ->check(billiards_support::path_given("a file's path"));
-  CLI::Option* snapshots = app.add_option("--snapshots", c.snapshots_file,
-                                          "Write extended XYZ frames (.xyz or .extxyz) every --snapshot-every to FILE")
-                               ->check(billiards_support::path_given("a snapshot file's path"));
+  CLI::Option* snapshots =
+      app.add_option("--snapshots", c.snapshots_file,
+                     "Write extended XYZ frames (.xyz or .extxyz) every --snapshot-every to FILE")
+          ->check(billiards_support::path_given("a snapshot file's path"));
   CLI::Option* every = app.add_option("--snapshot-every", c.options.snapshot_interval,
                                       "The gas's time between the frames of --snapshots (positive)")
                            ->check(billiards_support::finite_number(false));
   snapshots->needs(every);
   every->needs(snapshots);
-  app.add_option("--method", c.method, "How pairs are found: automatic (default), cells or lists (neighbour lists)")
+  app.add_option("--method", c.method,
+                 "How pairs are found: automatic (default), cells or lists (neighbour lists)")
       ->check(CLI::IsMember({"automatic", "cells", "lists"}));
   if (const std::optional<int> code = billiards_support::parse_command_line(app, argc, argv)) return code;
   c.options.method = c.method == "cells"   ? billiards::simulation::GasMethod::cells
-                   : c.method == "lists" ? billiards::simulation::GasMethod::neighbour_lists
-                                       : billiards::simulation::GasMethod::automatic;
+                     : c.method == "lists" ? billiards::simulation::GasMethod::neighbour_lists
+                                           : billiards::simulation::GasMethod::automatic;
   return std::nullopt;
 }
 
@@ -118,7 +124,8 @@ std::optional<int> check(Command& c, billiards::io::Snapshot& start) {
   }
   try {
     if (!c.snapshots_file.empty() && !billiards::io::is_extended_xyz(c.snapshots_file))
-      throw std::invalid_argument(c.snapshots_file + ": frames are written as extended XYZ, expected .xyz or .extxyz");
+      throw std::invalid_argument(c.snapshots_file +
+                                  ": frames are written as extended XYZ, expected .xyz or .extxyz");
   } catch (const std::invalid_argument& error) {
     std::cerr << "billiards-gas: --snapshots: " << error.what() << "\n";
     return 2;
@@ -137,7 +144,8 @@ std::optional<int> check(Command& c, billiards::io::Snapshot& start) {
     return 2;
   }
   if (c.options.dimension == 2 && !c.write_file.empty() && !billiards::io::is_extended_xyz(c.write_file)) {
-    std::cerr << "billiards-gas: --write: " << c.write_file << ": a .sph snapshot is 3-D, expected .xyz or .extxyz for disks\n";
+    std::cerr << "billiards-gas: --write: " << c.write_file
+              << ": a .sph snapshot is 3-D, expected .xyz or .extxyz for disks\n";
     return 2;
   }
   return std::nullopt;
@@ -149,11 +157,13 @@ template <int D>
 billiards::simulation::gas::Result measure(const Command& c, const billiards::io::Snapshot& start) {
   std::optional<billiards::simulation::Gas<D>> gas;
   if (c.read_file.empty()) {
-    gas.emplace(billiards::simulation::gas::lattice<D>(c.options), c.options.max_events_without_collision, c.options.method);
+    gas.emplace(billiards::simulation::gas::lattice<D>(c.options), c.options.max_events_without_collision,
+                c.options.method);
   } else {
     // The snapshot's own checks name the file and line; the gas's (overlaps, the box's size) the file.
     try {
-      const billiards::simulation::GasSetup<D> setup = billiards::io::gas_setup<D>(start, c.read_file, c.options.seed);
+      const billiards::simulation::GasSetup<D> setup =
+          billiards::io::gas_setup<D>(start, c.read_file, c.options.seed);
       gas.emplace(setup, c.options.max_events_without_collision, c.options.method);
     } catch (const std::invalid_argument& error) {
       const std::string what = error.what();
@@ -175,14 +185,16 @@ billiards::simulation::gas::Result measure(const Command& c, const billiards::io
                << ": more than 100000 frames or 10^8 particle lines, expected a longer interval";
           throw std::invalid_argument(text.str());
         }
-        frames->append(billiards::io::extended_xyz_text(billiards::io::snapshot_of(now.setup(), now.time(), species)));
+        frames->append(
+            billiards::io::extended_xyz_text(billiards::io::snapshot_of(now.setup(), now.time(), species)));
       });
   if (frames) frames->commit();
   if (!c.write_file.empty()) {
     billiards::io::write_snapshot_file(c.write_file,
-                                           billiards::io::snapshot_of(gas->setup(), gas->time(), species));
+                                       billiards::io::snapshot_of(gas->setup(), gas->time(), species));
   }
-  if (!c.series_file.empty()) billiards::io::write_file_atomically(c.series_file, billiards::io::series_csv(r));
+  if (!c.series_file.empty())
+    billiards::io::write_file_atomically(c.series_file, billiards::io::series_csv(r));
   return r;
 }
 

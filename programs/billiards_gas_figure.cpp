@@ -7,8 +7,8 @@
 // Writes FOLDER/gas_equation_of_state.svg and prints each run's Z beside its equation of state. Exit
 // status: 0; 1 when a run's Z is farther from its equation of state than 3 % plus five standard
 // errors; 2 on a bad command line; 3 when the SVG cannot be written.
-#include <billiards/simulation/gas.hpp>
 #include <billiards/io/plot.hpp>
+#include <billiards/simulation/gas.hpp>
 
 #include <billiards/io/atomic_file.hpp>
 #include <billiards_support/cli_checks.hpp>

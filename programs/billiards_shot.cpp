@@ -11,9 +11,9 @@
 // Exit status: 0 when the shot came to rest; 1 when it did not (more than --event-limit events) or an
 // invariant broke; 2 on a bad command line or setup (one line on stderr naming what and why); 3 when an
 // output file or standard output cannot be written.
+#include <billiards/io/shot.hpp>
 #include <billiards_support/cli_checks.hpp>
 #include <billiards_support/standard_output.hpp>
-#include <billiards/io/shot.hpp>
 
 #include <billiards/simulation/shot.hpp>
 
@@ -31,13 +31,15 @@ namespace {
 // "A,B": two finite numbers; throws std::invalid_argument naming the option.
 std::pair<double, double> parse_offset(const std::string& text) {
   const auto comma = text.find(',');
-  const std::string expected = ", expected A,B: the side and up offsets in units of the radius, a^2 + b^2 < 1";
+  const std::string expected =
+      ", expected A,B: the side and up offsets in units of the radius, a^2 + b^2 < 1";
   if (comma == std::string::npos)
     throw std::invalid_argument("--offset: '" + billiards::io::excerpt(text) + "' has no comma" + expected);
   const double a = billiards::io::parse_number(text.substr(0, comma), "--offset: ", "a number");
   const double b = billiards::io::parse_number(text.substr(comma + 1), "--offset: ", "a number");
   if (!(a * a + b * b < 1))
-    throw std::invalid_argument("--offset: '" + billiards::io::excerpt(text) + "' is off the ball" + expected);
+    throw std::invalid_argument("--offset: '" + billiards::io::excerpt(text) + "' is off the ball" +
+                                expected);
   return {a, b};
 }
 
@@ -54,6 +56,7 @@ struct Options {
 
 // The balls, and where a setup file placed them, the physics and the cue's offsets.
 struct Loaded {
+  PoolTable table;  // the table the options or the setup file name
   PoolPhysics physics;
   std::vector<PoolBall> balls;
   std::vector<std::string> origins;  // each ball's "FILE:LINE: " where a setup file placed them
@@ -77,35 +80,46 @@ std::optional<int> parse(int argc, char** argv, Options& o) {
   app.add_option("--jitter", o.jitter, "The rack's gaps as a fraction of the radius, in [0, 1] (default 0)")
       ->check(finite_number(false));
   app.add_option("--seed", o.seed, "The seed of the rack's jitter (default 0)")->check(count_at_least(0));
-  app.add_option("--setup", o.setup_file, "Read the balls (and the table) from FILE (format: programs/README.md)")
+  app.add_option("--setup", o.setup_file,
+                 "Read the balls (and the table) from FILE (format: programs/README.md)")
       ->check(path_given("a setup file's path"))
       ->excludes(rack_option);
-  app.add_option("--ball", o.ball, "The ball the cue strikes (default 0, the cue ball)")->check(count_at_least(0));
+  app.add_option("--ball", o.ball, "The ball the cue strikes (default 0, the cue ball)")
+      ->check(count_at_least(0));
   app.add_option("--speed", o.speed, "The cue's speed in m/s (default 8)")->check(finite_number(false));
-  app.add_option("--azimuth", o.azimuth, "The cue's direction in degrees from +x, the table's length (default 0)");
+  app.add_option("--azimuth", o.azimuth,
+                 "The cue's direction in degrees from +x, the table's length (default 0)");
   app.add_option("--elevation", o.elevation, "The cue's elevation in degrees, in [0, 90) (default 0)")
       ->check(finite_number(false));
   app.add_option("--offset", o.offset_text,
                  "The tip's offsets A,B from the ball's centre in units of the radius: A to the right, B up "
                  "(default 0,0)");
-  app.add_option("--cue-mass", o.cue_mass, "The cue's mass in kg (default 0.567)")->check(finite_number(true));
+  app.add_option("--cue-mass", o.cue_mass, "The cue's mass in kg (default 0.567)")
+      ->check(finite_number(true));
   app.add_option("--tip-restitution", o.tip_restitution, "The tip's restitution in [0, 1] (default 1)")
       ->check(finite_number(false));
-  app.add_option("--event-limit", o.event_limit, "Stop with exit status 1 beyond this many events (default 100000)")
+  app.add_option("--event-limit", o.event_limit,
+                 "Stop with exit status 1 beyond this many events (default 100000)")
       ->check(count_at_least(1));
   app.add_option("--check-invariants", o.check_invariants,
                  "Check overlaps, the cloth and the energy at every event (default true)");
-  app.add_option("--json", o.json_file, "Write the events as JSON to FILE")->check(path_given("a file's path"));
+  app.add_option("--json", o.json_file, "Write the events as JSON to FILE")
+      ->check(path_given("a file's path"));
   app.add_option("--svg", o.svg_file, "Write the shot as SVG to FILE")->check(path_given("a file's path"));
-  app.add_option("--html", o.html_file, "Write a page that animates the shot to FILE")->check(path_given("a file's path"));
+  app.add_option("--html", o.html_file, "Write a page that animates the shot to FILE")
+      ->check(path_given("a file's path"));
   app.add_option("--trajectories", o.trajectories_file, "Write the trajectories as CSV to FILE")
       ->check(path_given("a file's path"));
-  app.add_option("--rate", o.rate, "Samples per second of the trajectories and the page (default 100, at most 10000)")
+  app.add_option("--rate", o.rate,
+                 "Samples per second of the trajectories and the page (default 100, at most 10000)")
       ->check(finite_number(true));
   if (const std::optional<int> code = billiards_support::parse_command_line(app, argc, argv)) return code;
-  if (!std::isfinite(o.azimuth)) return bad("--azimuth: " + std::to_string(o.azimuth) + " is not a finite angle");
-  if (!(o.elevation < 90)) return bad("--elevation: " + std::to_string(o.elevation) + " is not below 90 degrees");
-  if (!(o.rate <= 10000)) return bad("--rate: " + std::to_string(o.rate) + " is above 10000 samples per second");
+  if (!std::isfinite(o.azimuth))
+    return bad("--azimuth: " + std::to_string(o.azimuth) + " is not a finite angle");
+  if (!(o.elevation < 90))
+    return bad("--elevation: " + std::to_string(o.elevation) + " is not below 90 degrees");
+  if (!(o.rate <= 10000))
+    return bad("--rate: " + std::to_string(o.rate) + " is above 10000 samples per second");
   if (!(o.jitter <= 1)) return bad("--jitter: " + std::to_string(o.jitter) + " is above 1, expected [0, 1]");
   for (const std::string* file : {&o.json_file, &o.svg_file, &o.html_file, &o.trajectories_file}) {
     std::error_code error;
@@ -128,9 +142,13 @@ std::optional<int> load(Options& o, Loaded& l) {
   } catch (const std::invalid_argument& error) {
     return bad(error.what());
   }
-  if (o.setup_file.empty()) l.balls = rack(pool_table(o.table_name), l.physics, o.rack_name == "8ball" ? Rack::eight_ball : Rack::nine_ball, o.jitter, o.seed);
+  l.table = pool_table(o.table_name);
+  if (o.setup_file.empty())
+    l.balls = rack(l.table, l.physics, o.rack_name == "8ball" ? Rack::eight_ball : Rack::nine_ball, o.jitter,
+                   o.seed);
   if (o.ball >= l.balls.size())
-    return bad("--ball: " + std::to_string(o.ball) + " is not a ball, expected 0 to " + std::to_string(l.balls.size() - 1));
+    return bad("--ball: " + std::to_string(o.ball) + " is not a ball, expected 0 to " +
+               std::to_string(l.balls.size() - 1));
 
   return std::nullopt;
 }
@@ -138,12 +156,11 @@ std::optional<int> load(Options& o, Loaded& l) {
 // The shot on the table, its ball struck: an exit status where the setup or the cue is refused (the
 // setup's line of a ball the table refuses named).
 std::optional<int> make_shot(const Options& o, const Loaded& l, std::optional<Shot>& shot) {
-  const PoolTable table = pool_table(o.table_name);
   ShotOptions options;
   options.event_limit = o.event_limit;
   options.check_invariants = o.check_invariants;
   try {
-    shot.emplace(table, l.physics, l.balls, options);
+    shot.emplace(l.table, l.physics, l.balls, options);
   } catch (const std::invalid_argument& error) {
     // Name the setup's line of the ball the table rejects.
     std::string what = error.what();
@@ -153,13 +170,15 @@ std::optional<int> make_shot(const Options& o, const Loaded& l, std::optional<Sh
     } else if (!l.origins.empty() && what.rfind("balls ", 0) == 0) {
       const std::size_t first = std::stoul(what.substr(6));
       const std::size_t second = std::stoul(what.substr(what.find(" and ") + 5));
-      if (second < l.origins.size()) what = l.origins[second] + what + " (the other at " + l.origins[first].substr(0, l.origins[first].size() - 2) + ")";
+      if (second < l.origins.size())
+        what = l.origins[second] + what + " (the other at " +
+               l.origins[first].substr(0, l.origins[first].size() - 2) + ")";
     }
     return bad("bad setup: " + what);
   }
   const double degree = M_PI / 180;
-  const billiards::Cue<double> cue{o.cue_mass,          o.speed,       o.azimuth * degree, o.elevation * degree,
-                                   l.offset.first,      l.offset.second, o.tip_restitution};
+  const billiards::Cue<double> cue{o.cue_mass,     o.speed,         o.azimuth * degree, o.elevation * degree,
+                                   l.offset.first, l.offset.second, o.tip_restitution};
   try {
     shot->strike(o.ball, cue);
   } catch (const std::invalid_argument& error) {
@@ -189,10 +208,11 @@ void report(const Options& o, const Loaded& l, const Shot& shot, int status) {
   const std::vector<PoolBall> rest = shot.balls();
   std::size_t counts[6] = {0, 0, 0, 0, 0, 0};
   for (const ShotEvent& e : shot.events()) ++counts[static_cast<int>(e.kind)];
-  std::printf("billiards-shot: %s table, %zu balls, ball %llu struck at %g m/s (azimuth %g, elevation %g degrees, "
-              "offset %g,%g)\n",
-              o.table_name.c_str(), rest.size(), static_cast<unsigned long long>(o.ball), o.speed, o.azimuth, o.elevation,
-              l.offset.first, l.offset.second);
+  std::printf(
+      "billiards-shot: %s table, %zu balls, ball %llu struck at %g m/s (azimuth %g, elevation %g degrees, "
+      "offset %g,%g)\n",
+      o.table_name.c_str(), rest.size(), static_cast<unsigned long long>(o.ball), o.speed, o.azimuth,
+      o.elevation, l.offset.first, l.offset.second);
   std::printf("%s after %.6f s: %zu events (ball %zu, cushion %zu, jaw %zu, pocket %zu, transitions %zu)\n",
               status == 0 ? "at rest" : "stopped", shot.time(), shot.events().size(), counts[1], counts[2],
               counts[3], counts[4], counts[5]);
@@ -206,22 +226,26 @@ void report(const Options& o, const Loaded& l, const Shot& shot, int status) {
   }
   std::printf("%s\n", any ? "" : " none");
   for (std::size_t i = 0; i < rest.size(); ++i) {
-    if (!rest[i].pocketed) std::printf("ball %zu at (%.4f, %.4f)\n", i, rest[i].position.x(), rest[i].position.y());
+    if (!rest[i].pocketed)
+      std::printf("ball %zu at (%.4f, %.4f)\n", i, rest[i].position.x(), rest[i].position.y());
   }
-
 }
 
 // The files asked for; exit status 3 where one cannot be written.
 std::optional<int> write_files(const Options& o, const Shot& shot) {
-  const std::string title = "billiards-shot: " + o.table_name + ", " + std::to_string(shot.balls().size()) + " balls, " +
-                            billiards::io::json_number(o.speed) + " m/s";
+  const std::string title = "billiards-shot: " + o.table_name + ", " + std::to_string(shot.balls().size()) +
+                            " balls, " + billiards::io::json_number(o.speed) + " m/s";
   try {
-    if (!o.json_file.empty()) billiards::io::write_file_atomically(o.json_file, billiards::io::shot_json(shot, o.table_name));
-    if (!o.svg_file.empty()) billiards::io::write_file_atomically(o.svg_file, billiards::io::shot_svg(shot, title));
+    if (!o.json_file.empty())
+      billiards::io::write_file_atomically(o.json_file, billiards::io::shot_json(shot, o.table_name));
+    if (!o.svg_file.empty())
+      billiards::io::write_file_atomically(o.svg_file, billiards::io::shot_svg(shot, title));
     if (!o.html_file.empty())
-      billiards::io::write_file_atomically(o.html_file, billiards::io::shot_html(shot, title, std::min(o.rate, 120.0)));
+      billiards::io::write_file_atomically(o.html_file,
+                                           billiards::io::shot_html(shot, title, std::min(o.rate, 120.0)));
     if (!o.trajectories_file.empty())
-      billiards::io::write_file_atomically(o.trajectories_file, billiards::io::trajectories_csv(shot, o.rate));
+      billiards::io::write_file_atomically(o.trajectories_file,
+                                           billiards::io::trajectories_csv(shot, o.rate));
   } catch (const std::runtime_error& error) {
     std::cerr << "billiards-shot: " << error.what() << "\n";
     return 3;

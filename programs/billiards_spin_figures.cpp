@@ -23,8 +23,8 @@
 #include <cstdio>
 #include <filesystem>
 #include <iomanip>
-#include <optional>
 #include <iostream>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -133,9 +133,9 @@ std::optional<int> write(const std::string& out, const std::vector<Series>& thro
                                   Axis{"throw angle (degrees)", 0, 8, 1}, throw_series));
     std::printf("wrote %s\n", throw_path.c_str());
     billiards::io::write_file_atomically(
-        thirty_path, line_plot_svg("The 30° rule: a rolling cue ball's deflection once it rolls again", cut,
-                                   Axis{"deflection θ (degrees)", 0, 45, 5}, thirty_series,
-                                   {note}, Legend::top_right));
+        thirty_path,
+        line_plot_svg("The 30° rule: a rolling cue ball's deflection once it rolls again", cut,
+                      Axis{"deflection θ (degrees)", 0, 45, 5}, thirty_series, {note}, Legend::top_right));
     std::printf("wrote %s\n", thirty_path.c_str());
   } catch (const std::runtime_error& error) {
     std::cerr << "billiards-spin-figures: " << error.what() << "\n";
@@ -156,8 +156,8 @@ int main(int argc, char** argv) {
   if (const std::optional<int> code = write(out, throws, thirty, note)) return *code;
   if (billiards_support::standard_output_failed("billiards-spin-figures")) return 3;
   if (!agrees) {
-    std::cerr << "billiards-spin-figures: the runtime differs from a closed form by more than " << allowed_degrees
-              << " degrees\n";
+    std::cerr << "billiards-spin-figures: the runtime differs from a closed form by more than "
+              << allowed_degrees << " degrees\n";
     return 1;
   }
   return 0;

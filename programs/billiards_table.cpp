@@ -10,9 +10,9 @@
 // 2 on a bad command line or setup (one line on stderr naming what and why); 3 when the SVG or standard
 // output cannot be written; 4 when the run stops because no ball–ball collision can happen (fewer than
 // two balls, every ball at rest or too slow for the table, or K events in a row without one).
+#include <billiards/io/table.hpp>
 #include <billiards_support/cli_checks.hpp>
 #include <billiards_support/standard_output.hpp>
-#include <billiards/io/table.hpp>
 
 #include <billiards/simulation/table.hpp>
 
@@ -53,7 +53,8 @@ std::optional<int> parse(int argc, char** argv, Options& o) {
       "billiards-table"};
   const CLI::Validator whole_number = count_at_least(0), positive_count = count_at_least(1);
   app.add_option("--balls", o.balls, "Number of balls placed at random (default 16)")->check(positive_count);
-  app.add_option("--width", o.table.width, "Table width in metres (default 2.54)")->check(finite_number(true));
+  app.add_option("--width", o.table.width, "Table width in metres (default 2.54)")
+      ->check(finite_number(true));
   app.add_option("--height", o.table.height, "Table height in metres (default 1.27)")
       ->check(finite_number(true));
   app.add_option("--radius", o.table.radius, "Ball radius in metres (default 0.028575)")
@@ -61,14 +62,15 @@ std::optional<int> parse(int argc, char** argv, Options& o) {
   app.add_option("--seed", o.seed, "Seed of the random placement (default 1)")->check(whole_number);
   app.add_option("--collisions", o.collisions, "Ball-ball collisions to run (default 1000000)")
       ->check(whole_number);
-  auto* setup_option =
-      app.add_option("--setup", o.setup_file, "Read the table and balls from FILE (format: programs/README.md)")
-          ->check(path_given("a setup file's path"));
+  auto* setup_option = app.add_option("--setup", o.setup_file,
+                                      "Read the table and balls from FILE (format: programs/README.md)")
+                           ->check(path_given("a setup file's path"));
   app.add_flag("--break", o.break_shot, "Rack 15 balls and strike the cue ball at the apex")
       ->excludes(setup_option);
   app.add_option("--svg", o.svg_file, "Write the trajectories of the first --svg-events events to FILE")
       ->check(path_given("a file's path"));
-  app.add_option("--svg-events", o.svg_events, "Events drawn in the SVG (default 120)")->check(positive_count);
+  app.add_option("--svg-events", o.svg_events, "Events drawn in the SVG (default 120)")
+      ->check(positive_count);
   app.add_option("--max-drift", o.max_drift,
                  "Exit 1 if the relative drift of the kinetic energy exceeds this (or is NaN)")
       ->check(finite_number(false));
@@ -128,8 +130,8 @@ int run(const Options& o, const TableSetup& setup) {
       const std::uint64_t before = simulation.ball_collisions();
       const std::optional<TableEvent> event = simulation.step();
       if (!event) {
-        std::cerr << "billiards-table: stopped after " << simulation.ball_collisions() << " of " << o.collisions
-                  << " ball-ball collisions: " << simulation.why_no_event() << "\n";
+        std::cerr << "billiards-table: stopped after " << simulation.ball_collisions() << " of "
+                  << o.collisions << " ball-ball collisions: " << simulation.why_no_event() << "\n";
         return 4;
       }
       quiet = simulation.ball_collisions() == before ? quiet + 1 : 0;
@@ -152,9 +154,8 @@ int run(const Options& o, const TableSetup& setup) {
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const double final_energy = simulation.energy();
   // Relative to the initial energy; NaN (which fails any --max-drift) when there was none.
-  const double drift = initial_energy > 0
-                           ? std::fabs(final_energy - initial_energy) / initial_energy
-                           : std::numeric_limits<double>::quiet_NaN();
+  const double drift = initial_energy > 0 ? std::fabs(final_energy - initial_energy) / initial_energy
+                                          : std::numeric_limits<double>::quiet_NaN();
 
   std::printf("billiards-table: %zu balls on a %g x %g table (radius %g)\n", setup.balls.size(), setup.width,
               setup.height, setup.radius);
@@ -172,8 +173,8 @@ int run(const Options& o, const TableSetup& setup) {
   if (!o.svg_file.empty()) {
     if (simulation.event_count() < o.svg_events) trajectories.finish(simulation.balls());
     try {
-      write_file_atomically(
-          o.svg_file, trajectories.svg("billiards-table: the first " + std::to_string(o.svg_events) + " events"));
+      write_file_atomically(o.svg_file, trajectories.svg("billiards-table: the first " +
+                                                         std::to_string(o.svg_events) + " events"));
       std::printf("wrote %s\n", o.svg_file.c_str());
     } catch (const std::runtime_error& error) {
       std::cerr << "billiards-table: " << error.what() << "\n";

@@ -26,7 +26,8 @@ std::size_t occurrences(const std::string& text, const std::string& what) {
 
 TEST_CASE("Shot setup files", "[io][shot]") {
   SECTION("a table and balls of 2, 4 and 7 numbers") {
-    std::istringstream in("# a cut\ntable 7ft\nball 0.5 0.5\nball 1 0.5 2 0  # moving\nball 1.5 0.5 0 0 1 2 3\n");
+    std::istringstream in(
+        "# a cut\ntable 7ft\nball 0.5 0.5\nball 1 0.5 2 0  # moving\nball 1.5 0.5 0 0 1 2 3\n");
     const ShotSetup setup = read_shot_setup(in, "cut.setup", R);
     REQUIRE(setup.table);
     CHECK(*setup.table == "7ft");
@@ -76,13 +77,15 @@ TEST_CASE("A shot's trajectories and events as files", "[io][shot]") {
     const std::string json = shot_json(shot, "9ft");
     CHECK(occurrences(json, "{\"time\": ") == shot.events().size());
     CHECK(occurrences(json, "\"kind\": \"ball\"") ==
-          static_cast<std::size_t>(std::count_if(shot.events().begin(), shot.events().end(),
-                                                 [](const ShotEvent& e) { return e.kind == ShotEvent::Kind::ball; })));
+          static_cast<std::size_t>(
+              std::count_if(shot.events().begin(), shot.events().end(),
+                            [](const ShotEvent& e) { return e.kind == ShotEvent::Kind::ball; })));
     CHECK(json.find("\"size\": \"9ft\"") != std::string::npos);
   }
 }
 
-TEST_CASE("The events JSON's start: the balls as placed, the strike applied, before any contact", "[io][shot]") {
+TEST_CASE("The events JSON's start: the balls as placed, the strike applied, before any contact",
+          "[io][shot]") {
   // The cue ball frozen to an object ball: the strike and the contact both at t = 0. The start holds the
   // object ball at rest (before the contact) and the cue ball as struck.
   const PoolTable table = pool_table("9ft");

@@ -65,7 +65,8 @@ struct Rig<Shot> {
     const double m = s.physics().mass, R = s.physics().radius;
     double sum = 0;
     for (const PoolBall& b : s.balls()) {
-      if (!b.pocketed) sum += 0.5 * m * b.velocity.squaredNorm() + 0.2 * m * R * R * b.angular_velocity.squaredNorm();
+      if (!b.pocketed)
+        sum += 0.5 * m * b.velocity.squaredNorm() + 0.2 * m * R * R * b.angular_velocity.squaredNorm();
     }
     return sum;
   }
@@ -129,7 +130,8 @@ TEMPLATE_TEST_CASE("Every engine speaks the same vocabulary", "[simulation][voca
   static_assert(std::is_same_v<decltype(Event{}.second), std::size_t>);
   static_assert(std::is_enum_v<decltype(Event{}.kind)>);
 
-  SECTION("energy(): the kinetic energy of balls(), kept by the elastic engines and never gained by the shot") {
+  SECTION(
+      "energy(): the kinetic energy of balls(), kept by the elastic engines and never gained by the shot") {
     TestType engine = R::moving();
     REQUIRE(engine.balls().size() == R::ball_count());
     const double start = engine.energy();
@@ -190,9 +192,11 @@ TEMPLATE_TEST_CASE("Every engine speaks the same vocabulary", "[simulation][voca
     REQUIRE(next);
     CHECK(next->time > until);
     // A time before now, or NaN, or +∞ is refused, naming the argument.
-    CHECK_THROWS_MATCHES(engine.run_until(until / 2), std::invalid_argument,
-                         Catch::Matchers::Predicate<std::invalid_argument>(
-                             [](const std::invalid_argument& e) { return std::string(e.what()).find("until") != std::string::npos; }));
+    CHECK_THROWS_MATCHES(
+        engine.run_until(until / 2), std::invalid_argument,
+        Catch::Matchers::Predicate<std::invalid_argument>([](const std::invalid_argument& e) {
+          return std::string(e.what()).find("until") != std::string::npos;
+        }));
     CHECK_THROWS_AS(engine.run_until(std::numeric_limits<double>::quiet_NaN()), std::invalid_argument);
   }
 

@@ -48,11 +48,13 @@ inline std::string measurement_json(const billiards::simulation::gas::Result& r)
 /// compressibility_factor, pressure, temperature, mean_squared_displacement, collision_rate).
 inline std::string series_csv(const billiards::simulation::gas::Result& r) {
   std::string out =
-      "time,collisions,compressibility_factor,pressure,temperature,mean_squared_displacement,collision_rate\n";
+      "time,collisions,compressibility_factor,pressure,temperature,mean_squared_displacement,collision_"
+      "rate\n";
   for (const billiards::simulation::gas::Block& b : r.blocks) {
-    out += json_number(b.time) + "," + std::to_string(b.collisions) + "," + json_number(b.compressibility_factor) + "," +
-           json_number(b.pressure) + "," + json_number(b.temperature) + "," + json_number(b.mean_squared_displacement) +
-           "," + json_number(b.collision_rate) + "\n";
+    out += json_number(b.time) + "," + std::to_string(b.collisions) + "," +
+           json_number(b.compressibility_factor) + "," + json_number(b.pressure) + "," +
+           json_number(b.temperature) + "," + json_number(b.mean_squared_displacement) + "," +
+           json_number(b.collision_rate) + "\n";
   }
   return out;
 }

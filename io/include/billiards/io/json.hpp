@@ -1,5 +1,5 @@
 /// \file
-/// Numbers as billiards::io's JSON and CSV write them.
+/// Numbers as billiards::io writes them: every digit, in text files and in JSON.
 #pragma once
 
 #include <cmath>
@@ -8,12 +8,14 @@
 
 namespace billiards::io {
 
-/// A number as JSON: 17 significant digits (read back bit for bit), null where it is not finite.
-inline std::string json_number(double x) {
-  if (!std::isfinite(x)) return "null";
+/// A number with 17 significant digits (%.17g): read back, the same double, bit for bit.
+inline std::string digits17(double x) {
   char text[32];
   std::snprintf(text, sizeof text, "%.17g", x);
   return text;
 }
+
+/// A number as JSON: digits17, null where it is not finite.
+inline std::string json_number(double x) { return std::isfinite(x) ? digits17(x) : "null"; }
 
 }  // namespace billiards::io

@@ -27,6 +27,7 @@
 /// Written numbers keep every digit (%.17g): a snapshot read back is the snapshot written.
 #pragma once
 
+#include <billiards/io/json.hpp>
 #include <billiards/io/table.hpp>
 
 #include <billiards/simulation/gas.hpp>
@@ -117,12 +118,6 @@ inline double positive(const std::string& word, const std::string& at, const cha
   const double value = parse_number(word, at, what);
   if (!(value > 0)) throw std::invalid_argument(at + what + " is " + word + ", expected a positive number");
   return value;
-}
-
-inline std::string number(double x) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.17g", x);
-  return text;
 }
 
 /// The particles' lines: `count` of them from line `first` on, each handed to `particle(where, line, words)`.
@@ -322,7 +317,7 @@ inline Snapshot read_extended_xyz(std::istream& in, const std::string& source) {
 
 /// The .sph text of a snapshot (velocities and masses are not part of the format).
 inline std::string sph_text(const Snapshot& s) {
-  using snapshot_detail::number;
+  const auto number = digits17;
   if (s.dimension != 3)
     throw std::invalid_argument("a " + std::to_string(s.dimension) + "-D snapshot, expected a 3-D one for .sph (disks go in extended XYZ)");
   for (std::size_t i = 0; i < s.particles.size(); ++i) snapshot_detail::check_species(s.particles[i].species, i, true);
@@ -337,7 +332,7 @@ inline std::string sph_text(const Snapshot& s) {
 
 /// The extended XYZ text of a snapshot, one frame: every property of each particle.
 inline std::string extended_xyz_text(const Snapshot& s) {
-  using snapshot_detail::number;
+  const auto number = digits17;
   for (std::size_t i = 0; i < s.particles.size(); ++i) snapshot_detail::check_species(s.particles[i].species, i, false);
   std::string out = std::to_string(s.particles.size()) + "\nLattice=\"" + number(s.box.x()) + " 0 0 0 " +
                     number(s.box.y()) + " 0 0 0 " + number(s.box.z()) +
@@ -359,7 +354,7 @@ inline std::string extended_xyz_text(const Snapshot& s) {
 /// validate's checks (overlaps, the box's size) follow when the gas is built.
 template <int D>
 billiards::simulation::GasSetup<D> gas_setup(const Snapshot& s, const std::string& source, std::uint64_t seed) {
-  using snapshot_detail::number;
+  const auto number = digits17;
   const std::string at = source + ": ";
   if (s.dimension != D)
     throw std::invalid_argument(at + "a " + std::to_string(s.dimension) + "-D snapshot, expected " + std::to_string(D) + "-D");

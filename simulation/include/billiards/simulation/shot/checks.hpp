@@ -28,15 +28,18 @@ namespace billiards::simulation::shot {
 inline void validate(const PoolTable& table, const PoolPhysics& p) {
   using detail::shortest;
   const auto require = [](bool ok, const char* name, double value, const char* expected) {
-    if (!ok) throw billiards::invalid_argument("Shot", std::string("physics.") + name, shortest(value), expected);
+    if (!ok)
+      throw billiards::invalid_argument("Shot", std::string("physics.") + name, shortest(value), expected);
   };
   const auto positive = [](double x) { return std::isfinite(x) && x > 0; };
   const auto friction = [](double x) { return std::isfinite(x) && x >= 0; };
   const auto restitution = [](double x) { return x >= 0 && x <= 1; };
   require(positive(p.radius), "radius", p.radius, "a positive, finite length (m)");
   require(positive(p.mass), "mass", p.mass, "a positive, finite mass (kg)");
-  require(friction(p.cloth.sliding_friction), "cloth.sliding_friction", p.cloth.sliding_friction, "finite and >= 0");
-  require(friction(p.cloth.rolling_friction), "cloth.rolling_friction", p.cloth.rolling_friction, "finite and >= 0");
+  require(friction(p.cloth.sliding_friction), "cloth.sliding_friction", p.cloth.sliding_friction,
+          "finite and >= 0");
+  require(friction(p.cloth.rolling_friction), "cloth.rolling_friction", p.cloth.rolling_friction,
+          "finite and >= 0");
   require(friction(p.cloth.spinning_friction), "cloth.spinning_friction", p.cloth.spinning_friction,
           "finite and >= 0");
   require(positive(p.cloth.gravity), "cloth.gravity", p.cloth.gravity, "positive and finite (m/s^2)");
@@ -45,9 +48,9 @@ inline void validate(const PoolTable& table, const PoolPhysics& p) {
   require(restitution(p.cushion_restitution), "cushion_restitution", p.cushion_restitution, "in [0, 1]");
   require(friction(p.cushion_friction), "cushion_friction", p.cushion_friction, "finite and >= 0");
   if (!(table.nose_height >= p.radius && table.nose_height < 2 * p.radius))
-    throw billiards::invalid_argument("Shot", "table.nose_height", shortest(table.nose_height),
-                                      "a height in [R, 2R) = [" + shortest(p.radius) + ", " + shortest(2 * p.radius) +
-                                          ")");
+    throw billiards::invalid_argument(
+        "Shot", "table.nose_height", shortest(table.nose_height),
+        "a height in [R, 2R) = [" + shortest(p.radius) + ", " + shortest(2 * p.radius) + ")");
 }
 
 /// Throws std::invalid_argument naming the ball where `balls` cannot start a shot on `table` with balls
@@ -60,35 +63,39 @@ inline void validate(const std::vector<PoolBall>& balls, const PoolTable& table,
   using detail::shortest;
   for (std::size_t i = 0; i < balls.size(); ++i) {
     const PoolBall& b = balls[i];
-    const auto fail = [&](const std::string& what) { throw std::invalid_argument("ball " + std::to_string(i) + " " + what); };
+    const auto fail = [&](const std::string& what) {
+      throw std::invalid_argument("ball " + std::to_string(i) + " " + what);
+    };
     if (!b.position.allFinite() || !b.velocity.allFinite() || !b.angular_velocity.allFinite())
       fail("has a position, velocity or spin that is not finite");
     const double limit = billiards::component_limit<double>();
     const auto bounded = [&](const char* what, const Eigen::Vector3d& v, double scale, const char* unit) {
       if (!(scale * v.cwiseAbs().maxCoeff() <= limit))
-        fail("has " + std::string(what) + " (" + shortest(v.x()) + ", " + shortest(v.y()) + ", " + shortest(v.z()) +
-             ")" + unit + ", expected components" + (scale == 1 ? "" : " times the radius") + " of magnitude at most " +
-             shortest(limit) + " (billiards::component_limit: within it the energy and every contact stay finite)");
+        fail("has " + std::string(what) + " (" + shortest(v.x()) + ", " + shortest(v.y()) + ", " +
+             shortest(v.z()) + ")" + unit + ", expected components" +
+             (scale == 1 ? "" : " times the radius") + " of magnitude at most " + shortest(limit) +
+             " (billiards::component_limit: within it the energy and every contact stay finite)");
     };
     bounded("velocity", b.velocity, 1, " m/s");
     bounded("spin", b.angular_velocity, R, " rad/s");
     if (b.pocketed) continue;
     const double x = b.position.x(), y = b.position.y(), slack = R * overlap_tolerance;
     if (!(x >= R - slack && x <= table.length - R + slack && y >= R - slack && y <= table.width - R + slack))
-      fail("is at (" + shortest(x) + ", " + shortest(y) + "), expected a centre on the cloth at least a radius (" +
-           shortest(R) + ") inside every cushion's nose");
+      fail("is at (" + shortest(x) + ", " + shortest(y) +
+           "), expected a centre on the cloth at least a radius (" + shortest(R) +
+           ") inside every cushion's nose");
     if (b.velocity.z() != 0)
       fail("has v_z = " + shortest(b.velocity.z()) + ", expected 0 (a ball on the cloth moves horizontally)");
   }
   for (std::size_t i = 0; i < balls.size(); ++i) {
     for (std::size_t j = i + 1; j < balls.size(); ++j) {
       if (balls[i].pocketed || balls[j].pocketed) continue;
-      const double d =
-          std::hypot(balls[i].position.x() - balls[j].position.x(), balls[i].position.y() - balls[j].position.y());
+      const double d = std::hypot(balls[i].position.x() - balls[j].position.x(),
+                                  balls[i].position.y() - balls[j].position.y());
       if (d < 2 * R * (1 - overlap_tolerance))
         throw std::invalid_argument("balls " + std::to_string(i) + " and " + std::to_string(j) +
-                                    " overlap: their centres are " + shortest(d) + " m apart, expected at least " +
-                                    shortest(2 * R) + " (two radii)");
+                                    " overlap: their centres are " + shortest(d) +
+                                    " m apart, expected at least " + shortest(2 * R) + " (two radii)");
     }
   }
 }
@@ -115,15 +122,16 @@ inline void validate(const std::vector<PoolBall>& balls, const PoolTable& table,
 /// cushion or a jaw, overlapping a ball by more than overlap_tolerance of a radius); empty if none.
 [[nodiscard]] inline std::optional<std::pair<std::size_t, std::string>> broken_invariant(
     const PoolTable& table, const std::vector<CushionSegment>& cushions, const std::vector<Jaw>& jaws,
-    const std::vector<Pocket>& pockets, const std::vector<Eigen::Vector2d>& centres, const std::vector<bool>& in_play,
-    double R) {
+    const std::vector<Pocket>& pockets, const std::vector<Eigen::Vector2d>& centres,
+    const std::vector<bool>& in_play, double R) {
   using detail::shortest;
   const double slack = R * overlap_tolerance;
   // How far behind a nose line a ball's centre may be: inside a pocket's capture circle, at the most.
   double reach = 0;
   for (const Pocket& pocket : pockets) {
-    reach = std::max({reach, -pocket.centre.x() + pocket.radius, pocket.centre.x() + pocket.radius - table.length,
-                      -pocket.centre.y() + pocket.radius, pocket.centre.y() + pocket.radius - table.width});
+    reach =
+        std::max({reach, -pocket.centre.x() + pocket.radius, pocket.centre.x() + pocket.radius - table.length,
+                  -pocket.centre.y() + pocket.radius, pocket.centre.y() + pocket.radius - table.width});
   }
   for (std::size_t i = 0; i < centres.size(); ++i) {
     if (!in_play[i]) continue;
@@ -136,16 +144,18 @@ inline void validate(const std::vector<PoolBall>& balls, const PoolTable& table,
       const Eigen::Vector2d along = c.end - c.start;
       const double f = (r - c.start).dot(along);
       if (f >= 0 && f <= along.squaredNorm() && (r - c.start).dot(c.normal) < R - slack)
-        return broken("is inside cushion " + std::to_string(k) + ": its centre " + shortest((r - c.start).dot(c.normal)) +
-                      " m from the nose line");
+        return broken("is inside cushion " + std::to_string(k) + ": its centre " +
+                      shortest((r - c.start).dot(c.normal)) + " m from the nose line");
     }
     for (std::size_t k = 0; k < jaws.size(); ++k) {
-      if ((r - jaws[k].centre).norm() < R + jaws[k].radius - slack) return broken("is inside jaw " + std::to_string(k));
+      if ((r - jaws[k].centre).norm() < R + jaws[k].radius - slack)
+        return broken("is inside jaw " + std::to_string(k));
     }
     for (std::size_t j = i + 1; j < centres.size(); ++j) {
       if (!in_play[j]) continue;
       const double d = std::hypot(r.x() - centres[j].x(), r.y() - centres[j].y());
-      if (d < 2 * R - slack) return broken("overlaps ball " + std::to_string(j) + " by " + shortest(2 * R - d) + " m");
+      if (d < 2 * R - slack)
+        return broken("overlaps ball " + std::to_string(j) + " by " + shortest(2 * R - d) + " m");
     }
   }
   return std::nullopt;

@@ -7,8 +7,8 @@
 /// A path is a centre's motion from now within its phase: position r, velocity v and constant
 /// acceleration a, all horizontal. Times are from now; `horizon` is the longest time looked at. A
 /// contact's time is returned as a number, +∞ where there is none within the horizon (as
-/// billiards::time_of_impact does): an optional copied out of these inlined calls stalled the breaks
-/// by 5 % on stores the next loads could not forward.
+/// billiards::time_of_impact does): a number stays in a register in the prediction loop, where an
+/// optional would be stored and reloaded through memory.
 #pragma once
 
 #include <billiards/simulation/core/invariants.hpp>
@@ -33,7 +33,9 @@ struct Path {
   Eigen::Vector2d velocity = Eigen::Vector2d::Zero();      ///< v (m/s)
   Eigen::Vector2d acceleration = Eigen::Vector2d::Zero();  ///< a (m/s²)
   /// The centre at time t from now.
-  [[nodiscard]] Eigen::Vector2d at(double t) const { return position + t * velocity + (0.5 * t * t) * acceleration; }
+  [[nodiscard]] Eigen::Vector2d at(double t) const {
+    return position + t * velocity + (0.5 * t * t) * acceleration;
+  }
 };
 
 /// The x and y ranges a centre keeps to over a horizon.
@@ -106,9 +108,9 @@ inline void touching(std::span<double> p, double scale, double radius) {
 /// jaws take the ball); +∞ if none.
 [[nodiscard]] inline double cushion_contact(const Path& path, const CushionSegment& cushion, double R,
                                             double horizon) {
-  std::array<double, 3> q = cushion_polynomial((path.position - cushion.start).dot(cushion.normal),
-                                               path.velocity.dot(cushion.normal),
-                                               path.acceleration.dot(cushion.normal), R);
+  std::array<double, 3> q =
+      cushion_polynomial((path.position - cushion.start).dot(cushion.normal),
+                         path.velocity.dot(cushion.normal), path.acceleration.dot(cushion.normal), R);
   touching(q, 1, R);
   constexpr double none = std::numeric_limits<double>::infinity();
   if (stays_apart(q, horizon)) return none;
@@ -123,22 +125,24 @@ inline void touching(std::span<double> p, double scale, double radius) {
 /// the jaw's axis); +∞ if never.
 [[nodiscard]] inline double jaw_contact(const Path& path, const Jaw& jaw, double R, double horizon) {
   const double reach = R + jaw.radius;
-  std::array<double, 5> p = contact_polynomial<double>(path.position - jaw.centre, path.velocity, path.acceleration, reach);
+  std::array<double, 5> p =
+      contact_polynomial<double>(path.position - jaw.centre, path.velocity, path.acceleration, reach);
   touching(p, 2 * reach, R);
   return earliest_contact(p, horizon).value_or(std::numeric_limits<double>::infinity());
 }
 
 /// When the centre of a ball on `path` enters `pocket`'s capture circle within `horizon`; +∞ if never.
 [[nodiscard]] inline double pocket_entry(const Path& path, const Pocket& pocket, double horizon) {
-  const std::array<double, 5> p =
-      contact_polynomial<double>(path.position - pocket.centre, path.velocity, path.acceleration, pocket.radius);
+  const std::array<double, 5> p = contact_polynomial<double>(path.position - pocket.centre, path.velocity,
+                                                             path.acceleration, pocket.radius);
   return earliest_contact(p, horizon).value_or(std::numeric_limits<double>::infinity());
 }
 
 /// When two balls of radius R meet within `horizon`, `relative` the second's path less the first's
 /// (their centres two radii apart); +∞ if never.
 [[nodiscard]] inline double ball_contact(const Path& relative, double R, double horizon) {
-  std::array<double, 5> p = contact_polynomial<double>(relative.position, relative.velocity, relative.acceleration, 2 * R);
+  std::array<double, 5> p =
+      contact_polynomial<double>(relative.position, relative.velocity, relative.acceleration, 2 * R);
   touching(p, 4 * R, R);
   return earliest_contact(p, horizon).value_or(std::numeric_limits<double>::infinity());
 }

@@ -30,7 +30,7 @@ struct ShotEvent {
   Motion from = Motion::stationary;  ///< `first`'s phase before the event
   Motion to = Motion::stationary;    ///< `first`'s phase after it
   PoolBall first_after;              ///< `first`'s state after the event
-  PoolBall second_after;             ///< the other ball's state after a ball–ball event (else `first_after`)
+  PoolBall second_after;  ///< the other ball's state after a ball–ball event (else `first_after`)
 };
 
 /// The name of an event's kind: "strike", "ball", "cushion", "jaw", "pocket", "transition".

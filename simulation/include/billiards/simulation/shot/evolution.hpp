@@ -16,7 +16,7 @@ namespace billiards::simulation::shot {
 
 /// A ball's phase on the cloth from a state at its start.
 struct Phase {
-  Motion motion = Motion::stationary;                        ///< what the ball does in it
+  Motion motion = Motion::stationary;                         ///< what the ball does in it
   double duration = std::numeric_limits<double>::infinity();  ///< its length (s; +∞ at rest)
   bool moving = false;                                        ///< sliding or rolling: the centre moves
   Eigen::Vector2d acceleration = Eigen::Vector2d::Zero();     ///< the centre's, constant within it (m/s²)
@@ -61,8 +61,8 @@ struct Phase {
 /// The centre and velocity of a ball `tau` seconds into phase `p` begun in state `s` (within the phase):
 /// x0 + v0 τ + ½ a τ² and v0 + a τ, without the spin or a change of phase (billiards::evolve gives
 /// those), for the many pairs each event predicts.
-[[nodiscard]] inline std::pair<Eigen::Vector2d, Eigen::Vector2d> centre_and_velocity(const BallOnCloth<double>& s,
-                                                                                     const Phase& p, double tau) {
+[[nodiscard]] inline std::pair<Eigen::Vector2d, Eigen::Vector2d> centre_and_velocity(
+    const BallOnCloth<double>& s, const Phase& p, double tau) {
   const Eigen::Vector2d r(s.position.x(), s.position.y()), v(s.velocity.x(), s.velocity.y());
   if (!p.moving || !(tau > 0)) return {r, v};
   return {r + tau * v + (0.5 * tau * tau) * p.acceleration, v + tau * p.acceleration};
@@ -94,8 +94,8 @@ struct Phase {
 
 /// The state at the end of a phase of `duration` begun in state `s`: evolved by its duration, then set
 /// to the next phase exactly (finish) should rounding have left it short.
-[[nodiscard]] inline BallOnCloth<double> end_of_phase(const BallOnCloth<double>& s, Motion phase, double duration,
-                                                      const Cloth<double>& cloth) {
+[[nodiscard]] inline BallOnCloth<double> end_of_phase(const BallOnCloth<double>& s, Motion phase,
+                                                      double duration, const Cloth<double>& cloth) {
   BallOnCloth<double> end = evolve(s, cloth, duration);
   if (motion(end, cloth) == phase) end = finish(end, phase);
   return end;
@@ -103,7 +103,8 @@ struct Phase {
 
 /// The kinetic energy of a ball of mass `mass` (J): ½ m v² + ⅕ m R² ω² (a solid sphere).
 [[nodiscard]] inline double kinetic_energy(const BallOnCloth<double>& s, double mass) {
-  return 0.5 * mass * s.velocity.squaredNorm() + 0.2 * mass * s.radius * s.radius * s.angular_velocity.squaredNorm();
+  return 0.5 * mass * s.velocity.squaredNorm() +
+         0.2 * mass * s.radius * s.radius * s.angular_velocity.squaredNorm();
 }
 
 }  // namespace billiards::simulation::shot

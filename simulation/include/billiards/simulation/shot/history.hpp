@@ -26,7 +26,8 @@ class History {
   [[nodiscard]] std::vector<PoolBall> first() const {
     std::vector<PoolBall> out;
     out.reserve(frames_.size());
-    for (const std::vector<Keyframe>& frames : frames_) out.push_back(as_pool_ball(frames.front().state, frames.front().pocketed));
+    for (const std::vector<Keyframe>& frames : frames_)
+      out.push_back(as_pool_ball(frames.front().state, frames.front().pocketed));
     return out;
   }
   /// Ball `ball`'s state from time `time` on (until its next keyframe).
@@ -44,7 +45,7 @@ class History {
                                        [](double time, const Keyframe& k) { return time < k.time; });
       const Keyframe& k = it == frames.begin() ? frames.front() : *std::prev(it);
       out.push_back(k.pocketed || !(t > k.time) ? as_pool_ball(k.state, k.pocketed)
-                                                 : as_pool_ball(evolve(k.state, cloth, t - k.time), false));
+                                                : as_pool_ball(evolve(k.state, cloth, t - k.time), false));
     }
     return out;
   }

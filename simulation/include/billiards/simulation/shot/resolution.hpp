@@ -34,14 +34,19 @@ inline void take(BallOnCloth<double>& s, const SpinningBall<double>& after) {
   s.angular_velocity = after.angular_velocity;
 }
 
-/// The states after two balls `a` and `b` meet, their normal from a's centre to b's, by
-/// billiards::collide_with_friction; empty where the contact changes nothing (the balls no longer
-/// approach: rounding at a graze).
-[[nodiscard]] inline std::optional<std::pair<SpinningBall<double>, SpinningBall<double>>> ball_ball(
-    const BallOnCloth<double>& a, const BallOnCloth<double>& b, const PoolPhysics& physics) {
+/// The unit normal from ball `a`'s centre towards ball `b`'s, on the cloth's plane.
+[[nodiscard]] inline Eigen::Vector3d towards(const BallOnCloth<double>& a, const BallOnCloth<double>& b) {
   Eigen::Vector3d n = b.position - a.position;
   n.z() = 0;
-  n /= n.norm();
+  return n / n.norm();
+}
+
+/// The states after two balls `a` and `b` meet along `n`, the unit normal from a's centre to b's
+/// (towards(a, b)), by billiards::collide_with_friction; empty where the contact changes nothing (the
+/// balls no longer approach: rounding at a graze).
+[[nodiscard]] inline std::optional<std::pair<SpinningBall<double>, SpinningBall<double>>> ball_ball(
+    const BallOnCloth<double>& a, const BallOnCloth<double>& b, const Eigen::Vector3d& n,
+    const PoolPhysics& physics) {
   const auto after = collide_with_friction(spinning(a, physics.mass), spinning(b, physics.mass), n,
                                            physics.ball_restitution, physics.ball_friction);
   const auto same = [](const SpinningBall<double>& x, const BallOnCloth<double>& y) {
@@ -65,9 +70,9 @@ inline void take(BallOnCloth<double>& s, const SpinningBall<double>& after) {
 /// by billiards::collide_with_cushion at the table's nose height; empty where the contact changes
 /// nothing.
 [[nodiscard]] inline std::optional<SpinningBall<double>> ball_cushion(const BallOnCloth<double>& a,
-                                                                     const Eigen::Vector3d& normal,
-                                                                     const PoolTable& table,
-                                                                     const PoolPhysics& physics) {
+                                                                      const Eigen::Vector3d& normal,
+                                                                      const PoolTable& table,
+                                                                      const PoolPhysics& physics) {
   const SpinningBall<double> after = collide_with_cushion(
       spinning(a, physics.mass),
       Cushion<double>{normal, table.nose_height, physics.cushion_restitution, physics.cushion_friction});
@@ -92,19 +97,21 @@ struct Separation {
   const double need = speed * speed - normal * normal;
   const double from_tangential = std::min(need, tangential_squared);
   const double from_spin = std::min(need - from_tangential, spin_energy);
-  return {std::sqrt(normal * normal + from_tangential + from_spin),
-          tangential_squared > 0 ? std::sqrt((tangential_squared - from_tangential) / tangential_squared) : 1.0,
-          spin_energy > 0 ? std::sqrt(std::max(spin_energy - from_spin, 0.0) / spin_energy) : 1.0};
+  return {
+      std::sqrt(normal * normal + from_tangential + from_spin),
+      tangential_squared > 0 ? std::sqrt((tangential_squared - from_tangential) / tangential_squared) : 1.0,
+      spin_energy > 0 ? std::sqrt(std::max(spin_energy - from_spin, 0.0) / spin_energy) : 1.0};
 }
 
 /// Two balls of equal mass after their contact along `normal` (from a to b): where the cloth presses them
 /// together (the relative acceleration along the normal closes the gap) and they separate slower than
 /// `speed`, they are made to separate at `speed` (separation()), momentum kept. Returns whether it
 /// changed them.
-inline bool separate_pressed_pair(BallOnCloth<double>& a, BallOnCloth<double>& b, const Eigen::Vector3d& normal,
-                                  const Cloth<double>& cloth, double speed) {
+inline bool separate_pressed_pair(BallOnCloth<double>& a, BallOnCloth<double>& b,
+                                  const Eigen::Vector3d& normal, const Cloth<double>& cloth, double speed) {
   const Eigen::Vector2d n(normal.x(), normal.y());
-  const Eigen::Vector2d pressing = acceleration(b, motion(b, cloth), cloth) - acceleration(a, motion(a, cloth), cloth);
+  const Eigen::Vector2d pressing =
+      acceleration(b, motion(b, cloth), cloth) - acceleration(a, motion(a, cloth), cloth);
   const Eigen::Vector2d va(a.velocity.x(), a.velocity.y()), vb(b.velocity.x(), b.velocity.y());
   const Eigen::Vector2d centre = 0.5 * (va + vb), w = vb - va;
   const double along = w.dot(n);
@@ -125,8 +132,8 @@ inline bool separate_pressed_pair(BallOnCloth<double>& a, BallOnCloth<double>& b
 /// A ball after its contact with a cushion or jaw, `normal` from the ball towards it: where the cloth
 /// presses it into the cushion and it leaves slower than `speed`, it is made to leave at `speed`
 /// (separation()). Returns whether it changed the ball.
-inline bool separate_pressed_ball(BallOnCloth<double>& a, const Eigen::Vector3d& normal, const Cloth<double>& cloth,
-                                  double speed) {
+inline bool separate_pressed_ball(BallOnCloth<double>& a, const Eigen::Vector3d& normal,
+                                  const Cloth<double>& cloth, double speed) {
   const Eigen::Vector2d n(-normal.x(), -normal.y());  // from the cushion or jaw into the table
   const Eigen::Vector2d v(a.velocity.x(), a.velocity.y());
   const double along = v.dot(n);
@@ -134,7 +141,8 @@ inline bool separate_pressed_ball(BallOnCloth<double>& a, const Eigen::Vector3d&
   const Eigen::Vector2d tangential = v - along * n;
   const double R = a.radius;
   // Rotational energy 0.2 m R² ω², in units of m/2.
-  const Separation s = separation(along, tangential.squaredNorm(), 0.4 * R * R * a.angular_velocity.squaredNorm(), speed);
+  const Separation s =
+      separation(along, tangential.squaredNorm(), 0.4 * R * R * a.angular_velocity.squaredNorm(), speed);
   a.velocity.head<2>() = s.normal * n + s.tangential_factor * tangential;
   a.angular_velocity *= s.spin_factor;
   return true;

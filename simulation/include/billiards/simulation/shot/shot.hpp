@@ -53,20 +53,20 @@ struct ExcludedContact {
 
 /// A ball as a shot keeps it: its reference state and phase, and what its predictions covered.
 struct ShotBall {
-  BallOnCloth<double> state;  ///< at time `since`
-  double since = 0;           ///< the reference time (s)
-  shot::Phase phase;          ///< of `state`
+  BallOnCloth<double> state;                                   ///< at time `since`
+  double since = 0;                                            ///< the reference time (s)
+  shot::Phase phase;                                           ///< of `state`
   double reach_end = std::numeric_limits<double>::infinity();  ///< its predictions' end (absolute time)
-  shot::Box box;          ///< the range of its centre from its last prediction to reach_end
-  bool pocketed = false;  ///< out of play
+  shot::Box box;              ///< the range of its centre from its last prediction to reach_end
+  bool pocketed = false;      ///< out of play
   std::uint64_t version = 0;  ///< how often it changed: a prediction of an older version is stale
 };
 
 /// A predicted event of a shot, stale where a ball's version has moved on since.
 struct ShotPrediction {
-  double time;                          ///< absolute (s)
-  ShotEvent::Kind kind;                 ///< what would happen
-  std::size_t ball, other;              ///< the ball and the other body
+  double time;                           ///< absolute (s)
+  ShotEvent::Kind kind;                  ///< what would happen
+  std::size_t ball, other;               ///< the ball and the other body
   std::uint64_t version, other_version;  ///< the ball's (and the other ball's) version when predicted
   /// The earliest first; at the same time by kind, then by balls: a deterministic order.
   bool operator>(const ShotPrediction& o) const {
@@ -117,7 +117,8 @@ class Shot {
     pockets_ = shot::capture_circles(table_, physics_.radius);
     for (const PoolBall& b : balls) {
       Entry e;
-      e.state = {{b.position.x(), b.position.y(), physics_.radius}, b.velocity, b.angular_velocity, physics_.radius};
+      e.state = {
+          {b.position.x(), b.position.y(), physics_.radius}, b.velocity, b.angular_velocity, physics_.radius};
       e.pocketed = b.pocketed;
       if (e.pocketed) {
         e.state.velocity.setZero();
@@ -143,8 +144,9 @@ class Shot {
   /// billiards::invalid_argument for a bad cue.
   void strike(std::size_t index, const Cue<double>& cue) {
     if (index >= balls_.size() || balls_[index].pocketed)
-      throw std::invalid_argument("strike: ball " + std::to_string(index) + " is not a ball in play (there are " +
-                                  std::to_string(balls_.size()) + " balls)");
+      throw std::invalid_argument("strike: ball " + std::to_string(index) +
+                                  " is not a ball in play (there are " + std::to_string(balls_.size()) +
+                                  " balls)");
     const BallOnCloth<double> now = at(index, now_);
     const SpinningBall<double> struck = checked::strike(shot::spinning(now, physics_.mass), cue);
     settle(index);
@@ -188,9 +190,9 @@ class Shot {
   template <typename OnEvent>
   std::uint64_t run_until(double until, OnEvent&& on_event) {
     if (!(until >= now_) || !std::isfinite(until))
-      throw std::invalid_argument("billiards::simulation::Shot::run_until: until is " + detail::shortest(until) +
-                                  ", expected a finite time at or after " + detail::shortest(now_) +
-                                  " s (the shot's time now)");
+      throw std::invalid_argument("billiards::simulation::Shot::run_until: until is " +
+                                  detail::shortest(until) + ", expected a finite time at or after " +
+                                  detail::shortest(now_) + " s (the shot's time now)");
     std::uint64_t done = 0;
     for (; advance(until); ++done) on_event(events_.back());
     now_ = until;
@@ -251,8 +253,9 @@ class Shot {
       if (queue_.top().time > until) return false;
       if (events_.size() >= options_.event_limit)
         throw EventLimitReached("billiards::simulation::Shot: the shot took more than " +
-                                std::to_string(options_.event_limit) + " events (ShotOptions::event_limit) at t = " +
-                                detail::shortest(now_) + " s without coming to rest");
+                                std::to_string(options_.event_limit) +
+                                " events (ShotOptions::event_limit) at t = " + detail::shortest(now_) +
+                                " s without coming to rest");
       const std::size_t before = events_.size();
       resolve(queue_.pop());
       if (events_.size() > before) return true;
@@ -269,7 +272,8 @@ class Shot {
   [[nodiscard]] double energy_at(double t) const {
     double sum = 0;
     for (std::size_t i = 0; i < balls_.size(); ++i) {
-      if (!balls_[i].pocketed) sum += shot::kinetic_energy(at(i, std::max(t, balls_[i].since)), physics_.mass);
+      if (!balls_[i].pocketed)
+        sum += shot::kinetic_energy(at(i, std::max(t, balls_[i].since)), physics_.mass);
     }
     return sum;
   }
@@ -290,7 +294,8 @@ class Shot {
 
   [[nodiscard]] bool current(const Predicted& p) const {
     if (balls_[p.ball].version != p.version || balls_[p.ball].pocketed) return false;
-    if (p.kind == ShotEvent::Kind::ball) return balls_[p.other].version == p.other_version && !balls_[p.other].pocketed;
+    if (p.kind == ShotEvent::Kind::ball)
+      return balls_[p.other].version == p.other_version && !balls_[p.other].pocketed;
     return true;
   }
   void push(double t, ShotEvent::Kind kind, std::size_t i, std::size_t other) {
@@ -311,7 +316,8 @@ class Shot {
   // cushion, jaw or pocket are not looked for: it changes there and is predicted again. Its path until
   // then (`reach_end`) is bounded by a box, and a ball, jaw or pocket out of the box's reach is passed
   // over without solving for its contact.
-  void predict(std::size_t i, std::size_t first_other, std::size_t skip = std::numeric_limits<std::size_t>::max(),
+  void predict(std::size_t i, std::size_t first_other,
+               std::size_t skip = std::numeric_limits<std::size_t>::max(),
                detail::ExcludedContact excluded = {}) {
     Entry& e = balls_[i];
     if (e.pocketed) return;
@@ -347,10 +353,12 @@ class Shot {
 
   // Ball i's contacts with the balls from `first_other` on but `skip`, until the earlier of the two's
   // reach_end (see predict).
-  void predict_pairs(std::size_t i, std::size_t first_other, std::size_t skip, detail::ExcludedContact excluded) {
+  void predict_pairs(std::size_t i, std::size_t first_other, std::size_t skip,
+                     detail::ExcludedContact excluded) {
     const Entry& e = balls_[i];
     const double R = physics_.radius;
-    const Eigen::Vector2d r(e.state.position.x(), e.state.position.y()), v(e.state.velocity.x(), e.state.velocity.y());
+    const Eigen::Vector2d r(e.state.position.x(), e.state.position.y()),
+        v(e.state.velocity.x(), e.state.velocity.y());
     for (std::size_t j = first_other; j < balls_.size(); ++j) {
       const Entry& o = balls_[j];
       if (j == i || j == skip || o.pocketed || (!e.phase.moving && !o.phase.moving)) continue;
@@ -384,7 +392,8 @@ class Shot {
     event.from = from;
     event.to = balls_[i].phase.motion;
     event.first_after = shot::as_pool_ball(balls_[i].state, balls_[i].pocketed);
-    event.second_after = kind == ShotEvent::Kind::ball ? shot::as_pool_ball(balls_[other].state, false) : event.first_after;
+    event.second_after =
+        kind == ShotEvent::Kind::ball ? shot::as_pool_ball(balls_[other].state, false) : event.first_after;
     events_.push_back(event);
   }
 
@@ -403,7 +412,8 @@ class Shot {
         break;
       case ShotEvent::Kind::ball: {
         const BallOnCloth<double> a = at(i, now_), b = at(p.other, now_);
-        const auto after = shot::ball_ball(a, b, physics_);
+        const Eigen::Vector3d n = shot::towards(a, b);
+        const auto after = shot::ball_ball(a, b, n, physics_);
         settle(i);
         settle(p.other);
         if (!after) {
@@ -415,9 +425,6 @@ class Shot {
         }
         shot::take(e.state, after->first);
         shot::take(balls_[p.other].state, after->second);
-        Eigen::Vector3d n = b.position - a.position;
-        n.z() = 0;
-        n /= n.norm();
         shot::separate_pressed_pair(e.state, balls_[p.other].state, n, physics_.cloth, pressing_speed);
         skip = p.other;
         break;
@@ -425,8 +432,9 @@ class Shot {
       case ShotEvent::Kind::cushion:
       case ShotEvent::Kind::jaw: {
         const BallOnCloth<double> a = at(i, now_);
-        const Eigen::Vector3d n = p.kind == ShotEvent::Kind::cushion ? shot::towards(cushions_[p.other])
-                                                                      : shot::towards(jaws_[p.other], a.position);
+        const Eigen::Vector3d n = p.kind == ShotEvent::Kind::cushion
+                                      ? shot::towards(cushions_[p.other])
+                                      : shot::towards(jaws_[p.other], a.position);
         const std::optional<SpinningBall<double>> after = shot::ball_cushion(a, n, table_, physics_);
         settle(i);
         if (!after) {
@@ -452,31 +460,7 @@ class Shot {
   }
 
   // The invariants after an event (every ball, every pair): see step().
-  void check(double energy_before_event) {
-    const auto fail = [&](std::size_t i, const std::string& what) {
-      throw BrokenInvariant("billiards::simulation::Shot: at t = " + detail::shortest(now_) + " s (event " +
-                            std::to_string(events_.size()) + ", " + kind_name(events_.back().kind) + "), ball " +
-                            std::to_string(i) + " " + what);
-    };
-    std::vector<Eigen::Vector2d> centres(balls_.size());
-    std::vector<bool> in_play(balls_.size());
-    for (std::size_t i = 0; i < balls_.size(); ++i) {
-      const Eigen::Vector3d r = at(i, now_).position;
-      centres[i] = {r.x(), r.y()};
-      in_play[i] = !balls_[i].pocketed;
-    }
-    if (const auto broken = shot::broken_invariant(table_, cushions_, jaws_, pockets_, centres, in_play, physics_.radius))
-      fail(broken->first, broken->second);
-    const double after = energy();
-    const double allowed = energy_tolerance * energy_scale_;
-    if (!(energy_before_event <= last_energy_ + allowed))
-      fail(events_.back().first, "gained kinetic energy between events: " + detail::shortest(last_energy_) +
-                                     " J to " + detail::shortest(energy_before_event) + " J");
-    if (!(after <= energy_before_event + allowed))
-      fail(events_.back().first, "gained kinetic energy at the event: " + detail::shortest(energy_before_event) +
-                                     " J to " + detail::shortest(after) + " J");
-    last_energy_ = after;
-  }
+  void check(double energy_before_event);
 
   PoolTable table_;
   PoolPhysics physics_;
@@ -492,5 +476,35 @@ class Shot {
   double energy_scale_ = 0;
   double last_energy_ = 0;
 };
+
+// The longer members, defined out of the class body.
+
+inline void Shot::check(double energy_before_event) {
+  const auto fail = [&](std::size_t i, const std::string& what) {
+    throw BrokenInvariant("billiards::simulation::Shot: at t = " + detail::shortest(now_) + " s (event " +
+                          std::to_string(events_.size()) + ", " + kind_name(events_.back().kind) +
+                          "), ball " + std::to_string(i) + " " + what);
+  };
+  std::vector<Eigen::Vector2d> centres(balls_.size());
+  std::vector<bool> in_play(balls_.size());
+  for (std::size_t i = 0; i < balls_.size(); ++i) {
+    const Eigen::Vector3d r = at(i, now_).position;
+    centres[i] = {r.x(), r.y()};
+    in_play[i] = !balls_[i].pocketed;
+  }
+  if (const auto broken =
+          shot::broken_invariant(table_, cushions_, jaws_, pockets_, centres, in_play, physics_.radius))
+    fail(broken->first, broken->second);
+  const double after = energy();
+  const double allowed = energy_tolerance * energy_scale_;
+  if (!(energy_before_event <= last_energy_ + allowed))
+    fail(events_.back().first, "gained kinetic energy between events: " + detail::shortest(last_energy_) +
+                                   " J to " + detail::shortest(energy_before_event) + " J");
+  if (!(after <= energy_before_event + allowed))
+    fail(events_.back().first,
+         "gained kinetic energy at the event: " + detail::shortest(energy_before_event) + " J to " +
+             detail::shortest(after) + " J");
+  last_energy_ = after;
+}
 
 }  // namespace billiards::simulation
