@@ -4,6 +4,8 @@
 // polynomials is billiards-contact-roots (tests/accuracy).
 #include <billiards/events.hpp>
 
+#include <Eigen/Core>
+
 #include <catch2/catch.hpp>
 
 #include <array>
@@ -56,7 +58,8 @@ TEMPLATE_TEST_CASE("earliest_contact: two balls closing head on at constant spee
   CHECK_FALSE(billiards::earliest_contact(apart, S(100)));
 }
 
-TEMPLATE_TEST_CASE("earliest_contact: a graze placed exactly is a contact", "[events]", float, double) {
+TEMPLATE_TEST_CASE("earliest_contact: a graze is a contact exactly where the polynomial reaches 0", "[events]", float,
+                   double) {
   using S = TestType;
   // Ball 2 passes ball 1 at a miss distance of exactly D = 2: Δr = (−10, 2), Δv = (1, 0), so
   // |Δr(t)|² − 4 = (t − 10)², a double root at t = 10.
@@ -64,27 +67,60 @@ TEMPLATE_TEST_CASE("earliest_contact: a graze placed exactly is a contact", "[ev
   CHECK(c[0] == 100);
   CHECK(c[1] == -20);
   CHECK(c[2] == 1);
-  const std::optional<S> t = billiards::earliest_contact(c, S(20));
-  REQUIRE(t);
-  CHECK(std::fabs(*t - S(10)) <= S(10) * std::sqrt(std::numeric_limits<S>::epsilon()) * 8);
+  CHECK(billiards::earliest_contact(c, S(20)) == S(10));
   // Passing one unit farther out (miss distance 3 > D): no contact.
   const std::array<S, 5> wide = billiards::contact_polynomial(V2<S>(-10, 3), V2<S>(1, 0), V2<S>(0, 0), S(2));
   CHECK_FALSE(billiards::earliest_contact(wide, S(20)));
-  // A miss by less than the rounding of p: (t − ½)² + 2ε, its minimum 2ε at t = ½ evaluated exactly and
-  // below the bound 4ε: reported as the graze it may be. A miss by 2^−10 is not.
+  // (t − ½)² touches 0 at ½; (t − ½)² + 2ε, whose minimum 2ε lies below its rounding bound 4ε, never does:
+  // decided for the coefficients as given, in both directions.
   const S tiny = 2 * std::numeric_limits<S>::epsilon();
-  const std::optional<S> close = billiards::earliest_contact(std::array<S, 3>{S(0.25) + tiny, -1, 1}, S(1));
-  REQUIRE(close);
-  CHECK(*close == S(0.5));
+  CHECK(billiards::earliest_contact(std::array<S, 3>{S(0.25), -1, 1}, S(1)) == S(0.5));
+  CHECK_FALSE(billiards::earliest_contact(std::array<S, 3>{S(0.25) + tiny, -1, 1}, S(1)));
   CHECK_FALSE(billiards::earliest_contact(std::array<S, 3>{S(0.25) + S(0x1p-10), -1, 1}, S(1)));
   // The same graze as a quartic: (t − 1)² (t² + 1) = t⁴ − 2t³ + 2t² − 2t + 1.
-  const std::array<S, 5> quartic{1, -2, 2, -2, 1};
-  const std::optional<S> q = billiards::earliest_contact(quartic, S(3));
-  REQUIRE(q);
-  CHECK(std::fabs(*q - 1) <= std::sqrt(std::numeric_limits<S>::epsilon()) * 8);
+  CHECK(billiards::earliest_contact(std::array<S, 5>{1, -2, 2, -2, 1}, S(3)) == S(1));
+  // A graze at an irrational time: (t² − 2)² = t⁴ − 4t² + 4 touches 0 at √2 only. The contact is the
+  // largest value of the type at or below √2 (√2 rounded, less one ulp where it rounded up: s² > 2 by
+  // a fused multiply-add, exact in its sign).
+  const S root = std::sqrt(S(2));
+  const S below = std::fma(root, root, S(-2)) > 0 ? std::nextafter(root, S(0)) : root;
+  CHECK(billiards::earliest_contact(std::array<S, 5>{4, 0, -4, 0, 1}, S(3)) == below);
+  // Lifted by the smallest step of the type at 4 it misses, however far inside its rounding that is;
+  // lowered by one, it crosses 0 twice, first before √2.
+  const S lifted = std::nextafter(S(4), S(5)), lowered = std::nextafter(S(4), S(3));
+  CHECK_FALSE(billiards::earliest_contact(std::array<S, 5>{lifted, 0, -4, 0, 1}, S(3)));
+  const std::optional<S> crossing = billiards::earliest_contact(std::array<S, 5>{lowered, 0, -4, 0, 1}, S(3));
+  REQUIRE(crossing);
+  CHECK(*crossing < below);
+  CHECK(*crossing > S(1.41));
 }
 
-TEMPLATE_TEST_CASE("earliest_contact: a polynomial within rounding of 0 at the horizon is a contact there", "[events]",
+TEST_CASE("earliest_contact: a near miss far into a long window is no contact", "[events]") {
+  // Two balls of radius R = 0.028575 m, one accelerating away along x at a = 1/8 m/s² from 1/64 m/s,
+  // whose centres pass 7e-8 R outside contact (and, the other way, inside it) at t = 80 s: Δr(t) =
+  // (f(t), D ± 7e-8 R) with f(t) = s (t − 80) + ½ a (t² − 80²), so that p = f² + (D ± 7e-8 R)² − D².
+  // Every coefficient but c0 is exact and c0 is off by less than 1e-10 m², so the exact minimum keeps
+  // the sign of (D ± 7e-8 R)² − D² (about ±2.3e-10 m²); the rounding bound of p near t = 80 s is about
+  // 1e-9 m², which the rule of a graze within rounding called a contact.
+  const double R = 0.028575, D = 2 * R, s = 1.0 / 64, a = 1.0 / 8, t1 = 80;
+  for (const double miss : {7e-8 * R, -7e-8 * R}) {
+    const Eigen::Vector2d dr(-(s * t1 + a * t1 * t1 / 2), D + miss), dv(s, 0), da(a, 0);
+    const std::array<double, 5> c = billiards::contact_polynomial<double>(dr, dv, da, D);
+    const std::optional<double> t = billiards::earliest_contact(c, 100.0);
+    if (miss > 0) {
+      CHECK_FALSE(t);
+    } else {
+      // The first of the two roots: f(t) = −h, h = √(D² − (D + miss)²), a quadratic in t.
+      REQUIRE(t);
+      const long double h = std::sqrt((long double)D * D - ((long double)D + miss) * ((long double)D + miss));
+      const long double constant = s * t1 + a * t1 * t1 / 2 - h;
+      const long double root = (-s + std::sqrt((long double)s * s + 2 * a * constant)) / a;
+      CHECK(std::fabs(*t - (double)root) < 1e-9 * t1);
+    }
+  }
+}
+
+TEMPLATE_TEST_CASE("earliest_contact: a root within rounding of the horizon is decided exactly", "[events]",
                    float, double) {
   using S = TestType;
   // (r − t)(t² + 1), falling through its one root r: a horizon a few ulps past r finds it, at r to rounding
@@ -92,10 +128,8 @@ TEMPLATE_TEST_CASE("earliest_contact: a polynomial within rounding of 0 at the h
   const S r = S(3.1);
   const std::array<S, 4> c{r, -1, r, -1};
   const S horizon = r + 4 * std::numeric_limits<S>::epsilon() * r;
-  const std::optional<S> t = billiards::earliest_contact(c, horizon);
-  REQUIRE(t);
-  CHECK(*t <= horizon);
-  CHECK(std::fabs(*t - r) <= 8 * std::numeric_limits<S>::epsilon() * r);
+  // p(r) is 0 exactly (r is the type's own value): the contact is r itself, exactly.
+  CHECK(billiards::earliest_contact(c, horizon) == r);
   // The polynomial in float at the horizon of a cubic with three roots 3.41 ± 0.05 apart, where float
   // reads p(T) above 0 though the exact root lies just before T.
   if constexpr (std::is_same_v<S, float>) {

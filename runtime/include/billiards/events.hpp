@@ -4,6 +4,7 @@
 #pragma once
 
 #include <billiards/checked.hpp>
+#include <billiards/detail/exact_roots.hpp>
 #include <billiards/spin_kernels.hpp>
 
 #include <Eigen/Core>
@@ -12,8 +13,11 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
+#include <cstring>
 #include <limits>
 #include <optional>
+#include <type_traits>
 
 namespace billiards {
 
@@ -217,6 +221,103 @@ int sign_changes(const EventPolynomial<Scalar>& p, Scalar lo, Scalar hi, Scalar*
   return found;
 }
 
+/// p(t) by compensated Horner (Graillat, Langlois and Louvet: each step's rounding errors, exact by
+/// fused multiply-adds and Knuth's two-sum, summed beside it), as accurate as Horner's rule in twice the
+/// precision: its error is at most ε |p(t)| + γ_2d² Σ |c_k| t^k (γ_2d ≤ 2 d ε (1 + ε) for d ≤ 4).
+/// `sure` is set where that bound, with room for products that underflow, leaves the sign p's: the
+/// result exceeds twice the bound's last term. t ≥ 0 finite.
+template <typename Scalar>
+[[nodiscard]] Scalar compensated_value(const EventPolynomial<Scalar>& p, Scalar t, bool& sure) noexcept {
+  using std::fabs;
+  Scalar value = p.c[4], correction = 0, size = fabs(p.c[4]);
+  for (int k = 3; k >= 0; --k) {
+    const Scalar coefficient = p.c[static_cast<std::size_t>(k)];
+    const Scalar product = value * t, product_error = std::fma(value, t, -product);
+    const Scalar sum = product + coefficient, back = sum - product;
+    const Scalar sum_error = (product - (sum - back)) + (coefficient - back);
+    correction = correction * t + (product_error + sum_error);
+    value = sum;
+    size = size * t + fabs(coefficient);
+  }
+  const Scalar result = value + correction;
+  constexpr Scalar unit = std::numeric_limits<Scalar>::epsilon() / 2;  // the unit roundoff
+  constexpr Scalar gamma = Scalar(2 * 4) * unit * Scalar(1.001);
+  const Scalar power = std::max(Scalar(1), t * t * t * t);
+  const Scalar bound = 2 * gamma * gamma * size + Scalar(64) * std::numeric_limits<Scalar>::denorm_min() * power;
+  sure = std::isfinite(bound) && std::isfinite(result) && fabs(result) > bound;
+  return result;
+}
+
+/// The sign of p(t) (−1, 0, +1) for the coefficients exactly as given: compensated_value's where it is
+/// sure, else (within about ε² of 0 relative to the terms, or out of range) exact arithmetic's.
+template <typename Scalar>
+[[nodiscard]] int certified_sign(const EventPolynomial<Scalar>& p, Scalar t) {
+  bool sure = false;
+  const Scalar value = compensated_value(p, t, sure);
+  if (sure) return value > 0 ? 1 : -1;
+  std::array<Scalar, 5> c{};
+  for (std::size_t k = 0; k < 5; ++k) c[k] = p.c[k];
+  return exact::sign_of_polynomial(c, t);
+}
+
+template <typename Scalar>
+[[nodiscard]] Scalar next_up(Scalar x) noexcept {
+  return std::nextafter(x, std::numeric_limits<Scalar>::infinity());
+}
+
+/// The root of p in (a, b] placed exactly: given p(a) > 0 and p(b) ≤ 0 (certainly: their signs are
+/// not for rounding to change) and `guess` in [a, b] near the root, the largest value t of the type
+/// with p(t) > 0 whose next value up has p ≤ 0 — that next value itself where p is 0 there. One Newton
+/// step from the guess with p's compensated value, then steps of 1, 2, 4, … values from it towards the
+/// root until the sign turns, then bisection: every sign certified. 0 ≤ a < b; `slope` is p' up to a
+/// positive factor (derivative()).
+template <typename Scalar>
+[[nodiscard]] Scalar placed_root(const EventPolynomial<Scalar>& p, const EventPolynomial<Scalar>& slope, Scalar a,
+                                 Scalar b, Scalar guess) {
+  using Bits = std::conditional_t<sizeof(Scalar) == 4, std::uint32_t, std::uint64_t>;
+  const auto bits = [](Scalar x) {
+    Bits n;
+    std::memcpy(&n, &x, sizeof n);
+    return n;
+  };
+  const auto value_of = [](Bits n) {
+    Scalar x;
+    std::memcpy(&x, &n, sizeof x);
+    return x;
+  };
+  Scalar lo = a, hi = b;  // certified: p(lo) > 0, p(hi) ≤ 0
+  int at_hi = -1;         // the sign of p(hi), −1 or 0 (−1 stands for "≤ 0" until it is evaluated)
+  bool hi_known = false;
+  const auto probe = [&](Scalar x) {
+    const int sign = certified_sign(p, x);
+    if (sign > 0) {
+      lo = x;
+    } else {
+      hi = x;
+      at_hi = sign;
+      hi_known = true;
+    }
+    return sign > 0;
+  };
+  if (guess > a && guess < b) {
+    bool sure = false;
+    const Scalar value = compensated_value(p, guess, sure);
+    const Scalar gradient = evaluate(slope, guess);
+    // slope is p' up to a positive factor: a Newton step with it is the same only where the factor is
+    // 1, which derivative() keeps below overflow; the step is a guess, its signs are certified below.
+    const Scalar newton = gradient != 0 ? guess - value / gradient : guess;
+    if (newton > a && newton < b) guess = newton;
+    const bool above = probe(guess);
+    for (Bits step = 1; bits(hi) - bits(lo) > 1; step *= 2) {
+      if (step >= bits(hi) - bits(lo)) break;
+      if (probe(value_of(above ? bits(lo) + step : bits(hi) - step)) != above) break;
+    }
+  }
+  while (bits(hi) - bits(lo) > 1) probe(value_of(bits(lo) + (bits(hi) - bits(lo)) / 2));
+  if (!hi_known) at_hi = certified_sign(p, hi);
+  return at_hi == 0 ? hi : lo;
+}
+
 /// Whether the Bernstein coefficients `b` (degree 4) of a polynomial on an interval all exceed `margin`,
 /// or those of its halves (de Casteljau's subdivision), `depth` times over, do: each bounds the polynomial
 /// from below on its interval. An end at or below the margin fails at once.
@@ -266,17 +367,22 @@ template <typename Scalar>
 /// - At t = 0 a contact is reported only where the bodies touch or overlap (c[0] ≤ 0) and approach: the
 ///   first of c[1], c[2], … that is not zero is negative. Bodies that touch while separating, or at exact
 ///   tangency (c[0] = c[1] = 0, c[2] > 0), have none there.
-/// - Later, a contact is the first t where the polynomial reaches 0 from above: a simple root where it
-///   decreases, or a graze, a local minimum whose value is within the rounding error of evaluating it
-///   (2 d ε Σ |c_k| t^k, detail::evaluation_error) — so that no graze that exact arithmetic would find is missed, at the price of
-///   reporting as contacts the misses closer than rounding can tell. Likewise at the horizon: a
-///   polynomial that falls to within rounding of 0 there is in contact at the horizon. The time returned is where the
-///   polynomial is still ≥ 0 as evaluated: never after the bodies start to overlap.
+/// - Later, a contact is the first t where the polynomial, with its coefficients exactly as given,
+///   reaches 0 from above: a root where it decreases, or a graze, a root where it touches 0 and rises
+///   again (likewise at the horizon). This is decided exactly: a contact is reported if and only if
+///   that polynomial reaches 0 in (0, horizon]. Where rounding decides it (p at a turning point or at the
+///   horizon farther from 0 than twice its rounding error, 2 d ε Σ |c_k| t^k, detail::evaluation_error),
+///   the search runs in the type; where rounding leaves it open, it is decided in exact arithmetic
+///   (detail::exact: Sturm's sequence with integer-mantissa coefficients), which returns the largest
+///   value of the type at or before the exact root. The time returned is where the polynomial is still
+///   ≥ 0 as evaluated: never after the bodies start to overlap by more than rounding can tell.
 /// - The polynomial's degree is what its coefficients make it: a zero leading coefficient lowers it, and
 ///   nothing divides by one.
 ///
 /// Expects finite coefficients and a finite horizon ≥ 0 (billiards::checked::earliest_contact checks
-/// them). Never throws; always ends, in at most a few hundred evaluations.
+/// them). Always ends: in at most a few hundred evaluations in the type, and where the exact decision
+/// runs, in a few hundred exact ones (each allocating at most a few kilobytes; failing to allocate
+/// them terminates, as the function is noexcept).
 template <typename Scalar, std::size_t N>
 [[nodiscard]] std::optional<Scalar> earliest_contact(const std::array<Scalar, N>& c, Scalar horizon) noexcept {
   static_assert(N >= 1 && N <= 5, "earliest_contact: a polynomial of degree at most 4");
@@ -315,24 +421,29 @@ template <typename Scalar, std::size_t N>
   breaks[0] = 0;
   const int turns = detail::sign_changes(slope, Scalar(0), horizon, breaks.data() + 1);
   breaks[static_cast<std::size_t>(turns + 1)] = horizon;
-  Scalar left = p.c[0];
+  Scalar left = p.c[0];  // exact at t = 0; at each later break, beyond twice its rounding of 0
   for (int i = 0; i <= turns; ++i) {
     const Scalar a = breaks[static_cast<std::size_t>(i)], b = breaks[static_cast<std::size_t>(i + 1)];
     const Scalar right = detail::evaluate(p, b);
-    if (left > 0 && right <= 0) {
-      const Scalar t = detail::sign_change(p, slope, a, b, left, right);
+    if (std::fabs(right) <= 2 * detail::evaluation_error(p, b)) {
+      // p at the turning point (or the horizon) within twice its rounding of 0: its sign there, certified,
+      // says whether p reaches 0 by b where p falls into b from above 0.
+      if (left > 0 && detail::certified_sign(p, b) <= 0) return detail::placed_root(p, slope, a, b, b);
+      // At the horizon, p falling to a value above 0: no contact by it.
+      if (left > 0 && i == turns) return std::nullopt;
+      // A turning point just above 0 (a graze or a near miss: the exact minimum lies beside it), or p
+      // rising out of an overlap to within rounding of 0: Sturm's sequence in exact arithmetic decides.
+      return detail::exact::earliest_contact_after_zero(c, horizon);
+    }
+    if (left > 0 && right < 0) {
+      Scalar t = detail::sign_change(p, slope, a, b, left, right);
+      // A root the type places only to more than 16 ulps (the rounding of p over its slope there, as at
+      // a near graze that touches): placed exactly.
+      const Scalar ulp = detail::next_up(t) - t;
+      if (!(detail::evaluation_error(p, t) <= 16 * ulp * std::fabs(detail::evaluate(slope, t))))
+        t = detail::placed_root(p, slope, a, b, t);
       // Not t = 0 where the bodies are apart at 0: the root lies below the smallest step of the type.
       return t > 0 ? t : std::numeric_limits<Scalar>::denorm_min();
-    }
-    const Scalar rounding = detail::evaluation_error(p, b);
-    // At the horizon, p falling to within rounding of 0: the contact may lie at or just before it.
-    if (i == turns && left > right && right > 0 && right <= rounding) return b;
-    if (i < turns) {
-      // A graze: a local minimum (p falls into b and rises after it) within rounding of 0.
-      if (left > right && right > 0 && right <= rounding) return b;
-      // Overlapping bodies that part by less than rounding can tell and close again: a local maximum
-      // within rounding of 0, after which p falls.
-      if (left <= 0 && left < right && right <= 0 && right >= -rounding) return b;
     }
     left = right;
   }
