@@ -224,6 +224,49 @@ TEMPLATE_TEST_CASE("Beyond the paper", "[runtime][beyond]", (Config<float, 2>), 
     CHECK(compared > 18 * (limits::max_exponent - limits::min_exponent));
   }
 
+  SECTION("the same bits for every length of d down to relative velocities at the edge of the normal range") {
+    // The promise holds where every product (v2 − v1)_i d'_i and d'_i d'_i (d' = d scaled to its unit
+    // binade) and every partial sum of them is zero or a normal number: the dot products of d and 2^k d
+    // then differ by a power of two only. At its edge: d' with every component in ±[1/2, 1), and a
+    // relative velocity whose products with it are each the smallest normal number or just above (and
+    // of one sign, so that their sums do not cancel into the subnormal range); subnormal outputs
+    // included (x1 − v1 = c1 d' is of the order of those velocities). A 64th of those velocities, whose
+    // products are subnormal, breaks it in both types (d = 2^k d' then differs in the last bits).
+    const auto bits_equal = [](const Vector& a, const Vector& b) {
+      return std::memcmp(a.data(), b.data(), sizeof(Scalar) * std::size_t(N)) == 0;
+    };
+    using limits = std::numeric_limits<Scalar>;
+    int compared = 0, subnormal_outputs = 0;
+    for (int trial = 0; trial < 40; ++trial) {
+      const Scalar m1 = random_mass(), m2 = random_mass(), e = Scalar(unit_interval(random));
+      Vector d0, v2;
+      const Vector v1 = Vector::Zero();
+      for (int i = 0; i < N; ++i) {
+        const Scalar sign = unit_interval(random) < 0.5 ? Scalar(-1) : Scalar(1);
+        d0[i] = sign * Scalar(0.5 + 0.5 * unit_interval(random));
+        // The least v with |v d0_i| ≥ the smallest normal number, exactly, times 1 to 1 + 2^-4.
+        Scalar v = std::nextafter(limits::min() / std::fabs(d0[i]), limits::infinity());
+        v = v * Scalar(1 + unit_interval(random) / 16);
+        REQUIRE(static_cast<long double>(v) * std::fabs(d0[i]) >= static_cast<long double>(limits::min()));
+        v2[i] = sign * v;
+      }
+      const auto [x1, x2] = billiards::collide_along_direction(m1, v1, m2, v2, d0, e);
+      for (int i = 0; i < N; ++i) subnormal_outputs += (x1[i] != 0 && std::fabs(x1[i]) < limits::min());
+      for (int k = limits::min_exponent - limits::digits; k < limits::max_exponent; ++k) {
+        Vector d;
+        for (int i = 0; i < N; ++i) d[i] = std::ldexp(d0[i], k);
+        bool exact_scaling = d.allFinite();
+        for (int i = 0; i < N; ++i) exact_scaling = exact_scaling && std::ldexp(d[i], -k) == d0[i];
+        if (!exact_scaling) continue;
+        const auto [z1, z2] = billiards::collide_along_direction(m1, v1, m2, v2, d, e);
+        if (!bits_equal(z1, x1) || !bits_equal(z2, x2)) FAIL("d = 2^" << k << " d0 differs from d0");
+        ++compared;
+      }
+    }
+    CHECK(compared > 36 * (limits::max_exponent - limits::min_exponent));
+    CHECK(subnormal_outputs > 0);
+  }
+
   SECTION("a heavy ball's subnormal change keeps its digits along a direction of any length") {
     // m1/m2 beyond the normal range: ball 1 moves by a subnormal amount. Scaled to its unit binade, d
     // leaves that change within a rounding or two of the smallest subnormal; taken unscaled, a long d

@@ -511,7 +511,12 @@ template <typename D1, typename D2, typename DN>
 /// alike): the same as collide() with \f$n = d/|d|\f$, without a square root, and unchanged when
 /// \f$d\f$ is scaled. Audit claims `beyond.any_normal.direction_form`,
 /// `beyond.any_normal.scale_invariant`; kernel kernels::direction_velocity_change.
-/// d is scaled by a power of two (exact; detail::collide_along), so its length never matters.
+/// d is scaled by a power of two (exact; detail::collide_along), so its length does not matter: d and
+/// 2^k d give the same bits wherever the products (v2 − v1)_i d'_i and d'_i d'_i of d scaled to its
+/// unit binade (d', largest component in ±[1/2, 1)), and their partial sums, are zero or normal numbers.
+/// Below that — relative velocities within 2^digits of the smallest normal number, about 1e-31 m/s in
+/// float — those products lose digits to underflow at different scales, and the last bits of the results
+/// (subnormal or not) may differ between d and 2^k d; each is still as accurate as its own rounding.
 /// Preconditions (not checked): \f$d \ne 0\f$ and finite (a zero direction gives NaN), masses as
 /// for collide().
 template <typename D1, typename D2, typename DD>
