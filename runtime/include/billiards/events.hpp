@@ -137,12 +137,63 @@ template <typename Scalar>
     const Scalar x = a + (b - a) * (falsi_a / (falsi_a - falsi_b));
     return x > a && x < b ? x : split(a, b);
   };
+  // A quadratic's root in closed form (the stable pair q/c2, c0/q, q = −(c1 + sign(c1) √disc)/2), within
+  // a few ulps of the exact one: the bracket is closed on it at once by a probe on each side, past the
+  // width in which rounding may give p either sign, where their signs confirm it.
+  if (p.degree == 2) {
+    const Scalar c0 = p.c[0], c1 = p.c[1], c2 = p.c[2];
+    const Scalar discriminant = c1 * c1 - 4 * c0 * c2;
+    if (discriminant >= 0 && std::isfinite(discriminant)) {
+      const Scalar q = -(c1 + std::copysign(std::sqrt(discriminant), c1)) / 2;
+      const Scalar first = q / c2, second = c0 / q;
+      const Scalar root = first > a && first < b ? first : second;
+      const Scalar gradient = std::fabs(evaluate(slope, root));
+      if (root > a && root < b && gradient > 0) {
+        const Scalar reach = 4 * std::numeric_limits<Scalar>::epsilon() * root + evaluation_error(p, root) / gradient;
+        const Scalar low = root - reach, high = root + reach;
+        if (low > a && high < b) {
+          const Scalar at_low = evaluate(p, low), at_high = evaluate(p, high);
+          if (at_low != 0 && (at_low > 0) == before && (at_high == 0 || (at_high > 0) != before)) {
+            a = low;
+            b = high;
+            falsi_a = at_low;
+            falsi_b = at_high;
+          }
+        }
+      }
+    }
+  }
   Scalar x = falsi();
+  // Elsewhere the first point is the root of p's Taylor quadratic at the end where |p| is least, where it
+  // lies inside: beside a turning point, where p is nearly a parabola, it is close to the root, and
+  // Newton's steps from it converge at once.
+  if (p.degree >= 3) {
+    const Scalar end = std::fabs(falsi_a) <= std::fabs(falsi_b) ? a : b;
+    const Scalar value = end == a ? falsi_a : falsi_b;
+    Scalar first = p.c[1], second = 0, power = 1;  // p'(end), p''(end); power = end^(k − 2)
+    for (int k = 2; k <= p.degree; ++k) {
+      const Scalar c = p.c[static_cast<std::size_t>(k)];
+      second += Scalar(k * (k - 1)) * c * power;
+      power *= end;
+      first += Scalar(k) * c * power;
+    }
+    // ½ p'' s² + p' s + p = 0 for the step s from the end into the bracket.
+    const Scalar half = second / 2, discriminant = first * first - 4 * half * value;
+    if (discriminant >= 0 && std::isfinite(discriminant) && half != 0) {
+      const Scalar root = std::sqrt(discriminant);
+      const Scalar s1 = (-first + root) / (2 * half), s2 = (-first - root) / (2 * half);
+      const Scalar into = end == a ? std::min(s1 > 0 ? s1 : s2, s2 > 0 ? s2 : s1)
+                                   : std::max(s1 < 0 ? s1 : s2, s2 < 0 ? s2 : s1);
+      const Scalar guess = end + into;
+      if (guess > a && guess < b) x = guess;
+    }
+  }
   Scalar previous_width = b - a;
   Scalar back = 0;            // the last step back from a zero
   bool after_newton = false;  // x was a Newton step's
   int slow = 0;               // steps in a row that did not halve the bracket
   int last_moved = 0;         // the end the last step moved: −1 a, +1 b
+  Scalar newton_step = std::numeric_limits<Scalar>::infinity();  // the last Newton step's length
   for (int step = 0; step < 300; ++step) {
     if (!(x > a && x < b)) break;
     const Scalar value = evaluate(p, x);
@@ -161,9 +212,14 @@ template <typename Scalar>
     }
     const Scalar width = b - a;
     if (!(width > 2 * std::numeric_limits<Scalar>::epsilon() * b)) break;
+    const Scalar gradient = evaluate(slope, x);
+    // Within the width in which rounding may give p either sign the bracket shrinks no further that
+    // means anything: the root lies in it, as near as p evaluated can tell.
+    if (width <= Scalar(0x1p-20) * b && gradient != 0 &&
+        4 * width * std::fabs(gradient) <= evaluation_error(p, x))
+      break;
     slow = width <= previous_width / 2 ? 0 : slow + 1;
     previous_width = width;
-    const Scalar gradient = evaluate(slope, x);
     const Scalar newton = gradient != 0 ? x - value / gradient : x;
     const bool was_newton = after_newton;
     after_newton = false;
@@ -175,7 +231,14 @@ template <typename Scalar>
       continue;
     }
     back = 0;
-    if (was_newton && newton != x) {
+    const Scalar step_length = std::fabs(newton - x);
+    const bool converging = step_length < newton_step / 2;
+    newton_step = step_length;
+    if (was_newton && newton != x && converging && 16 * step_length > width && newton > a && newton < b) {
+      // Newton's steps shrinking but still long beside the bracket: one more, before the probe.
+      x = newton;
+      after_newton = true;
+    } else if (was_newton && newton != x) {
       // The probe: twice the next Newton step from the end the last one moved, towards the other end, and
       // past the width within which rounding may give p either sign, so that it lands beyond the root.
       const Scalar reach = 2 * std::fabs(newton - x) + evaluation_error(p, x) / std::fabs(gradient);
