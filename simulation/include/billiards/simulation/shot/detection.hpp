@@ -103,6 +103,15 @@ inline void touching(std::span<double> p, double scale, double radius) {
   return billiards::detail::evaluate(p, horizon) > billiards::detail::evaluation_error(p, horizon);
 }
 
+/// Whether every point of `box` lies farther than R (and a billionth of it, for the rounding of the
+/// distances) from `cushion`'s line on the table's side: a centre kept to the box never touches it.
+[[nodiscard]] inline bool beyond_reach(const Box& box, const CushionSegment& cushion, double R) {
+  const double x = cushion.normal.x() >= 0 ? box.x_low : box.x_high;
+  const double y = cushion.normal.y() >= 0 ? box.y_low : box.y_high;
+  const double nearest = (x - cushion.start.x()) * cushion.normal.x() + (y - cushion.start.y()) * cushion.normal.y();
+  return nearest > R * (1 + 1e-9);
+}
+
 /// When a ball of radius R on `path` meets the straight part of `cushion` within `horizon`: the earliest
 /// root of its cushion polynomial where the centre then lies between the nose's ends (beyond them the
 /// jaws take the ball); +∞ if none.

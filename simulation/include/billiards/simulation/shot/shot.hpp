@@ -334,8 +334,13 @@ class Shot {
       horizon = std::min(horizon, t);
     };
     if (e.phase.moving) {
-      for (std::size_t k = 0; k < cushions_.size(); ++k)
+      // A cushion whose line the centre's box over the whole horizon keeps farther than R from is passed
+      // over: its polynomial stays above 0 there.
+      const shot::Box reach = shot::path_box(me, horizon, true, R);
+      for (std::size_t k = 0; k < cushions_.size(); ++k) {
+        if (shot::beyond_reach(reach, cushions_[k], R)) continue;
         found(shot::cushion_contact(me, cushions_[k], R, horizon), ShotEvent::Kind::cushion, k);
+      }
       e.box = shot::path_box(me, horizon, true, R);
       for (std::size_t k = 0; k < jaws_.size(); ++k) {
         if (!e.box.near(jaws_[k].centre, R + jaws_[k].radius)) continue;
