@@ -40,6 +40,14 @@ const GiNaC::possymbol& power_symbol(const ex& a) {
 
 REGISTER_FUNCTION(binary_exponent, eval_func(binary_exponent_eval))
 
+namespace {
+ex fused_multiply_add_eval(const ex& a, const ex& b, const ex& c) { return a * b + c; }
+}  // namespace
+
+REGISTER_FUNCTION(fused_multiply_add, eval_func(fused_multiply_add_eval))
+
+ex fused_multiply_add_held(const ex& a, const ex& b, const ex& c) { return fused_multiply_add(a, b, c).hold(); }
+
 std::optional<int> exact_binary_logarithm(const numeric& n) {
   if (!n.is_rational() || !n.is_positive()) return std::nullopt;
   // 2^|k| is an integer: as many halvings of it as bring it to 1.

@@ -16,6 +16,16 @@ namespace billiards::derive {
 /// binary_exponent(x), a Scalar holding that integer.
 DECLARE_FUNCTION_1P(binary_exponent)
 
+/// a b + c rounded once: printed in C++ as std::fma(a, b, c). Its value is a b + c: it evaluates to that
+/// wherever it is evaluated (a substitution into it, a comparison), so that every algebraic check sees
+/// the exact sum; a kernel step holds it unevaluated (fused_multiply_add_held) to be printed as one
+/// operation — the way to keep a product's rounding error, e.g. std::fma(x, x, −x²) is exactly
+/// x·x − (x·x rounded).
+DECLARE_FUNCTION_3P(fused_multiply_add)
+
+/// fused_multiply_add(a, b, c), held: printed as std::fma(a, b, c).
+GiNaC::ex fused_multiply_add_held(const GiNaC::ex& a, const GiNaC::ex& b, const GiNaC::ex& c);
+
 /// x · 2^k: printed in C++ as times_power_of_two(x, k).
 GiNaC::ex times_power_of_two(const GiNaC::ex& x, const GiNaC::ex& k);
 

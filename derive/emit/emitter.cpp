@@ -39,8 +39,9 @@ int count_operations(const std::string& code) {
     if ((c == '+' || c == '*' || c == '/' || c == '-') && spaced) ++count;
     if (c == '-' && i + 1 < code.size() && code[i + 1] != ' ') ++count;
   }
-  // A square root, a binary exponent and a scaling by a power of two count as one operation each.
-  for (const std::string call : {"std::sqrt(", "binary_exponent(", "times_power_of_two("}) {
+  // A square root, a fused multiply-add, a binary exponent and a scaling by a power of two count as one
+  // operation each.
+  for (const std::string call : {"std::sqrt(", "std::fma(", "binary_exponent(", "times_power_of_two("}) {
     for (std::size_t at = code.find(call); at != std::string::npos; at = code.find(call, at + 1)) ++count;
   }
   return count;
@@ -169,13 +170,15 @@ bool any_expression(const Kernel& kernel, Property property) {
 // True when the kernel scales by powers of two: binary_exponent and times_power_of_two.
 bool scales(const Kernel& kernel) { return any_expression(kernel, uses_power_of_two_scaling); }
 
-// True when the kernel calls a function that is not constexpr: std::sqrt, or the scaling helpers
-// (std::ilogb and std::ldexp outside their bit paths).
+// True when the kernel calls a function that is not constexpr: std::sqrt, std::fma, or the scaling
+// helpers (std::ilogb and std::ldexp outside their bit paths).
 bool needs_runtime_math(const Kernel& kernel) {
   if (scales(kernel)) return true;
   return any_expression(kernel, [](const ex& e) {
     for (GiNaC::const_preorder_iterator it = e.preorder_begin(); it != e.preorder_end(); ++it) {
       if (GiNaC::is_a<GiNaC::power>(*it) && it->op(1) == GiNaC::numeric(1, 2)) return true;
+      if (GiNaC::is_a<GiNaC::function>(*it) && GiNaC::ex_to<GiNaC::function>(*it).get_name() == "fused_multiply_add")
+        return true;
     }
     return false;
   });

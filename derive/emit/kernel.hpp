@@ -101,6 +101,13 @@ struct Kernel {
   /// one binade stands for every magnitude at which they are normal numbers), a mass beyond the plain
   /// range. Each case is proven on its own; none means the domain alone.
   std::vector<std::vector<GiNaC::ex>> rounding_cases = {};
+  /// Rewritings Gappa is given beside each of its proofs (`a -> b;`, in the script's names: p_<parameter>
+  /// for a parameter, c_<step> computed and e_<step> exact): how errors the steps keep cancel, e.g. that a
+  /// product's rounding error taken by std::fma makes the product exact again.
+  std::vector<std::string> gappa_hints = {};
+  /// The relative error, in ε, that every case's proven bound must meet; billiards-derive fails where
+  /// Gappa proves no bound within it. Unset: any bound below 2^−10 is taken.
+  std::optional<int> promised_error = {};
 };
 
 /// A monomial c Π x_i^(a_i) (c a number or an expression in other symbols, each a_i an integer)

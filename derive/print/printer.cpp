@@ -370,6 +370,11 @@ std::string print_cpp_leaf(const ex& e) {
     // The emitted header defines binary_exponent(): the exponent as a Scalar, for host and device.
     return "binary_exponent(" + print_any(e.op(0), Notation::cpp) + ")";
   }
+  if (GiNaC::is_a<GiNaC::function>(e) && GiNaC::ex_to<GiNaC::function>(e).get_name() == "fused_multiply_add") {
+    // a b + c rounded once, on host and device.
+    return "std::fma(" + print_any(e.op(0), Notation::cpp) + ", " + print_any(e.op(1), Notation::cpp) + ", " +
+           print_any(e.op(2), Notation::cpp) + ")";
+  }
   if (GiNaC::is_a<GiNaC::function>(e) && GiNaC::ex_to<GiNaC::function>(e).get_name() == "abs") {
     // The emitted header defines absolute_value(): constexpr, unlike std::abs before C++23.
     return "absolute_value(" + print_any(e.op(0), Notation::cpp) + ")";

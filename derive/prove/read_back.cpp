@@ -94,6 +94,8 @@ ex to_expression(const CppExpression& e, const std::map<std::string, ex>& names)
       if (e.text == "times_power_of_two" && arity == 2) return times_power_of_two(operand(0), operand(1));
       if (e.text == "absolute_value" && arity == 1) return GiNaC::abs(operand(0));
       if (e.text == "std::sqrt" && arity == 1) return GiNaC::sqrt(operand(0));
+      // Its value: the product and the sum, exactly (rounding is for the proof of the bound to see).
+      if (e.text == "std::fma" && arity == 3) return operand(0) * operand(1) + operand(2);
       throw CppReadError(e.line, "the call " + spelled(e) + " in a kernel expression");
     }
     case Kind::conditional:

@@ -170,6 +170,14 @@ class Script {
   // Each exact scaling by a power of two the definitions wrote, as computed.
   const std::set<std::string>& scalings() const { return scalings_; }
 
+  // Whether `e` calls `callee` anywhere.
+  static bool calls(const CppExpression& e, const std::string& callee) {
+    if (e.kind == CppExpression::Kind::call && e.text == callee) return true;
+    for (const CppExpression& operand : e.operands)
+      if (calls(operand, callee)) return true;
+    return false;
+  }
+
   // An expression of the printed kernel, rounded (each operation, as `rnd=` does) or exact.
   std::string expression(const CppExpression& e, bool exact) const {
     using Kind = CppExpression::Kind;
@@ -216,6 +224,15 @@ class Script {
         }
         if (e.text == "std::sqrt" && e.operands.size() == 1)
           return "sqrt(" + expression(e.operands[0], exact) + ")";
+        // a b + c rounded once: `rnd(...)` about the exact sum, which a `rnd=` line leaves as it is.
+        if (e.text == "std::fma" && e.operands.size() == 3) {
+          const CppExpression& addend = e.operands[2];
+          const bool subtracted = addend.kind == Kind::unary && addend.text == "-";
+          const std::string sum = expression(e.operands[0], exact) + " * " + expression(e.operands[1], exact) +
+                                  (subtracted ? " - " + expression(addend.operands[0], exact)
+                                              : " + " + expression(addend, exact));
+          return exact ? "(" + sum + ")" : "rnd(" + sum + ")";
+        }
         break;
       }
       default: break;
@@ -357,7 +374,13 @@ class Script {
           integer_steps_[s.name] = *k;
           continue;
         }
-        out << "c_" << s.name << " rnd= " << expression(value, false) << ";\n";
+        // A fused multiply-add is rounded once, as its own `rnd(…)` says: the whole step, never a part of one.
+        const bool fused = value.kind == CppExpression::Kind::call && value.text == "std::fma";
+        for (const CppExpression& operand : fused ? value.operands : std::vector<CppExpression>{value}) {
+          if (calls(operand, "std::fma"))
+            throw NotProvable("std::fma inside " + spelled(value) + ": only a whole step may be one");
+        }
+        out << "c_" << s.name << (fused ? " = " : " rnd= ") << expression(value, false) << ";\n";
         out << "e_" << s.name << " = " << expression(value, true) << ";\n";
         steps_.insert(s.name);
         bounded.push_back("c_" + s.name);
@@ -369,6 +392,7 @@ class Script {
           fix_exponents(values[k], out.str());
           // An output that is a step is that step (Gappa would rename a copy); any other, o_k.
           std::string name = values[k].kind == CppExpression::Kind::name ? values[k].text : "";
+          if (calls(values[k], "std::fma")) throw NotProvable("an output that is a std::fma: make it a step");
           if (name.empty() || !steps_.count(name)) {
             name = "o_" + std::to_string(k);
             out << "c_" << name << " rnd= " << expression(values[k], false) << ";\n";
@@ -664,6 +688,8 @@ void prove_case(const CppFunction& printed, const Kernel& kernel, const BinaryFo
             }
           }
         }
+        // The kernel's own: rewritings that tell Gappa how its steps' errors cancel.
+        hints.insert(hints.end(), kernel.gappa_hints.begin(), kernel.gappa_hints.end());
         const std::string script = gappa_script(printed, kernel, format, ranges, taken, hints);
         std::vector<std::pair<std::string, Intervals>> expected;
         if (const auto guard = facts.guard.find(format.type); guard != facts.guard.end())
@@ -697,6 +723,13 @@ void prove_case(const CppFunction& printed, const Kernel& kernel, const BinaryFo
           if (*largest >= GiNaC::numeric(1, 1024)) {
             fail("in " + format.type + " over " + hypotheses + ", Gappa bounds the relative error of " +
                  spelling + " only by " + interval_text(*largest) + ": it may lose every digit");
+            break;
+          }
+          // A kernel that promises a bound must be proven within it.
+          if (kernel.promised_error && *largest > epsilon * GiNaC::numeric(*kernel.promised_error)) {
+            fail("in " + format.type + " over " + hypotheses + ", Gappa bounds the relative error of " + spelling +
+                 " by " + interval_text(*largest) + ", above the " + std::to_string(*kernel.promised_error) +
+                 " ε the kernel promises");
             break;
           }
           bound.outputs.push_back(spelling);

@@ -249,12 +249,66 @@ void check(const std::array<Scalar, 5>& c, Scalar horizon, Row& row) {
   row.worst_ulps = std::max(row.worst_ulps, (error / ulp).to_double());
 }
 
+// Two balls whose gap at t = 0 is g R, g from 1e-15 (double; 1e-6 in float) to 1e-3, approaching nearly
+// head on (within 0.1 rad) under a sliding or a rolling ball's relative acceleration: the time
+// earliest_contact finds from the coefficients that contact_polynomial forms in the type, against the
+// exact first root of the polynomial of the inputs as given (Δr, Δv, Δa and D, each exact): what the
+// coefficients' own rounding costs. c0's error is a few ε of c0 plus ε² of the squares, so that ulp-level
+// times hold down to gaps of about ε R (a float gap of 1e-11 R would be 1e4 ulps off). A time more
+// than 8 ulps off is a wrong root.
+template <typename Scalar>
+void check_tiny_gap(std::mt19937_64& random, Row& row) {
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  const double R = 0.028575, D = 2 * R;
+  const double decades = std::is_same_v<Scalar, float> ? 3 : 12;
+  const double angle = 2 * M_PI * unit(random), gap = std::pow(10.0, -3 - decades * unit(random)) * R;
+  const Eigen::Vector2d n(std::cos(angle), std::sin(angle));
+  using V = Eigen::Matrix<Scalar, 2, 1>;
+  const V dr = ((D + gap) * n).template cast<Scalar>();
+  const double aim = angle + M_PI + 0.2 * (unit(random) - 0.5), speed = 0.01 + 5 * unit(random);
+  const V dv = (speed * Eigen::Vector2d(std::cos(aim), std::sin(aim))).template cast<Scalar>();
+  const double slip = 2 * M_PI * unit(random);
+  const V da = (unit(random) < 0.5 ? 0.2 * 9.81 : 0.01 * 9.81) *
+               Eigen::Vector2d(std::cos(slip), std::sin(slip)).template cast<Scalar>();
+  const Scalar distance = static_cast<Scalar>(D), horizon = Scalar(1);
+  const std::array<Scalar, 5> c = billiards::contact_polynomial<Scalar>(dr, dv, da, distance);
+  using billiards::accuracy::exact_rational;
+  const numeric x = exact_rational(dr.x()), y = exact_rational(dr.y()), vx = exact_rational(dv.x()),
+                vy = exact_rational(dv.y()), ax = exact_rational(da.x()), ay = exact_rational(da.y()),
+                d = exact_rational(distance);
+  const Rational p = trimmed({x * x + y * y - d * d, 2 * (x * vx + y * vy), vx * vx + vy * vy + x * ax + y * ay,
+                              vx * ax + vy * ay, (ax * ax + ay * ay) / 4});
+  ++row.polynomials;
+  const ExactContact exact = exact_earliest(p, exact_rational(horizon));
+  const std::optional<Scalar> found = billiards::earliest_contact(c, horizon);
+  const auto fail = [&](long& counter, const std::string& what) {
+    ++counter;
+    if (row.first_failure.empty()) row.first_failure = what + ": " + describe(c, horizon);
+  };
+  if (!exact.found) {
+    if (found) fail(row.false_contacts, "a contact reported where the inputs' polynomial has none");
+    return;
+  }
+  ++row.contacts;
+  if (!found) {
+    fail(row.misses, "a contact missed");
+    return;
+  }
+  const numeric middle = (exact.low + exact.high) / 2;
+  const numeric ulp = exact_rational(std::nextafter(*found, std::numeric_limits<Scalar>::infinity()) - *found);
+  const numeric error = GiNaC::abs(exact_rational(*found) - middle);
+  if (error > 8 * ulp + (exact.high - exact.low)) fail(row.wrong_roots, "a time more than 8 ulps from the inputs' root");
+  if (middle > 0) row.worst = std::max(row.worst, (error / middle).to_double());
+  row.worst_ulps = std::max(row.worst_ulps, (error / ulp).to_double());
+}
+
 // The families of polynomials, each drawn in double (and rounded to float for the float runs).
 class Families {
  public:
   explicit Families(std::uint64_t seed) : random_(seed) {}
   static constexpr int count = 11;
   static const char* name(int family) {
+    if (family == count) return "tiny gaps at t = 0, 1e-15 (float: 1e-6) to 1e-3 R, against the inputs' exact root";
     static const char* names[count] = {"two balls on the cloth (phases' accelerations)",
                                        "a ball and a straight cushion",
                                        "double roots (grazes), rounded",
@@ -430,6 +484,7 @@ int main(int argc, char** argv) {
   }
 
   Families families(seed);
+  std::mt19937_64 tiny_gaps(seed + 1);
   std::map<std::pair<int, std::string>, Row> rows;
   for (long i = 0; i < polynomials; ++i) {
     const int family = static_cast<int>(i % Families::count);
@@ -438,6 +493,10 @@ int main(int argc, char** argv) {
     std::array<float, 5> single{};
     for (std::size_t k = 0; k < 5; ++k) single[k] = static_cast<float>(c[k]);
     check<float>(single, static_cast<float>(horizon), rows[{family, "float"}]);
+    if (i % Families::count == 0) {
+      check_tiny_gap<double>(tiny_gaps, rows[{Families::count, "double"}]);
+      check_tiny_gap<float>(tiny_gaps, rows[{Families::count, "float"}]);
+    }
   }
   bool failed = false;
   std::cout << "| polynomials | type | count | contacts | misses | false contacts | wrong roots | wrong at t = 0 | "

@@ -190,6 +190,13 @@ const std::vector<Mutation>& spin_class_mutations() {
               "tangential_inverse_effective_mass", "Scalar(3.5) / m1", "Scalar(3.4) / m1"),
       printed("printer_literal_misspelled", "spin_change", spin_header, "spin_change", "Scalar(2.5)",
               "Scalar(2.25)"),
+      // A fused multiply-add read back as its value: its addend's sign slipped is a different c0.
+      printed("printer_fused_addend_sign", "contact_constant_term", spin_header, "contact_constant_term",
+              "std::fma(distance, distance, -dd)", "std::fma(distance, distance, dd)"),
+      // Split into a product and a sum, it rounds twice: the same value, but the kept error is lost, which
+      // only the proof of the promised bound sees.
+      printed("printer_fused_as_two_roundings", "contact_constant_term", spin_header, "contact_constant_term",
+              "std::fma(dx, dx, -xx)", "dx * dx - xx"),
       printed("emitter_fast_call_arguments_swapped", "slide_time", spin_header, "slide_time",
               "plain_slide_time(slip_speed, sliding_friction, gravity)",
               "plain_slide_time(slip_speed, gravity, sliding_friction)"),

@@ -223,6 +223,24 @@ const std::vector<Mutation>& spin_mutations() {
          const auto x = [&](const char* name) { return symbol(k, name); };
          k.outputs.at(0) = x("dx") * x("dx") + x("dy") * x("dy") + x("distance") * x("distance");
        }},
+      // c0 without cancellation: each part of it is what keeps its promised bound near a contact (8 ε,
+      // which only Gappa's proof can hold it to: every edit below is the same value in exact arithmetic).
+      {"contact_constant_term_kept_errors_dropped", "contact_constant_term",
+       [](Kernel& k) { step(k, "constant_term").expression = symbol(k, "nearest"); }},
+      {"contact_constant_term_product_error_rounded_twice", "contact_constant_term",
+       [](Kernel& k) {
+         step(k, "dd_error").expression = symbol(k, "distance") * symbol(k, "distance") - symbol(k, "dd");
+       }},
+      {"contact_constant_term_larger_square_unguarded", "contact_constant_term",
+       [](Kernel& k) {
+         step(k, "larger").guards.clear();
+         step(k, "smaller").guards.clear();
+       }},
+      {"contact_constant_term_smaller_square_first", "contact_constant_term",
+       [](Kernel& k) {
+         step(k, "difference").expression = symbol(k, "larger") + symbol(k, "smaller");
+         step(k, "nearest").expression = symbol(k, "difference") - symbol(k, "dd");
+       }},
       {"contact_linear_term_without_its_two", "contact_linear_term",
        [](Kernel& k) {
          const auto x = [&](const char* name) { return symbol(k, name); };

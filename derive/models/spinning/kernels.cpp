@@ -520,15 +520,59 @@ void event_kernels(std::vector<Kernel>& kernels) {
   const std::string contact = " of the contact polynomial |Δr + Δv t + ½ Δa t²|² − D² of two balls (Δ: ball 2 "
                               "less ball 1, D = R1 + R2) or of a ball and a circle (Δ: the ball less the "
                               "circle's centre, D = R + ρ or ρ)";
-  kernels.push_back({
-      .name = "contact_constant_term",
-      .brief = "c0 = Δr·Δr − D², the coefficient of t⁰" + contact + ": its sign is the gap's.",
-      .parameters = {p.dx, p.dy, p.distance},
-      .outputs = {p.dx * p.dx + p.dy * p.dy - p.distance * p.distance},
-      .equals = "events.contact_constant_term",
-      .claims = {"events.contact_now_and_approach"},
-      .rounding_cases = {box({within(p.dx, 4, 8), within(p.dy, 4, 8), within(p.distance, 1, 2)})},
-  });
+  {
+    // c0 = |Δr|² − D² without the cancellation near a contact: each square's rounding error taken exactly
+    // by a fused multiply-add; the larger square less D² (exact by Sterbenz's lemma where the gap is small:
+    // the larger square then lies within a factor 2 of D²) plus the smaller (exact again, or without
+    // cancellation); the errors added last. Its error is a few ε of c0 itself plus ε² of the squares.
+    const GiNaC::symbol xx("xx"), xx_error("xx_error"), yy("yy"), yy_error("yy_error"), dd("dd"),
+        dd_error("dd_error"), larger("larger"), smaller("smaller"), difference("difference"), nearest("nearest"),
+        errors("errors"), constant_term("constant_term");
+    using Kind = Guard::Kind;
+    const std::string why = "events.contact_constant_term";
+    // The script's names (rounding.hpp): how the kept errors cancel the squares' rounding.
+    const std::vector<std::string> hints = {
+        "c_xx + c_xx_error - p_dx * p_dx -> c_xx_error - (p_dx * p_dx - c_xx);",
+        "c_yy + c_yy_error - p_dy * p_dy -> c_yy_error - (p_dy * p_dy - c_yy);",
+        "c_dd + c_dd_error - p_distance * p_distance -> c_dd_error - (p_distance * p_distance - c_dd);",
+        "c_constant_term - e_constant_term -> (c_constant_term - (c_errors + c_nearest)) + (c_nearest - "
+        "(c_difference + c_smaller)) + (c_difference - (c_larger - c_dd)) + (c_errors - ((c_xx_error + "
+        "c_yy_error) - c_dd_error)) + ((c_xx + c_xx_error - p_dx * p_dx) + (c_yy + c_yy_error - p_dy * p_dy) - "
+        "(c_dd + c_dd_error - p_distance * p_distance));",
+    };
+    const ex gap_scale = GiNaC::numeric(1, 4096);  // 2^-12: a gap of 2^-12 D to 2^-11 D, in float and double
+    kernels.push_back({
+        .name = "contact_constant_term",
+        .brief = "c0 = Δr·Δr − D², the coefficient of t⁰" + contact +
+                 ": its sign is the gap's. Without cancellation where the bodies nearly touch: its error is "
+                 "a few ε of c0 itself.",
+        .parameters = {p.dx, p.dy, p.distance},
+        .steps = {{xx, p.dx * p.dx},
+                  {xx_error, fused_multiply_add_held(p.dx, p.dx, -xx)},
+                  {yy, p.dy * p.dy},
+                  {yy_error, fused_multiply_add_held(p.dy, p.dy, -yy)},
+                  {dd, p.distance * p.distance},
+                  {dd_error, fused_multiply_add_held(p.distance, p.distance, -dd)},
+                  {larger, xx, {Guard{yy > xx, yy, Kind::same_value, why}}},
+                  {smaller, yy, {Guard{yy > xx, xx, Kind::same_value, why}}},
+                  {difference, larger - dd},
+                  {nearest, difference + smaller},
+                  {errors, xx_error + yy_error - dd_error},
+                  {constant_term, nearest + errors}},
+        .outputs = {constant_term},
+        .equals = "events.contact_constant_term",
+        .claims = {"events.contact_now_and_approach"},
+        .rounding_cases = {box({within(p.dx, 4, 8), within(p.dy, 1, 2), within(p.distance, 1, 2)}),
+                           box({within(p.dx, 1, 2), within(p.dy, 4, 8), within(p.distance, 1, 2)}),
+                           // Nearly touching, along x and along y: c0 = 2^-12 D² to 2^-9 D².
+                           box({within(p.dx, 1 + gap_scale, 1 + 2 * gap_scale), within(p.dy, 0, gap_scale * gap_scale),
+                                within(p.distance, 1, 1 + gap_scale / 2)}),
+                           box({within(p.dx, 0, gap_scale * gap_scale), within(p.dy, 1 + gap_scale, 1 + 2 * gap_scale),
+                                within(p.distance, 1, 1 + gap_scale / 2)})},
+        .gappa_hints = hints,
+        .promised_error = 8,
+    });
+  }
   kernels.push_back({
       .name = "contact_linear_term",
       .brief = "c1 = 2 Δr·Δv, the coefficient of t" + contact + ": negative iff the bodies approach.",
