@@ -477,7 +477,7 @@ template <typename Scalar, std::size_t N>
   }
   if (!(horizon > 0)) return std::nullopt;
   // Apart now and, by its Bernstein coefficients, all the way to the horizon: no contact to search for.
-  if (p.c[0] > 0 && p.degree >= 2 && detail::stays_above(p, horizon)) return std::nullopt;
+  if (p.c[0] > 0 && p.degree >= 3 && detail::stays_above(p, horizon)) return std::nullopt;
   // The turning points of p in (0, horizon) split it into monotone pieces; walk them in order.
   const detail::EventPolynomial<Scalar> slope = detail::derivative(p);
   std::array<Scalar, 6> breaks{};
