@@ -137,9 +137,24 @@ template <typename Scalar>
     const Scalar x = a + (b - a) * (falsi_a / (falsi_a - falsi_b));
     return x > a && x < b ? x : split(a, b);
   };
-  // A quadratic's root in closed form (the stable pair q/c2, c0/q, q = −(c1 + sign(c1) √disc)/2), within
-  // a few ulps of the exact one: the bracket is closed on it at once by a probe on each side, past the
-  // width in which rounding may give p either sign, where their signs confirm it.
+  // The bracket closed on an estimate `root` of the root within rounding's reach of it (where p's slope
+  // there is `gradient`): a probe on each side, past the width in which rounding may give p either sign;
+  // taken where their signs confirm it. Returns whether it closed.
+  const auto close_on = [&](Scalar root, Scalar gradient) {
+    if (!(root > a && root < b && gradient > 0)) return false;
+    const Scalar reach = 2 * std::numeric_limits<Scalar>::epsilon() * root + evaluation_error(p, root) / gradient;
+    const Scalar low = root - reach, high = root + reach;
+    if (!(low > a && high < b)) return false;
+    const Scalar at_low = evaluate(p, low), at_high = evaluate(p, high);
+    if (!(at_low != 0 && (at_low > 0) == before && (at_high == 0 || (at_high > 0) != before))) return false;
+    a = low;
+    b = high;
+    falsi_a = at_low;
+    falsi_b = at_high;
+    return true;
+  };
+  // A quadratic's root in closed form (the stable pair q/c2, c0/q, q = −(c1 + sign(c1) √disc)/2) is
+  // within a few ulps of the exact one: the bracket is closed on it at once.
   if (p.degree == 2) {
     const Scalar c0 = p.c[0], c1 = p.c[1], c2 = p.c[2];
     const Scalar discriminant = c1 * c1 - 4 * c0 * c2;
@@ -147,20 +162,7 @@ template <typename Scalar>
       const Scalar q = -(c1 + std::copysign(std::sqrt(discriminant), c1)) / 2;
       const Scalar first = q / c2, second = c0 / q;
       const Scalar root = first > a && first < b ? first : second;
-      const Scalar gradient = std::fabs(evaluate(slope, root));
-      if (root > a && root < b && gradient > 0) {
-        const Scalar reach = 4 * std::numeric_limits<Scalar>::epsilon() * root + evaluation_error(p, root) / gradient;
-        const Scalar low = root - reach, high = root + reach;
-        if (low > a && high < b) {
-          const Scalar at_low = evaluate(p, low), at_high = evaluate(p, high);
-          if (at_low != 0 && (at_low > 0) == before && (at_high == 0 || (at_high > 0) != before)) {
-            a = low;
-            b = high;
-            falsi_a = at_low;
-            falsi_b = at_high;
-          }
-        }
-      }
+      close_on(root, std::fabs(evaluate(slope, root)));
     }
   }
   Scalar x = falsi();
@@ -234,7 +236,12 @@ template <typename Scalar>
     const Scalar step_length = std::fabs(newton - x);
     const bool converging = step_length < newton_step / 2;
     newton_step = step_length;
-    if (was_newton && newton != x && converging && 16 * step_length > width && newton > a && newton < b) {
+    if (was_newton && newton != x && converging && step_length <= Scalar(0x1p-26) * std::fabs(x) &&
+        close_on(newton, std::fabs(gradient))) {
+      // Newton's steps converged (the last below 2^-26 of x, so that this one lands within rounding of
+      // the root): the bracket closed on it; bisection and the regula falsi finish within it.
+      x = falsi();
+    } else if (was_newton && newton != x && converging && 16 * step_length > width && newton > a && newton < b) {
       // Newton's steps shrinking but still long beside the bracket: one more, before the probe.
       x = newton;
       after_newton = true;
