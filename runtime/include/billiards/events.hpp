@@ -67,19 +67,21 @@ template <typename Scalar>
 }
 
 /// p'(t) up to a positive factor, which changes neither its roots nor its signs: coefficients k c_k,
-/// exact, or (k/d) c_k where a k c_k would overflow (d the degree).
+/// exact, or (k/d) c_k where the k c_k would not all be finite or their sizes would overflow (d the
+/// degree). Every lane is computed (the coefficients above the degree are zero), without a branch on the
+/// degree.
 template <typename Scalar>
 [[nodiscard]] EventPolynomial<Scalar> derivative(const EventPolynomial<Scalar>& p) noexcept {
   EventPolynomial<Scalar> d;
-  bool large = false;
-  for (int k = 1; k <= p.degree; ++k)
-    large = large || std::fabs(p.c[static_cast<std::size_t>(k)]) > std::numeric_limits<Scalar>::max() / Scalar(2 * p.degree);
-  for (int k = 1; k <= p.degree; ++k) {
-    const Scalar factor = large ? Scalar(k) / Scalar(p.degree) : Scalar(k);
-    d.c[static_cast<std::size_t>(k - 1)] = factor * p.c[static_cast<std::size_t>(k)];
+  d.c = {p.c[1], 2 * p.c[2], 3 * p.c[3], 4 * p.c[4], Scalar(0)};
+  using std::fabs;
+  if (!(fabs(d.c[0]) + fabs(d.c[1]) + fabs(d.c[2]) + fabs(d.c[3]) <= std::numeric_limits<Scalar>::max())) {
+    const Scalar degree = Scalar(p.degree > 0 ? p.degree : 1);
+    for (int k = 1; k <= 4; ++k) d.c[static_cast<std::size_t>(k - 1)] = Scalar(k) / degree * p.c[static_cast<std::size_t>(k)];
   }
+  // The leading k c_k of a trimmed p is not zero (no product by k ≥ 1 underflows to it).
   d.degree = p.degree - 1;
-  return trimmed(d);
+  return d;
 }
 
 /// p(t) by Horner's rule: for finite coefficients and a finite t ≥ 0 never NaN (an overflow gives the
