@@ -160,6 +160,20 @@ TEMPLATE_TEST_CASE("earliest_contact at t = 0: touching or overlapping, approach
   CHECK(*back > 0);
 }
 
+TEMPLATE_TEST_CASE("earliest_contact: a root below the smallest step of the type is reported at that step",
+                   "[events]", float, double) {
+  using S = TestType;
+  // c0 the smallest subnormal, falling at 27.6 a second: the root, near 1.8e-325 s in double, lies below
+  // the smallest positive value. Apart at t = 0, the bodies meet at the first step after it, never at
+  // t = 0 (whether the horizon keeps p finite or, at the largest finite value, overflows it).
+  const S tiny = std::numeric_limits<S>::denorm_min();
+  for (const S horizon : {S(1), std::numeric_limits<S>::max()}) {
+    const std::optional<S> t = billiards::earliest_contact(std::array<S, 2>{tiny, S(-27.6)}, horizon);
+    REQUIRE(t);
+    CHECK(*t == tiny);
+  }
+}
+
 TEMPLATE_TEST_CASE("earliest_contact: the degree is what the coefficients make it", "[events]", float, double) {
   using S = TestType;
   // Linear: 1 − 4t, root ¼.

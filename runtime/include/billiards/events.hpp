@@ -500,7 +500,10 @@ template <typename Scalar, std::size_t N>
     if (std::fabs(right) <= 2 * detail::evaluation_error(p, b)) {
       // p at the turning point (or the horizon) within twice its rounding of 0: its sign there, certified,
       // says whether p reaches 0 by b where p falls into b from above 0.
-      if (left > 0 && detail::certified_sign(p, b) <= 0) return detail::placed_root(p, slope, a, b, b);
+      if (left > 0 && detail::certified_sign(p, b) <= 0) {
+        const Scalar t = detail::placed_root(p, slope, a, b, b);
+        return t > 0 ? t : std::numeric_limits<Scalar>::denorm_min();  // a root below the smallest step
+      }
       // At the horizon, p falling to a value above 0: no contact by it.
       if (left > 0 && i == turns) return std::nullopt;
       // A turning point just above 0 (a graze or a near miss: the exact minimum lies beside it), or p
