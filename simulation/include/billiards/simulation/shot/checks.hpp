@@ -7,6 +7,7 @@
 
 #include <billiards/simulation/core/errors.hpp>
 #include <billiards/simulation/core/invariants.hpp>
+#include <billiards/simulation/shot/event.hpp>
 #include <billiards/simulation/shot/pool_table.hpp>
 
 #include <billiards/checked.hpp>
@@ -51,6 +52,14 @@ inline void validate(const PoolTable& table, const PoolPhysics& p) {
     throw billiards::invalid_argument(
         "Shot", "table.nose_height", shortest(table.nose_height),
         "a height in [R, 2R) = [" + shortest(p.radius) + ", " + shortest(2 * p.radius) + ")");
+}
+
+/// Throws billiards::invalid_argument naming the option where `options` cannot run a shot: a pressing
+/// speed that is not positive and finite.
+inline void validate(const ShotOptions& options) {
+  if (!(std::isfinite(options.pressing_speed) && options.pressing_speed > 0))
+    throw billiards::invalid_argument("Shot", "options.pressing_speed", detail::shortest(options.pressing_speed),
+                                      "a positive, finite speed (m/s)");
 }
 
 /// Throws std::invalid_argument naming the ball where `balls` cannot start a shot on `table` with balls

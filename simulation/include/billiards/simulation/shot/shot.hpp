@@ -97,15 +97,15 @@ class Shot {
   /// The kinetic energy may grow at an event by at most this fraction of the largest total the shot has
   /// had (rounding of the contact laws, which conserve or dissipate it exactly).
   static constexpr double energy_tolerance = 1e-12;
-  /// The speed (m/s) at which bodies the cloth presses together leave a contact at the least: the
-  /// energy is taken from their relative velocity along the contact plane, then from their spins (see
-  /// the class's description).
-  static constexpr double pressing_speed = 1e-3;
+  /// The default of ShotOptions::pressing_speed (m/s): the speed at which bodies the cloth presses
+  /// together leave a contact at the least, the energy taken from their relative velocity along the
+  /// contact plane, then from their spins (see the class's description).
+  static constexpr double pressing_speed = ShotOptions{}.pressing_speed;
 
-  /// Validates the physics (billiards::invalid_argument naming the field, shot::validate) and the balls
-  /// (std::invalid_argument naming the ball: a state not finite, a velocity not horizontal, a centre not
-  /// on the cloth at least a radius inside every cushion's nose, two balls overlapping). A ball's
-  /// position.z is set to the radius.
+  /// Validates the physics and the options (billiards::invalid_argument naming the field, shot::validate)
+  /// and the balls (std::invalid_argument naming the ball: a state not finite, a velocity not horizontal,
+  /// a centre not on the cloth at least a radius inside every cushion's nose, two balls overlapping). A
+  /// ball's position.z is set to the radius.
   Shot(PoolTable table, PoolPhysics physics, std::vector<PoolBall> balls, ShotOptions options = {})
       : table_(std::move(table)),
         physics_(std::move(physics)),
@@ -113,6 +113,7 @@ class Shot {
         cushions_(table_.cushions()),
         jaws_(table_.jaws()) {
     shot::validate(table_, physics_);
+    shot::validate(options_);
     shot::validate(balls, table_, physics_.radius);
     pockets_ = shot::capture_circles(table_, physics_.radius);
     for (const PoolBall& b : balls) {
@@ -430,7 +431,7 @@ class Shot {
         }
         shot::take(e.state, after->first);
         shot::take(balls_[p.other].state, after->second);
-        shot::separate_pressed_pair(e.state, balls_[p.other].state, n, physics_.cloth, pressing_speed);
+        shot::separate_pressed_pair(e.state, balls_[p.other].state, n, physics_.cloth, options_.pressing_speed);
         skip = p.other;
         break;
       }
@@ -447,7 +448,7 @@ class Shot {
           return;
         }
         shot::take(e.state, *after);
-        shot::separate_pressed_ball(e.state, n, physics_.cloth, pressing_speed);
+        shot::separate_pressed_ball(e.state, n, physics_.cloth, options_.pressing_speed);
         break;
       }
       case ShotEvent::Kind::pocket:
