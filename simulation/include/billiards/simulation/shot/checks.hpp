@@ -58,7 +58,8 @@ inline void validate(const PoolTable& table, const PoolPhysics& p) {
 /// speed that is not positive and finite.
 inline void validate(const ShotOptions& options) {
   if (!(std::isfinite(options.pressing_speed) && options.pressing_speed > 0))
-    throw billiards::invalid_argument("Shot", "options.pressing_speed", detail::shortest(options.pressing_speed),
+    throw billiards::invalid_argument("Shot", "options.pressing_speed",
+                                      detail::shortest(options.pressing_speed),
                                       "a positive, finite speed (m/s)");
 }
 
