@@ -70,6 +70,25 @@ TEMPLATE_TEST_CASE("Beyond the paper", "[runtime][beyond]", (Config<float, 2>), 
   std::mt19937_64 random(42);
   std::uniform_real_distribution<double> unit_interval(0, 1), decade(-3, 3);
   const auto random_mass = [&] { return static_cast<Scalar>(std::pow(10.0, decade(random))); };
+  const auto bits_equal = [](const Vector& a, const Vector& b) {
+    return std::memcmp(a.data(), b.data(), sizeof(Scalar) * std::size_t(N)) == 0;
+  };
+  // `same(d)` for d = 2^k d0 at every k that keeps d exact and finite, failing the test naming k where it
+  // is false; returns how many were compared.
+  const auto at_every_scaling = [](const Vector& d0, const auto& same) {
+    using limits = std::numeric_limits<Scalar>;
+    int compared = 0;
+    for (int k = limits::min_exponent - limits::digits; k < limits::max_exponent; ++k) {
+      Vector d;
+      for (int i = 0; i < N; ++i) d[i] = std::ldexp(d0[i], k);
+      bool exact_scaling = d.allFinite();
+      for (int i = 0; i < N; ++i) exact_scaling = exact_scaling && std::ldexp(d[i], -k) == d0[i];
+      if (!exact_scaling) continue;
+      if (!same(d)) FAIL("d = 2^" << k << " d0 differs from d0");
+      ++compared;
+    }
+    return compared;
+  };
 
   SECTION("restitution: the hand-written formula, separation = e × approach, and the energy lost") {
     for (int trial = 0; trial < 20000; ++trial) {
@@ -196,30 +215,20 @@ TEMPLATE_TEST_CASE("Beyond the paper", "[runtime][beyond]", (Config<float, 2>), 
     // products of d as it is and scales late, elsewhere it scales d first; every quantity then differs
     // by a power of two only, so the results must agree with d0's to the last bit, in both calls that
     // take a direction.
-    const auto bits_equal = [](const Vector& a, const Vector& b) {
-      return std::memcmp(a.data(), b.data(), sizeof(Scalar) * std::size_t(N)) == 0;
-    };
     using limits = std::numeric_limits<Scalar>;
     int compared = 0;
     for (int trial = 0; trial < 20; ++trial) {
       const Scalar m1 = random_mass(), m2 = random_mass(), e = Scalar(unit_interval(random));
       const Vector v1 = random_vector<Vector>(random), v2 = random_vector<Vector>(random);
       const Vector d0 = random_vector<Vector>(random), zero = Vector::Zero();
-      const auto [x1, x2] = billiards::collide_along_direction(m1, v1, m2, v2, d0, e);
-      const auto [y1, y2] = billiards::collide_if_approaching(m1, zero, v1, m2, d0, v2, e);
-      for (int k = limits::min_exponent - limits::digits; k < limits::max_exponent; ++k) {
-        Vector d;
-        for (int i = 0; i < N; ++i) d[i] = std::ldexp(d0[i], k);
-        bool exact_scaling = d.allFinite();
-        for (int i = 0; i < N; ++i) exact_scaling = exact_scaling && std::ldexp(d[i], -k) == d0[i];
-        if (!exact_scaling) continue;
+      const auto along = billiards::collide_along_direction(m1, v1, m2, v2, d0, e);
+      const auto approaching = billiards::collide_if_approaching(m1, zero, v1, m2, d0, v2, e);
+      compared += at_every_scaling(d0, [&](const Vector& d) {
         const auto [z1, z2] = billiards::collide_along_direction(m1, v1, m2, v2, d, e);
         const auto [w1, w2] = billiards::collide_if_approaching(m1, zero, v1, m2, d, v2, e);
-        if (!bits_equal(z1, x1) || !bits_equal(z2, x2) || !bits_equal(w1, y1) || !bits_equal(w2, y2)) {
-          FAIL("d = 2^" << k << " d0 differs from d0");
-        }
-        ++compared;
-      }
+        return bits_equal(z1, along.first) && bits_equal(z2, along.second) && bits_equal(w1, approaching.first) &&
+               bits_equal(w2, approaching.second);
+      });
     }
     CHECK(compared > 18 * (limits::max_exponent - limits::min_exponent));
   }
@@ -232,9 +241,6 @@ TEMPLATE_TEST_CASE("Beyond the paper", "[runtime][beyond]", (Config<float, 2>), 
     // of one sign, so that their sums do not cancel into the subnormal range); subnormal outputs
     // included (x1 − v1 = c1 d' is of the order of those velocities). A 64th of those velocities, whose
     // products are subnormal, breaks it in both types (d = 2^k d' then differs in the last bits).
-    const auto bits_equal = [](const Vector& a, const Vector& b) {
-      return std::memcmp(a.data(), b.data(), sizeof(Scalar) * std::size_t(N)) == 0;
-    };
     using limits = std::numeric_limits<Scalar>;
     int compared = 0, subnormal_outputs = 0;
     for (int trial = 0; trial < 40; ++trial) {
@@ -250,18 +256,13 @@ TEMPLATE_TEST_CASE("Beyond the paper", "[runtime][beyond]", (Config<float, 2>), 
         REQUIRE(static_cast<long double>(v) * std::fabs(d0[i]) >= static_cast<long double>(limits::min()));
         v2[i] = sign * v;
       }
-      const auto [x1, x2] = billiards::collide_along_direction(m1, v1, m2, v2, d0, e);
-      for (int i = 0; i < N; ++i) subnormal_outputs += (x1[i] != 0 && std::fabs(x1[i]) < limits::min());
-      for (int k = limits::min_exponent - limits::digits; k < limits::max_exponent; ++k) {
-        Vector d;
-        for (int i = 0; i < N; ++i) d[i] = std::ldexp(d0[i], k);
-        bool exact_scaling = d.allFinite();
-        for (int i = 0; i < N; ++i) exact_scaling = exact_scaling && std::ldexp(d[i], -k) == d0[i];
-        if (!exact_scaling) continue;
+      const auto along = billiards::collide_along_direction(m1, v1, m2, v2, d0, e);
+      for (int i = 0; i < N; ++i)
+        subnormal_outputs += (along.first[i] != 0 && std::fabs(along.first[i]) < limits::min());
+      compared += at_every_scaling(d0, [&](const Vector& d) {
         const auto [z1, z2] = billiards::collide_along_direction(m1, v1, m2, v2, d, e);
-        if (!bits_equal(z1, x1) || !bits_equal(z2, x2)) FAIL("d = 2^" << k << " d0 differs from d0");
-        ++compared;
-      }
+        return bits_equal(z1, along.first) && bits_equal(z2, along.second);
+      });
     }
     CHECK(compared > 36 * (limits::max_exponent - limits::min_exponent));
     CHECK(subnormal_outputs > 0);

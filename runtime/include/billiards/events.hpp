@@ -11,10 +11,9 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cmath>
 #include <cstddef>
-#include <cstdint>
-#include <cstring>
 #include <limits>
 #include <optional>
 #include <type_traits>
@@ -346,17 +345,9 @@ template <typename Scalar>
 template <typename Scalar>
 [[nodiscard]] Scalar placed_root(const EventPolynomial<Scalar>& p, const EventPolynomial<Scalar>& slope, Scalar a,
                                  Scalar b, Scalar guess) {
-  using Bits = std::conditional_t<sizeof(Scalar) == 4, std::uint32_t, std::uint64_t>;
-  const auto bits = [](Scalar x) {
-    Bits n;
-    std::memcpy(&n, &x, sizeof n);
-    return n;
-  };
-  const auto value_of = [](Bits n) {
-    Scalar x;
-    std::memcpy(&x, &n, sizeof x);
-    return x;
-  };
+  using Bits = kernels::BitsOf<Scalar>;  // non-negative values order as their bits
+  const auto bits = [](Scalar x) { return std::bit_cast<Bits>(x); };
+  const auto value_of = [](Bits n) { return std::bit_cast<Scalar>(n); };
   Scalar lo = a, hi = b;  // certified: p(lo) > 0, p(hi) ≤ 0
   int at_hi = -1;         // the sign of p(hi), −1 or 0 (−1 stands for "≤ 0" until it is evaluated)
   bool hi_known = false;

@@ -6,12 +6,14 @@
 // the one the coefficients, exactly as given, make. No dependency: integers as 32-bit limbs.
 #pragma once
 
+#include <billiards/kernel_support.hpp>
+
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
-#include <cstring>
 #include <limits>
 #include <optional>
 #include <type_traits>
@@ -283,14 +285,9 @@ template <typename Scalar, std::size_t N>
 /// as the values do for x ≥ 0): a or b once they are adjacent.
 template <typename Scalar>
 [[nodiscard]] Scalar bits_midpoint(Scalar a, Scalar b) noexcept {
-  using Bits = std::conditional_t<sizeof(Scalar) == 4, std::uint32_t, std::uint64_t>;
-  Bits x, y;
-  std::memcpy(&x, &a, sizeof x);
-  std::memcpy(&y, &b, sizeof y);
-  const Bits middle = x + (y - x) / 2;
-  Scalar m;
-  std::memcpy(&m, &middle, sizeof m);
-  return m;
+  using Bits = kernels::BitsOf<Scalar>;
+  const Bits x = std::bit_cast<Bits>(a), y = std::bit_cast<Bits>(b);
+  return std::bit_cast<Scalar>(static_cast<Bits>(x + (y - x) / 2));
 }
 
 /// The earliest contact of billiards::earliest_contact after t = 0, for the polynomial with coefficients
