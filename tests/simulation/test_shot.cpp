@@ -380,39 +380,6 @@ TEST_CASE("Shot: bad balls, physics and cues are named", "[simulation][shot]") {
   CHECK_THROWS_AS(shot.strike(0, Cue<double>{-0.5, 1.0}), billiards::invalid_argument);
 }
 
-TEST_CASE("Shot: a cue ball pressing a frozen pair converges as the pressing speed shrinks", "[simulation][shot]") {
-  // A cue ball struck with follow into two balls frozen together: after the impacts the cloth presses
-  // the cue ball into the pair, which the engine resolves as a train of contacts leaving at
-  // ShotOptions::pressing_speed. As that tolerance shrinks tenfold, the final positions move less each
-  // time (they converge to the model's limit of sustained contact), at about ten times the events.
-  const PoolTable table = billiards::simulation::pool_table("7ft");
-  const PoolPhysics physics;
-  const double R = physics.radius;
-  const auto play = [&](double speed, std::size_t& events) {
-    ShotOptions options;
-    options.pressing_speed = speed;
-    options.event_limit = 1000000;
-    Shot shot(table, physics, {ball_at(0.6, 0.5, R), ball_at(1.0, 0.5, R), ball_at(1.0 + 2 * R, 0.5, R)}, options);
-    shot.strike(0, Cue<double>{0.567, 2.0, 0.0, 0.0, 0.0, 0.5, 1.0});
-    events = shot.play();
-    std::vector<double> x;
-    for (const PoolBall& b : shot.balls()) x.push_back(b.position.x());
-    return x;
-  };
-  std::size_t coarse_events = 0, middle_events = 0, fine_events = 0;
-  const std::vector<double> coarse = play(1e-3, coarse_events), middle = play(1e-4, middle_events),
-                            fine = play(1e-5, fine_events);
-  const auto distance = [](const std::vector<double>& a, const std::vector<double>& b) {
-    double largest = 0;
-    for (std::size_t i = 0; i < a.size(); ++i) largest = std::max(largest, std::fabs(a[i] - b[i]));
-    return largest;
-  };
-  CHECK(distance(middle, fine) < distance(coarse, middle) / 4);
-  CHECK(distance(middle, fine) < 1e-4);  // m
-  CHECK(middle_events > 5 * coarse_events);
-  CHECK(fine_events > 5 * middle_events);
-}
-
 TEST_CASE("Shot: every transition changes the ball's phase", "[simulation][shot]") {
   const PoolPhysics physics;
   std::size_t transitions = 0;

@@ -61,10 +61,10 @@ inline const char* motion_name(Motion motion) noexcept {
 struct ShotOptions {
   /// The most events a shot may take; a run beyond it stops with billiards::simulation::EventLimitReached.
   std::uint64_t event_limit = 100000;
-  /// The speed (m/s) at which bodies the cloth presses together leave a contact at the least (Shot's
-  /// description): the engine's tolerance for sustained contact. Smaller comes nearer the model's limit
-  /// (the pair pressed together), at about 1/pressing_speed as many events while they press; > 0 and
-  /// finite.
+  /// The engine's tolerance for sustained contact (m/s; Shot's description): bodies the cloth presses
+  /// together that leave a contact slower than this are in sustained contact from there (off the line
+  /// of the contact: leave it at this speed). Smaller resolves more of an inelastic collapse contact by
+  /// contact before its limit, at a few dozen more events for each tenfold; > 0 and finite.
   double pressing_speed = 1e-3;
   /// Check the invariants at every event: on in debug builds, off where NDEBUG is defined.
 #ifdef NDEBUG

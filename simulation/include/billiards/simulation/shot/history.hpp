@@ -3,6 +3,7 @@
 /// by its phases on the cloth (the trajectories, sampled at any rate).
 #pragma once
 
+#include <billiards/simulation/shot/evolution.hpp>
 #include <billiards/simulation/shot/pool_table.hpp>
 
 #include <billiards/cloth.hpp>
@@ -30,10 +31,12 @@ class History {
       out.push_back(as_pool_ball(frames.front().state, frames.front().pocketed));
     return out;
   }
-  /// Ball `ball`'s state from time `time` on (until its next keyframe).
-  void add(std::size_t ball, double time, const BallOnCloth<double>& state, bool pocketed) {
+  /// Ball `ball`'s state from time `time` on (until its next keyframe), in `phase` (a free phase follows
+  /// billiards::evolve; a pressed piece its constant accelerations).
+  void add(std::size_t ball, double time, const BallOnCloth<double>& state, bool pocketed,
+           const Phase& phase = {}) {
     if (frames_.size() <= ball) frames_.resize(ball + 1);
-    frames_[ball].push_back({time, state, pocketed});
+    frames_[ball].push_back({time, state, pocketed, phase.pressed == Pressed::none ? Phase{} : phase});
   }
   /// The balls at time `t` on `cloth`, each moved by its phases from its last keyframe at or before `t`
   /// (its first where `t` precedes them all); at a keyframe's time, the state it holds.
@@ -45,7 +48,7 @@ class History {
                                        [](double time, const Keyframe& k) { return time < k.time; });
       const Keyframe& k = it == frames.begin() ? frames.front() : *std::prev(it);
       out.push_back(k.pocketed || !(t > k.time) ? as_pool_ball(k.state, k.pocketed)
-                                                : as_pool_ball(evolve(k.state, cloth, t - k.time), false));
+                                                : as_pool_ball(state_in(k.state, k.phase, t - k.time, cloth), false));
     }
     return out;
   }
@@ -55,6 +58,7 @@ class History {
     double time;
     BallOnCloth<double> state;
     bool pocketed;
+    Phase phase;  ///< a pressed piece's, else free
   };
   std::vector<std::vector<Keyframe>> frames_;
 };

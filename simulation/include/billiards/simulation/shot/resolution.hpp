@@ -1,9 +1,10 @@
 /// \file
 /// Resolution: what a contact does to the balls it involves — two balls by billiards::collide_with_friction,
 /// a ball and a cushion's nose or a jaw by billiards::collide_with_cushion (the vertical velocity a
-/// contact gives dropped: the cloth's reaction keeps a ball on it) — and the pressed contacts: bodies the
-/// cloth's friction presses together leave a contact separating at least at a given speed, the energy
-/// taken from their motion along the contact plane and then from their spins.
+/// contact gives dropped: the cloth's reaction keeps a ball on it) — and the pressed contacts off the line
+/// of the contact (pressing.hpp takes those on it): bodies the cloth's friction presses together leave a
+/// contact separating at least at a given speed, the energy taken from their motion along the contact
+/// plane and then from their spins.
 #pragma once
 
 #include <billiards/simulation/shot/evolution.hpp>
@@ -103,6 +104,21 @@ struct Separation {
       spin_energy > 0 ? std::sqrt(std::max(spin_energy - from_spin, 0.0) / spin_energy) : 1.0};
 }
 
+/// Whether the cloth presses balls `a` and `b` together along `normal` (from a to b): their relative
+/// acceleration in their phases closes the gap.
+[[nodiscard]] inline bool presses(const BallOnCloth<double>& a, const BallOnCloth<double>& b,
+                                  const Eigen::Vector3d& normal, const Cloth<double>& cloth) {
+  const Eigen::Vector2d pressing =
+      acceleration(b, motion(b, cloth), cloth) - acceleration(a, motion(a, cloth), cloth);
+  return pressing.dot(Eigen::Vector2d(normal.x(), normal.y())) < 0;
+}
+
+/// Whether the cloth presses ball `a` into a cushion or jaw along `normal` (from the ball towards it).
+[[nodiscard]] inline bool presses(const BallOnCloth<double>& a, const Eigen::Vector3d& normal,
+                                  const Cloth<double>& cloth) {
+  return acceleration(a, motion(a, cloth), cloth).dot(Eigen::Vector2d(normal.x(), normal.y())) > 0;
+}
+
 /// Two balls of equal mass after their contact along `normal` (from a to b): where the cloth presses them
 /// together (the relative acceleration along the normal closes the gap) and they separate slower than
 /// `speed`, they are made to separate at `speed` (separation()), momentum kept. Returns whether it
@@ -110,12 +126,10 @@ struct Separation {
 inline bool separate_pressed_pair(BallOnCloth<double>& a, BallOnCloth<double>& b,
                                   const Eigen::Vector3d& normal, const Cloth<double>& cloth, double speed) {
   const Eigen::Vector2d n(normal.x(), normal.y());
-  const Eigen::Vector2d pressing =
-      acceleration(b, motion(b, cloth), cloth) - acceleration(a, motion(a, cloth), cloth);
   const Eigen::Vector2d va(a.velocity.x(), a.velocity.y()), vb(b.velocity.x(), b.velocity.y());
   const Eigen::Vector2d centre = 0.5 * (va + vb), w = vb - va;
   const double along = w.dot(n);
-  if (!(pressing.dot(n) < 0) || !(along < speed)) return false;
+  if (!presses(a, b, normal, cloth) || !(along < speed)) return false;
   const Eigen::Vector2d tangential = w - along * n;
   const double R = a.radius;
   // Rotational energy 0.2 m R² ω² per ball, in units of m/4.
@@ -137,7 +151,7 @@ inline bool separate_pressed_ball(BallOnCloth<double>& a, const Eigen::Vector3d&
   const Eigen::Vector2d n(-normal.x(), -normal.y());  // from the cushion or jaw into the table
   const Eigen::Vector2d v(a.velocity.x(), a.velocity.y());
   const double along = v.dot(n);
-  if (!(acceleration(a, motion(a, cloth), cloth).dot(n) < 0) || !(along < speed)) return false;
+  if (!presses(a, normal, cloth) || !(along < speed)) return false;
   const Eigen::Vector2d tangential = v - along * n;
   const double R = a.radius;
   // Rotational energy 0.2 m R² ω², in units of m/2.

@@ -17,6 +17,7 @@
 #include <billiards/simulation/shot/evolution.hpp>
 #include <billiards/simulation/shot/history.hpp>
 #include <billiards/simulation/shot/pool_table.hpp>
+#include <billiards/simulation/shot/pressing.hpp>
 #include <billiards/simulation/shot/resolution.hpp>
 
 #include <billiards/cloth.hpp>
@@ -60,6 +61,8 @@ struct ShotBall {
   shot::Box box;              ///< the range of its centre from its last prediction to reach_end
   bool pocketed = false;      ///< out of play
   std::uint64_t version = 0;  ///< how often it changed: a prediction of an older version is stale
+  std::optional<shot::Phase> next_phase;  ///< the phase it begins at its next change (a pressed piece)
+  std::optional<Motion> unrecorded_from;  ///< a change of motion at its partner's event, to be recorded
 };
 
 /// A predicted event of a shot, stale where a ball's version has moved on since.
@@ -86,12 +89,13 @@ struct ShotPrediction {
 /// changes nothing and is not recorded.
 ///
 /// Contacts follow the runtime's laws (resolution.hpp). Bodies that the cloth's friction presses
-/// together — a sliding ball curving into a cushion or into a ball it grazes, a ball with draw pushing one
-/// in front — would meet again and again, ever faster (inelastic collapse): a contact that leaves such
-/// bodies separating slower than pressing_speed leaves them separating at pressing_speed instead, the
-/// energy taken from their relative motion along the contact plane and then from their spins, so that no
-/// energy is added. The bodies then part by a few micrometres at most before the cloth brings them back:
-/// sustained contact as a short train of contacts.
+/// together — a cue ball with follow pushing the ball it met, a ball with topspin driven back into a
+/// cushion — would meet again and again, ever faster (inelastic collapse): the collapse is played
+/// contact by contact until a contact leaves them separating slower than pressing_speed; then they are
+/// in sustained contact, its limit (pressing.hpp: the pair moving as one, or the ball at rest against
+/// the cushion, while the cloth presses them) where their motion lies on the line of the contact, and
+/// otherwise separating at pressing_speed, the energy taken from their relative motion along the contact
+/// plane and then from their spins, so that no energy is added.
 class Shot {
  public:
   /// The kinetic energy may grow at an event by at most this fraction of the largest total the shot has
@@ -148,6 +152,7 @@ class Shot {
       throw std::invalid_argument("strike: ball " + std::to_string(index) +
                                   " is not a ball in play (there are " + std::to_string(balls_.size()) +
                                   " balls)");
+    release_partner(index, index);
     const BallOnCloth<double> now = at(index, now_);
     const SpinningBall<double> struck = checked::strike(shot::spinning(now, physics_.mass), cue);
     settle(index);
@@ -268,7 +273,7 @@ class Shot {
   [[nodiscard]] BallOnCloth<double> at(std::size_t i, double t) const {
     const Entry& e = balls_[i];
     if (e.pocketed || !(t > e.since)) return e.state;
-    return evolve(e.state, physics_.cloth, t - e.since);
+    return shot::state_in(e.state, e.phase, t - e.since, physics_.cloth);
   }
   [[nodiscard]] double energy_at(double t) const {
     double sum = 0;
@@ -282,7 +287,9 @@ class Shot {
   // The phase of ball i's reference state.
   void begin_phase(std::size_t i) {
     Entry& e = balls_[i];
-    e.phase = e.pocketed ? shot::Phase{} : shot::phase_of(e.state, physics_.cloth);
+    e.phase = e.pocketed ? shot::Phase{} : e.next_phase ? *e.next_phase : shot::phase_of(e.state, physics_.cloth);
+    e.next_phase.reset();
+    e.unrecorded_from.reset();
   }
   // Ball i's state now becomes its reference state.
   void settle(std::size_t i) {
@@ -291,7 +298,7 @@ class Shot {
     e.state = at(i, now_);
     e.since = now_;
   }
-  void keyframe(std::size_t i) { history_.add(i, now_, balls_[i].state, balls_[i].pocketed); }
+  void keyframe(std::size_t i) { history_.add(i, now_, balls_[i].state, balls_[i].pocketed, balls_[i].phase); }
 
   [[nodiscard]] bool current(const Predicted& p) const {
     if (balls_[p.ball].version != p.version || balls_[p.ball].pocketed) return false;
@@ -311,51 +318,10 @@ class Shot {
     return std::isfinite(left) ? std::max(left, 0.0) : std::numeric_limits<double>::max();
   }
 
-  // Ball i's next events from now (its reference time): its phase's end, the cushions, jaws and pockets,
-  // and the balls from index `first_other` on (all of them but i and `skip` after an event; those above i
-  // at the start, so that each pair is predicted once). A ball's events after its first contact with a
-  // cushion, jaw or pocket are not looked for: it changes there and is predicted again. Its path until
-  // then (`reach_end`) is bounded by a box, and a ball, jaw or pocket out of the box's reach is passed
-  // over without solving for its contact.
+  // Ball i's next events from now (its reference time): see the definition below the class.
   void predict(std::size_t i, std::size_t first_other,
                std::size_t skip = std::numeric_limits<std::size_t>::max(),
-               detail::ExcludedContact excluded = {}) {
-    Entry& e = balls_[i];
-    if (e.pocketed) return;
-    if (std::isfinite(e.phase.duration)) push(now_ + e.phase.duration, ShotEvent::Kind::transition, i, i);
-    double horizon = remaining(i);
-    const double R = physics_.radius;
-    const shot::Path me{{e.state.position.x(), e.state.position.y()},
-                        {e.state.velocity.x(), e.state.velocity.y()},
-                        e.phase.acceleration};
-    // A contact at t from now with body k (none: +∞): queued, and the horizon brought in to it.
-    const auto found = [&](double t, ShotEvent::Kind kind, std::size_t k) {
-      if (t == std::numeric_limits<double>::infinity() || excluded(kind, k, t)) return;
-      push(now_ + t, kind, i, k);
-      horizon = std::min(horizon, t);
-    };
-    if (e.phase.moving) {
-      // A cushion whose line the centre's box over the whole horizon keeps farther than R from is passed
-      // over: its polynomial stays above 0 there.
-      const shot::Box reach = shot::path_box(me, horizon, true, R);
-      for (std::size_t k = 0; k < cushions_.size(); ++k) {
-        if (shot::beyond_reach(reach, cushions_[k], R)) continue;
-        found(shot::cushion_contact(me, cushions_[k], R, horizon), ShotEvent::Kind::cushion, k);
-      }
-      e.box = shot::path_box(me, horizon, true, R);
-      for (std::size_t k = 0; k < jaws_.size(); ++k) {
-        if (!e.box.near(jaws_[k].centre, R + jaws_[k].radius)) continue;
-        found(shot::jaw_contact(me, jaws_[k], R, horizon), ShotEvent::Kind::jaw, k);
-      }
-      for (std::size_t k = 0; k < pockets_.size(); ++k) {
-        if (!e.box.near(pockets_[k].centre, pockets_[k].radius)) continue;
-        found(shot::pocket_entry(me, pockets_[k], horizon), ShotEvent::Kind::pocket, k);
-      }
-    }
-    e.box = shot::path_box(me, horizon, e.phase.moving, R);
-    e.reach_end = e.phase.moving ? now_ + horizon : std::numeric_limits<double>::infinity();
-    predict_pairs(i, first_other, skip, excluded);
-  }
+               detail::ExcludedContact excluded = {});
 
   // Ball i's contacts with the balls from `first_other` on but `skip`, until the earlier of the two's
   // reach_end (see predict).
@@ -368,6 +334,7 @@ class Shot {
     for (std::size_t j = first_other; j < balls_.size(); ++j) {
       const Entry& o = balls_[j];
       if (j == i || j == skip || o.pocketed || (!e.phase.moving && !o.phase.moving)) continue;
+      if (e.phase.pressed == shot::Pressed::ball && e.phase.partner == j) continue;  // moving as one
       const double end = std::min(e.reach_end, o.reach_end);
       if (!(end >= now_)) continue;  // the other's box ends before now: it changes at once
       if (!e.box.meets(o.box, 2 * R)) continue;
@@ -409,6 +376,12 @@ class Shot {
     const std::size_t i = p.ball;
     Entry& e = balls_[i];
     const Motion from = e.phase.motion;
+    if (p.kind == ShotEvent::Kind::transition && (e.unrecorded_from || e.phase.pressed != shot::Pressed::none)) {
+      end_pressed(p);
+      return;
+    }
+    release_partner(i, p.kind == ShotEvent::Kind::ball ? p.other : i);
+    if (p.kind == ShotEvent::Kind::ball) release_partner(p.other, i);
     std::size_t skip = balls_.size();
     switch (p.kind) {
       case ShotEvent::Kind::transition:
@@ -431,7 +404,8 @@ class Shot {
         }
         shot::take(e.state, after->first);
         shot::take(balls_[p.other].state, after->second);
-        shot::separate_pressed_pair(e.state, balls_[p.other].state, n, physics_.cloth, options_.pressing_speed);
+        if (!press_pair(i, p.other, n))
+          shot::separate_pressed_pair(e.state, balls_[p.other].state, n, physics_.cloth, options_.pressing_speed);
         skip = p.other;
         break;
       }
@@ -448,7 +422,8 @@ class Shot {
           return;
         }
         shot::take(e.state, *after);
-        shot::separate_pressed_ball(e.state, n, physics_.cloth, options_.pressing_speed);
+        if (!(p.kind == ShotEvent::Kind::cushion && press_on_cushion(i, p.other, n)))
+          shot::separate_pressed_ball(e.state, n, physics_.cloth, options_.pressing_speed);
         break;
       }
       case ShotEvent::Kind::pocket:
@@ -467,6 +442,11 @@ class Shot {
 
   // The invariants after an event (every ball, every pair): see step().
   void check(double energy_before_event);
+  // Pressed contacts (pressing.hpp): entered at a contact, ended at a piece's end, released by an event.
+  bool press_pair(std::size_t i, std::size_t j, const Eigen::Vector3d& n);
+  bool press_on_cushion(std::size_t i, std::size_t cushion, const Eigen::Vector3d& n);
+  void end_pressed(const Predicted& p);
+  void release_partner(std::size_t i, std::size_t also_changing);
 
   PoolTable table_;
   PoolPhysics physics_;
@@ -484,6 +464,149 @@ class Shot {
 };
 
 // The longer members, defined out of the class body.
+
+// Ball i's next events from now (its reference time): its phase's end, the cushions, jaws and pockets,
+// and the balls from index `first_other` on (all of them but i and `skip` after an event; those above i
+// at the start, so that each pair is predicted once). A ball's events after its first contact with a
+// cushion, jaw or pocket are not looked for: it changes there and is predicted again. Its path until
+// then (`reach_end`) is bounded by a box, and a ball, jaw or pocket out of the box's reach is passed
+// over without solving for its contact.
+inline void Shot::predict(std::size_t i, std::size_t first_other, std::size_t skip,
+                        detail::ExcludedContact excluded) {
+  Entry& e = balls_[i];
+  if (e.pocketed) return;
+  if (std::isfinite(e.phase.duration)) push(now_ + e.phase.duration, ShotEvent::Kind::transition, i, i);
+  double horizon = remaining(i);
+  const double R = physics_.radius;
+  const shot::Path me{{e.state.position.x(), e.state.position.y()},
+                      {e.state.velocity.x(), e.state.velocity.y()},
+                      e.phase.acceleration};
+  // A contact at t from now with body k (none: +∞): queued, and the horizon brought in to it.
+  const auto found = [&](double t, ShotEvent::Kind kind, std::size_t k) {
+    if (t == std::numeric_limits<double>::infinity() || excluded(kind, k, t)) return;
+    push(now_ + t, kind, i, k);
+    horizon = std::min(horizon, t);
+  };
+  if (e.phase.moving) {
+    // A cushion whose line the centre's box over the whole horizon keeps farther than R from is passed
+    // over: its polynomial stays above 0 there.
+    const shot::Box reach = shot::path_box(me, horizon, true, R);
+    for (std::size_t k = 0; k < cushions_.size(); ++k) {
+      if (shot::beyond_reach(reach, cushions_[k], R)) continue;
+      found(shot::cushion_contact(me, cushions_[k], R, horizon), ShotEvent::Kind::cushion, k);
+    }
+    e.box = shot::path_box(me, horizon, true, R);
+    for (std::size_t k = 0; k < jaws_.size(); ++k) {
+      if (!e.box.near(jaws_[k].centre, R + jaws_[k].radius)) continue;
+      found(shot::jaw_contact(me, jaws_[k], R, horizon), ShotEvent::Kind::jaw, k);
+    }
+    for (std::size_t k = 0; k < pockets_.size(); ++k) {
+      if (!e.box.near(pockets_[k].centre, pockets_[k].radius)) continue;
+      found(shot::pocket_entry(me, pockets_[k], horizon), ShotEvent::Kind::pocket, k);
+    }
+  }
+  e.box = shot::path_box(me, horizon, e.phase.moving, R);
+  e.reach_end = e.phase.moving ? now_ + horizon : std::numeric_limits<double>::infinity();
+  predict_pairs(i, first_other, skip, excluded);
+}
+
+// Balls i and j, that have just met along n (from i to j): pressed together from now on (their next
+// phases a pressed pair's) where the cloth presses them, they part slower than pressing_speed and
+// their motion lies on the line of the contact. Whether they are.
+inline bool Shot::press_pair(std::size_t i, std::size_t j, const Eigen::Vector3d& n) {
+  BallOnCloth<double>&a = balls_[i].state, &b = balls_[j].state;
+  if (!shot::presses(a, b, n, physics_.cloth) || !((b.velocity - a.velocity).dot(n) < options_.pressing_speed))
+    return false;
+  std::optional<std::pair<shot::Phase, shot::Phase>> phases = shot::pressed_pair(a, b, n, physics_);
+  if (!phases) return false;
+  phases->first.partner = j;
+  phases->second.partner = i;
+  balls_[i].next_phase = phases->first;
+  balls_[j].next_phase = phases->second;
+  return true;
+}
+
+// Ball i, that has just met a cushion along n: pressed on it from now on where the cloth presses it
+// there, it leaves slower than pressing_speed and its motion lies on the cushion's normal. Whether it is.
+inline bool Shot::press_on_cushion(std::size_t i, std::size_t cushion, const Eigen::Vector3d& n) {
+  BallOnCloth<double>& a = balls_[i].state;
+  if (!shot::presses(a, n, physics_.cloth) || !(-a.velocity.dot(n) < options_.pressing_speed)) return false;
+  std::optional<shot::Phase> phase = shot::pressed_on_cushion(a, n, table_, physics_);
+  if (!phase) return false;
+  phase->partner = cushion;
+  balls_[i].next_phase = phase;
+  return true;
+}
+
+// The end of a pressed piece (or the record of a partner's change of motion there): the bodies evolved
+// to it, what ended it set to zero, and the next piece begun where the cloth still presses them;
+// otherwise they part.
+inline void Shot::end_pressed(const Predicted& p) {
+  const std::size_t i = p.ball;
+  Entry& e = balls_[i];
+  if (e.unrecorded_from) {
+    const Motion from = *e.unrecorded_from;
+    e.unrecorded_from.reset();
+    record(ShotEvent::Kind::transition, i, i, from);
+    return;
+  }
+  const shot::Phase phase = e.phase;
+  const double energy_before_event = options_.check_invariants ? energy_at(p.time) : 0;
+  now_ = p.time;
+  e.state = shot::pressed_state(e.state, phase, phase.duration);
+  e.since = now_;
+  if (phase.pressed == shot::Pressed::cushion) {
+    e.state.velocity.setZero();
+    e.state.angular_velocity.setZero();
+    changed(i, balls_.size());
+    record(ShotEvent::Kind::transition, i, i, phase.motion);
+    if (options_.check_invariants) check(energy_before_event);
+    return;
+  }
+  const std::size_t k = phase.partner;
+  Entry& o = balls_[k];
+  const Motion from_k = o.phase.motion;
+  o.state = shot::pressed_state(o.state, o.phase, o.phase.duration);
+  o.since = now_;
+  if (phase.ending == shot::PressedEnd::speed) {
+    e.state.velocity.setZero();
+    o.state.velocity.setZero();
+  }
+  const std::size_t a = phase.first ? i : k, b = phase.first ? k : i;
+  const Eigen::Vector3d n = shot::towards(balls_[a].state, balls_[b].state);
+  std::optional<std::pair<shot::Phase, shot::Phase>> phases;
+  if (shot::presses(balls_[a].state, balls_[b].state, n, physics_.cloth))
+    phases = shot::pressed_pair(balls_[a].state, balls_[b].state, n, physics_);
+  if (phases) {
+    phases->first.partner = b;
+    phases->second.partner = a;
+    balls_[a].next_phase = phases->first;
+    balls_[b].next_phase = phases->second;
+    changed(i, k);
+    changed(k, balls_.size());
+  } else {
+    changed(i, balls_.size(), {ShotEvent::Kind::ball, k});
+    changed(k, i);
+  }
+  const bool i_changed = e.phase.motion != phase.motion, k_changed = o.phase.motion != from_k;
+  if (i_changed) record(ShotEvent::Kind::transition, i, i, phase.motion);
+  if (k_changed && !i_changed) record(ShotEvent::Kind::transition, k, k, from_k);
+  if (k_changed && i_changed) {
+    o.unrecorded_from = from_k;
+    push(now_, ShotEvent::Kind::transition, k, k);
+  }
+  if (options_.check_invariants && (i_changed || k_changed)) check(energy_before_event);
+}
+
+// Ball i is about to change at an event (with ball `also_changing`): the ball it was pressed against, if
+// any other, goes on free from now.
+inline void Shot::release_partner(std::size_t i, std::size_t also_changing) {
+  const shot::Phase& phase = balls_[i].phase;
+  if (phase.pressed != shot::Pressed::ball || phase.partner == also_changing) return;
+  const std::size_t k = phase.partner;
+  settle(k);
+  changed(k, balls_.size());
+}
 
 inline void Shot::check(double energy_before_event) {
   const auto fail = [&](std::size_t i, const std::string& what) {
