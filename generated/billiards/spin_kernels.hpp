@@ -5,7 +5,7 @@
 // verified claim of the derivation audit before it was printed, and names the claims it implements. They take
 // masses and dot products, so they serve vectors of any dimension and need no Eigen.
 //
-// Fingerprint: fnv1a64:20ae0d9960b5b792 (of this header and the audit)
+// Fingerprint: fnv1a64:e29225449a051358 (of this header and the audit)
 #pragma once
 
 #include <billiards/kernel_support.hpp>

@@ -54,6 +54,7 @@ Derivation derive() {
     the_throw(record, contact, friction);
     const Cloth cloth = the_cloth(record);
     event_times(record);
+    pressed_contacts(record);
     kernel_claims(record, contact, impulse, friction);
     derivation.kernels = spin_kernels(cloth);
   });

@@ -150,6 +150,9 @@ struct EventPolynomials {
 /// The section "Event times on the cloth".
 EventPolynomials event_times(Recorder& record);
 
+/// The section "Pressed contacts": the forces of sustained contact on the line of the contact.
+void pressed_contacts(Recorder& record);
+
 // ---- The kernels ----------------------------------------------------------------------------------
 
 /// The claims the kernels are proven against where the steps do not state the emitted quantity alone.
