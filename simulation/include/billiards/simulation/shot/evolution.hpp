@@ -10,13 +10,14 @@
 #include <Eigen/Core>
 
 #include <cstddef>
+#include <cstdint>
 #include <limits>
 #include <utility>
 
 namespace billiards::simulation::shot {
 
 /// What holds a ball in sustained contact (pressing.hpp): nothing, a ball, or a cushion.
-enum class Pressed {
+enum class Pressed : std::uint8_t {
   none,     ///< free on the cloth
   ball,     ///< pressed against a ball, the two moving together
   cushion,  ///< pressed against a straight cushion, at rest there while its spin runs down
@@ -32,37 +33,36 @@ enum class PressedEnd {
 };
 
 /// A ball's phase on the cloth from a state at its start: free (evolve's closed forms) or a piece of
-/// sustained contact (pressing.hpp), in which the centre's and the spin's accelerations are constant.
+/// sustained contact (pressing.hpp: a PressedPiece beside it), in which the centre's and the spin's
+/// accelerations are constant.
 struct Phase {
   Motion motion = Motion::stationary;                         ///< what the ball does in it
   double duration = std::numeric_limits<double>::infinity();  ///< its length (s; +∞ at rest)
   bool moving = false;                                        ///< the centre moves
-  Eigen::Vector2d acceleration = Eigen::Vector2d::Zero();     ///< the centre's, constant within it (m/s²)
   Pressed pressed = Pressed::none;                            ///< free, or what presses the ball
-  std::size_t partner = 0;                                    ///< the pressing ball's or cushion's index
-  PressedEnd ending = PressedEnd::speed;                      ///< what ends a pressed piece
-  bool first = false;                                         ///< the pair's first ball (behind)
-  Eigen::Vector3d spin_acceleration = Eigen::Vector3d::Zero();  ///< dω/dt in a pressed piece (rad/s²)
+  Eigen::Vector2d acceleration = Eigen::Vector2d::Zero();     ///< the centre's, constant within it (m/s²)
 };
 
-/// The state `tau` seconds into a pressed piece `p` begun in state `s`: the centre's and the spin's
-/// accelerations constant (x0 + v0 τ + ½ a τ², v0 + a τ, ω0 + α τ).
-[[nodiscard]] inline BallOnCloth<double> pressed_state(const BallOnCloth<double>& s, const Phase& p, double tau) {
+/// What a piece of sustained contact adds to its phase.
+struct PressedPiece {
+  std::size_t partner = 0;                                      ///< the pressing ball's or cushion's index
+  PressedEnd ending = PressedEnd::speed;                        ///< what ends the piece
+  bool first = false;                                           ///< the pair's first ball (behind)
+  Eigen::Vector3d spin_acceleration = Eigen::Vector3d::Zero();  ///< dω/dt (rad/s²)
+};
+
+/// The state `tau` seconds into a pressed piece begun in state `s`, with the centre's acceleration `a`
+/// and the spin's `alpha` constant: x0 + v0 τ + ½ a τ², v0 + a τ, ω0 + α τ.
+[[nodiscard]] inline BallOnCloth<double> pressed_state(const BallOnCloth<double>& s, const Eigen::Vector2d& a,
+                                                       const Eigen::Vector3d& alpha, double tau) {
   BallOnCloth<double> out = s;
   if (!(tau > 0)) return out;
-  out.position.x() += tau * s.velocity.x() + (0.5 * tau * tau) * p.acceleration.x();
-  out.position.y() += tau * s.velocity.y() + (0.5 * tau * tau) * p.acceleration.y();
-  out.velocity.x() += tau * p.acceleration.x();
-  out.velocity.y() += tau * p.acceleration.y();
-  out.angular_velocity += tau * p.spin_acceleration;
+  out.position.x() += tau * s.velocity.x() + (0.5 * tau * tau) * a.x();
+  out.position.y() += tau * s.velocity.y() + (0.5 * tau * tau) * a.y();
+  out.velocity.x() += tau * a.x();
+  out.velocity.y() += tau * a.y();
+  out.angular_velocity += tau * alpha;
   return out;
-}
-
-/// The state `tau` seconds after state `s` began phase `p`: by the pressed piece's accelerations, or
-/// by billiards::evolve for a free ball.
-[[nodiscard]] inline BallOnCloth<double> state_in(const BallOnCloth<double>& s, const Phase& p, double tau,
-                                                  const Cloth<double>& cloth) {
-  return p.pressed == Pressed::none ? evolve(s, cloth, tau) : pressed_state(s, p, tau);
 }
 
 /// The centre's horizontal acceleration in `phase` from state `s`: −μ_s g û sliding (û the contact's

@@ -237,14 +237,22 @@ inline constexpr double line_tolerance = 1e-9;
 /// few roundings of a piece's evolution.
 inline constexpr double zero_tolerance = 1e-13;
 
-/// The phases of balls `a` and `b`, touching along the unit normal `n` (from a to b), pressed together
+/// A pressed piece's start: the ball's phase and what the piece adds to it.
+struct PressedStart {
+  Phase phase;        ///< the phase (motion, length, the centre's acceleration)
+  PressedPiece piece;  ///< the spin's acceleration, what ends it, the partner
+};
+
+/// The pieces of balls `a` and `b`, touching along the unit normal `n` (from a to b), pressed together
 /// from now on: both set onto the line of n (onto_line) with their speeds along n made one (momentum
-/// kept), and each given the pair's piece (pair_piece). Empty, and the balls unchanged, where their
-/// motion is off the line or no pressing piece follows. The phases' partners are left to the caller.
-[[nodiscard]] inline std::optional<std::pair<Phase, Phase>> pressed_pair(BallOnCloth<double>& a,
-                                                                         BallOnCloth<double>& b,
-                                                                         const Eigen::Vector3d& n,
-                                                                         const PoolPhysics& physics) {
+/// kept), and each given the pair's piece (pair_piece), a's partner b and b's a. Empty, and the balls
+/// unchanged, where their motion is off the line or no pressing piece follows.
+[[nodiscard]] inline std::optional<std::array<PressedStart, 2>> pressed_pair(BallOnCloth<double>& a,
+                                                                             BallOnCloth<double>& b,
+                                                                             std::size_t a_index,
+                                                                             std::size_t b_index,
+                                                                             const Eigen::Vector3d& n,
+                                                                             const PoolPhysics& physics) {
   BallOnCloth<double> pa = a, pb = b;
   if (!onto_line(pa, n, line_tolerance) || !onto_line(pb, n, line_tolerance)) return std::nullopt;
   const Eigen::Vector3d across{-n.y(), n.x(), 0};
@@ -262,27 +270,30 @@ inline constexpr double zero_tolerance = 1e-13;
   pb.velocity = v * n;
   a = pa;
   b = pb;
-  const auto phase = [&](int k) {
-    Phase p;
-    p.motion = piece->rolling[k] ? Motion::rolling : Motion::sliding;
-    p.duration = piece->duration;
-    p.moving = true;
-    p.acceleration = piece->acceleration * Eigen::Vector2d(n.x(), n.y());
-    p.pressed = Pressed::ball;
-    p.ending = piece->ending;
-    p.first = k == 0;
-    p.spin_acceleration = (piece->spin_rate[k] / R) * across;
-    return p;
+  const auto start = [&](int k) {
+    PressedStart out;
+    out.phase.motion = piece->rolling[k] ? Motion::rolling : Motion::sliding;
+    out.phase.duration = piece->duration;
+    out.phase.moving = true;
+    out.phase.pressed = Pressed::ball;
+    out.phase.acceleration = piece->acceleration * Eigen::Vector2d(n.x(), n.y());
+    out.piece.partner = k == 0 ? b_index : a_index;
+    out.piece.ending = piece->ending;
+    out.piece.first = k == 0;
+    out.piece.spin_acceleration = (piece->spin_rate[k] / R) * across;
+    return out;
   };
-  return std::pair{phase(0), phase(1)};
+  return std::array<PressedStart, 2>{start(0), start(1)};
 }
 
-/// The phase of ball `a`, touching a straight cushion whose unit normal `normal` points from the ball
-/// into it, pressed there from now on: its motion set onto the line of the normal, at rest, its spin
+/// The piece of ball `a`, touching straight cushion `cushion` whose unit normal `normal` points from the
+/// ball into it, pressed there from now on: its motion set onto the line of the normal, at rest, its spin
 /// running down (cushion_piece). Empty, and the ball unchanged, where its motion is off the line or its
-/// spin does not press it. The phase's partner is left to the caller.
-[[nodiscard]] inline std::optional<Phase> pressed_on_cushion(BallOnCloth<double>& a, const Eigen::Vector3d& normal,
-                                                             const PoolTable& table, const PoolPhysics& physics) {
+/// spin does not press it.
+[[nodiscard]] inline std::optional<PressedStart> pressed_on_cushion(BallOnCloth<double>& a, std::size_t cushion,
+                                                                    const Eigen::Vector3d& normal,
+                                                                    const PoolTable& table,
+                                                                    const PoolPhysics& physics) {
   BallOnCloth<double> pa = a;
   if (!onto_line(pa, normal, line_tolerance)) return std::nullopt;
   const Eigen::Vector3d across{-normal.y(), normal.x(), 0};
@@ -293,13 +304,14 @@ inline constexpr double zero_tolerance = 1e-13;
   if (!piece) return std::nullopt;
   pa.velocity.setZero();
   a = pa;
-  Phase p;
-  p.motion = Motion::sliding;
-  p.duration = piece->duration;
-  p.pressed = Pressed::cushion;
-  p.ending = PressedEnd::spin;
-  p.spin_acceleration = (piece->spin_rate / a.radius) * across;
-  return p;
+  PressedStart out;
+  out.phase.motion = Motion::sliding;
+  out.phase.duration = piece->duration;
+  out.phase.pressed = Pressed::cushion;
+  out.piece.partner = cushion;
+  out.piece.ending = PressedEnd::spin;
+  out.piece.spin_acceleration = (piece->spin_rate / a.radius) * across;
+  return out;
 }
 
 }  // namespace billiards::simulation::shot

@@ -61,8 +61,9 @@ struct ShotBall {
   shot::Box box;              ///< the range of its centre from its last prediction to reach_end
   bool pocketed = false;      ///< out of play
   std::uint64_t version = 0;  ///< how often it changed: a prediction of an older version is stale
-  std::optional<shot::Phase> next_phase;  ///< the phase it begins at its next change (a pressed piece)
-  std::optional<Motion> unrecorded_from;  ///< a change of motion at its partner's event, to be recorded
+  shot::PressedPiece piece;                   ///< where phase.pressed: the pressed piece's rest
+  std::optional<shot::PressedStart> next;     ///< the pressed piece it begins at its next change
+  std::optional<Motion> unrecorded_from;      ///< a change of motion at its partner's event, to be recorded
 };
 
 /// A predicted event of a shot, stale where a ball's version has moved on since.
@@ -273,7 +274,9 @@ class Shot {
   [[nodiscard]] BallOnCloth<double> at(std::size_t i, double t) const {
     const Entry& e = balls_[i];
     if (e.pocketed || !(t > e.since)) return e.state;
-    return shot::state_in(e.state, e.phase, t - e.since, physics_.cloth);
+    if (e.phase.pressed != shot::Pressed::none)
+      return shot::pressed_state(e.state, e.phase.acceleration, e.piece.spin_acceleration, t - e.since);
+    return evolve(e.state, physics_.cloth, t - e.since);
   }
   [[nodiscard]] double energy_at(double t) const {
     double sum = 0;
@@ -287,8 +290,13 @@ class Shot {
   // The phase of ball i's reference state.
   void begin_phase(std::size_t i) {
     Entry& e = balls_[i];
-    e.phase = e.pocketed ? shot::Phase{} : e.next_phase ? *e.next_phase : shot::phase_of(e.state, physics_.cloth);
-    e.next_phase.reset();
+    if (e.next) {
+      e.phase = e.next->phase;
+      e.piece = e.next->piece;
+      e.next.reset();
+    } else {
+      e.phase = e.pocketed ? shot::Phase{} : shot::phase_of(e.state, physics_.cloth);
+    }
     e.unrecorded_from.reset();
   }
   // Ball i's state now becomes its reference state.
@@ -298,7 +306,11 @@ class Shot {
     e.state = at(i, now_);
     e.since = now_;
   }
-  void keyframe(std::size_t i) { history_.add(i, now_, balls_[i].state, balls_[i].pocketed, balls_[i].phase); }
+  void keyframe(std::size_t i) {
+    const Entry& e = balls_[i];
+    if (e.phase.pressed == shot::Pressed::none) return history_.add(i, now_, e.state, e.pocketed);
+    history_.add(i, now_, e.state, e.pocketed, &e.phase.acceleration, &e.piece.spin_acceleration);
+  }
 
   [[nodiscard]] bool current(const Predicted& p) const {
     if (balls_[p.ball].version != p.version || balls_[p.ball].pocketed) return false;
@@ -334,7 +346,7 @@ class Shot {
     for (std::size_t j = first_other; j < balls_.size(); ++j) {
       const Entry& o = balls_[j];
       if (j == i || j == skip || o.pocketed || (!e.phase.moving && !o.phase.moving)) continue;
-      if (e.phase.pressed == shot::Pressed::ball && e.phase.partner == j) continue;  // moving as one
+      if (e.phase.pressed == shot::Pressed::ball && e.piece.partner == j) continue;  // moving as one
       const double end = std::min(e.reach_end, o.reach_end);
       if (!(end >= now_)) continue;  // the other's box ends before now: it changes at once
       if (!e.box.meets(o.box, 2 * R)) continue;
@@ -517,12 +529,10 @@ inline bool Shot::press_pair(std::size_t i, std::size_t j, const Eigen::Vector3d
   BallOnCloth<double>&a = balls_[i].state, &b = balls_[j].state;
   if (!shot::presses(a, b, n, physics_.cloth) || !((b.velocity - a.velocity).dot(n) < options_.pressing_speed))
     return false;
-  std::optional<std::pair<shot::Phase, shot::Phase>> phases = shot::pressed_pair(a, b, n, physics_);
-  if (!phases) return false;
-  phases->first.partner = j;
-  phases->second.partner = i;
-  balls_[i].next_phase = phases->first;
-  balls_[j].next_phase = phases->second;
+  const auto pieces = shot::pressed_pair(a, b, i, j, n, physics_);
+  if (!pieces) return false;
+  balls_[i].next = (*pieces)[0];
+  balls_[j].next = (*pieces)[1];
   return true;
 }
 
@@ -531,11 +541,8 @@ inline bool Shot::press_pair(std::size_t i, std::size_t j, const Eigen::Vector3d
 inline bool Shot::press_on_cushion(std::size_t i, std::size_t cushion, const Eigen::Vector3d& n) {
   BallOnCloth<double>& a = balls_[i].state;
   if (!shot::presses(a, n, physics_.cloth) || !(-a.velocity.dot(n) < options_.pressing_speed)) return false;
-  std::optional<shot::Phase> phase = shot::pressed_on_cushion(a, n, table_, physics_);
-  if (!phase) return false;
-  phase->partner = cushion;
-  balls_[i].next_phase = phase;
-  return true;
+  balls_[i].next = shot::pressed_on_cushion(a, cushion, n, table_, physics_);
+  return balls_[i].next.has_value();
 }
 
 // The end of a pressed piece (or the record of a partner's change of motion there): the bodies evolved
@@ -551,9 +558,10 @@ inline void Shot::end_pressed(const Predicted& p) {
     return;
   }
   const shot::Phase phase = e.phase;
+  const shot::PressedPiece piece = e.piece;
   const double energy_before_event = options_.check_invariants ? energy_at(p.time) : 0;
   now_ = p.time;
-  e.state = shot::pressed_state(e.state, phase, phase.duration);
+  e.state = shot::pressed_state(e.state, phase.acceleration, piece.spin_acceleration, phase.duration);
   e.since = now_;
   if (phase.pressed == shot::Pressed::cushion) {
     e.state.velocity.setZero();
@@ -563,25 +571,23 @@ inline void Shot::end_pressed(const Predicted& p) {
     if (options_.check_invariants) check(energy_before_event);
     return;
   }
-  const std::size_t k = phase.partner;
+  const std::size_t k = piece.partner;
   Entry& o = balls_[k];
   const Motion from_k = o.phase.motion;
-  o.state = shot::pressed_state(o.state, o.phase, o.phase.duration);
+  o.state = shot::pressed_state(o.state, o.phase.acceleration, o.piece.spin_acceleration, o.phase.duration);
   o.since = now_;
-  if (phase.ending == shot::PressedEnd::speed) {
+  if (piece.ending == shot::PressedEnd::speed) {
     e.state.velocity.setZero();
     o.state.velocity.setZero();
   }
-  const std::size_t a = phase.first ? i : k, b = phase.first ? k : i;
+  const std::size_t a = piece.first ? i : k, b = piece.first ? k : i;
   const Eigen::Vector3d n = shot::towards(balls_[a].state, balls_[b].state);
-  std::optional<std::pair<shot::Phase, shot::Phase>> phases;
+  std::optional<std::array<shot::PressedStart, 2>> pieces;
   if (shot::presses(balls_[a].state, balls_[b].state, n, physics_.cloth))
-    phases = shot::pressed_pair(balls_[a].state, balls_[b].state, n, physics_);
-  if (phases) {
-    phases->first.partner = b;
-    phases->second.partner = a;
-    balls_[a].next_phase = phases->first;
-    balls_[b].next_phase = phases->second;
+    pieces = shot::pressed_pair(balls_[a].state, balls_[b].state, a, b, n, physics_);
+  if (pieces) {
+    balls_[a].next = (*pieces)[0];
+    balls_[b].next = (*pieces)[1];
     changed(i, k);
     changed(k, balls_.size());
   } else {
@@ -601,9 +607,9 @@ inline void Shot::end_pressed(const Predicted& p) {
 // Ball i is about to change at an event (with ball `also_changing`): the ball it was pressed against, if
 // any other, goes on free from now.
 inline void Shot::release_partner(std::size_t i, std::size_t also_changing) {
-  const shot::Phase& phase = balls_[i].phase;
-  if (phase.pressed != shot::Pressed::ball || phase.partner == also_changing) return;
-  const std::size_t k = phase.partner;
+  const Entry& e = balls_[i];
+  if (e.phase.pressed != shot::Pressed::ball || e.piece.partner == also_changing) return;
+  const std::size_t k = e.piece.partner;
   settle(k);
   changed(k, balls_.size());
 }
