@@ -6,9 +6,11 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <optional>
+#include <random>
 #include <stdexcept>
 #include <vector>
 
@@ -82,6 +84,59 @@ TEST_CASE("Detection: the next contact of a path, worked by hand", "[simulation]
     CHECK(shot::stays_apart(q, 1));
     CHECK_FALSE(shot::stays_apart(q, 10));
   }
+}
+
+TEST_CASE("Detection: the certificate of no contact holds only where the path keeps its distance",
+          "[simulation][shot][detection]") {
+  // Against the path's distance sampled densely in long double (and around the nearest sample refined by
+  // ternary search): wherever the certificate says apart, the distance stays above D; a path that
+  // passes within 1e-12 of D is always left to the polynomial; one far away is certified.
+  std::mt19937_64 random(2026);
+  std::uniform_real_distribution<double> unit(-1, 1);
+  const double D = 0.05715;
+  const auto nearest = [](const shot::Path& path, double horizon) {
+    const auto distance = [&](long double t) {
+      const long double x = path.position.x() + t * path.velocity.x() + 0.5L * t * t * path.acceleration.x();
+      const long double y = path.position.y() + t * path.velocity.y() + 0.5L * t * t * path.acceleration.y();
+      return std::sqrt(x * x + y * y);
+    };
+    const int samples = 4000;
+    const long double step = horizon / static_cast<long double>(samples);
+    int best = 0;
+    for (int k = 1; k <= samples; ++k) {
+      if (distance(k * step) < distance(best * step)) best = k;
+    }
+    long double low = std::max(0.0L, (best - 1) * step), high = std::min<long double>(horizon, (best + 1) * step);
+    for (int k = 0; k < 200; ++k) {
+      const long double a = low + (high - low) / 3, b = high - (high - low) / 3;
+      if (distance(a) < distance(b))
+        high = b;
+      else
+        low = a;
+    }
+    return std::min(distance(best * step), distance(0.5L * (low + high)));
+  };
+  int certified = 0;
+  for (int trial = 0; trial < 20000; ++trial) {
+    shot::Path path{{0.3 * unit(random), 0.3 * unit(random)}, {2 * unit(random), 2 * unit(random)},
+                    {2 * unit(random), 2 * unit(random)}};
+    const double horizon = 0.4 * (1 + unit(random));
+    if (!shot::certainly_apart(path, D, horizon)) continue;
+    ++certified;
+    INFO("trial " << trial);
+    REQUIRE(nearest(path, horizon) > D);
+  }
+  CHECK(certified > 2000);
+  // Grazes: the straight path passing at D (1 + 1e-12) and at D (1 − 1e-12), no acceleration.
+  for (const double miss : {1e-12, -1e-12, 0.0}) {
+    const shot::Path graze{{-1, D * (1 + miss)}, {1, 0}, {0, 0}};
+    CHECK_FALSE(shot::certainly_apart(graze, D, 2.0));
+  }
+  CHECK(shot::certainly_apart(shot::Path{{-1, 3 * D}, {1, 0}, {0, 0}}, D, 2.0));
+  // The drift of the acceleration counts: a path that clears by 2 D straight but curves into the point.
+  CHECK_FALSE(shot::certainly_apart(shot::Path{{-1, 3 * D}, {1, 0}, {0, -6 * D}}, D, 2.0));
+  CHECK_FALSE(shot::certainly_apart(shot::Path{{-1, 3 * D}, {1, 0}, {0, 0}}, D,
+                                    std::numeric_limits<double>::max()));
 }
 
 TEST_CASE("Evolution: a ball's phase, its duration and acceleration, worked by hand",

@@ -397,6 +397,80 @@ template <typename Scalar>
          bernstein_above<Scalar>({middle, m3, n2, o1, b[4]}, margin, depth - 1);
 }
 
+/// The sign p'' keeps on all of [0, horizon] for p of degree 3 or 4: +1 where p is convex there (p'' = 2 c2 +
+/// 6 c3 t + 12 c4 t² > 0 by the bound c2's term less every negative term at the horizon), −1 where it is
+/// concave (likewise), 0 where neither is shown. The margin, 16 ε times the terms' sizes, exceeds the
+/// rounding of 6 c3 and 12 c4 and of the bound's sums, so that the sign is that of the exact second
+/// derivative.
+template <typename Scalar>
+[[nodiscard]] int curvature_on(const EventPolynomial<Scalar>& p, Scalar horizon) noexcept {
+  const Scalar quadratic = 2 * p.c[2], linear = 6 * p.c[3] * horizon,
+               square = (p.degree == 4 ? 12 * p.c[4] : Scalar(0)) * horizon * horizon;
+  const Scalar margin = 16 * std::numeric_limits<Scalar>::epsilon() *
+                        (std::fabs(quadratic) + std::fabs(linear) + std::fabs(square));
+  if (quadratic + std::min(linear, Scalar(0)) + std::min(square, Scalar(0)) > margin) return 1;
+  if (quadratic + std::max(linear, Scalar(0)) + std::max(square, Scalar(0)) < -margin) return -1;
+  return 0;
+}
+
+/// A bracket of a root: p above 0 at `low`, below 0 at `high`.
+template <typename Scalar>
+struct Bracket {
+  Scalar low, high, at_low, at_high;
+};
+
+/// A bracket of the first root of p in (0, horizon), p convex there and falling at 0 (p(0) > 0, p'(0)
+/// < 0): Newton's steps from 0, which on a convex falling p stay below the first root and rise to it,
+/// until p is within its rounding of 0; the last step above that is the bracket's lower end, and a probe
+/// past the root (twice the rounding's reach, doubled while p is not below its rounding) its upper end.
+/// Between them p crosses 0 once. Empty where the steps pass p's minimum or the horizon, stall, or the
+/// probe finds no certain sign: the general search decides.
+template <typename Scalar>
+[[nodiscard]] std::optional<Bracket<Scalar>> convex_first_root(const EventPolynomial<Scalar>& p,
+                                                               const EventPolynomial<Scalar>& slope,
+                                                               Scalar horizon) noexcept {
+  Scalar t = 0, value = p.c[0];
+  // A start nearer the root: the smaller root of the Taylor quadratic c0 + c1 t + c2 t², where p is
+  // above 0 there beyond rounding and still falling (on a convex p it then falls all the way from 0, and
+  // stays above 0 before it); below 0 there beyond rounding, it brackets the root with 0 at once.
+  const Scalar discriminant = p.c[1] * p.c[1] - 4 * p.c[0] * p.c[2];
+  if (discriminant >= 0 && p.c[2] > 0) {
+    const Scalar guess = 2 * p.c[0] / (-p.c[1] + std::sqrt(discriminant));
+    if (guess > 0 && guess < horizon) {
+      const Scalar at_guess = evaluate(p, guess), error = evaluation_error(p, guess);
+      if (at_guess < -2 * error) return Bracket<Scalar>{Scalar(0), guess, p.c[0], at_guess};
+      if (at_guess > 2 * error && evaluate(slope, guess) < 0) {
+        t = guess;
+        value = at_guess;
+      }
+    }
+  }
+  for (int step = 0; step < 64; ++step) {
+    const Scalar gradient = evaluate(slope, t);
+    if (!(gradient < 0)) return std::nullopt;
+    const Scalar next = t - value / gradient;
+    if (!(next > t) || !(next < horizon)) return std::nullopt;
+    const Scalar at_next = evaluate(p, next);
+    if (at_next > 2 * evaluation_error(p, next)) {
+      t = next;
+      value = at_next;
+      continue;
+    }
+    // Within rounding of 0, or below it: the root lies after t, where p is certainly above 0.
+    Scalar high = next, at_high = at_next;
+    Scalar reach = 2 * std::numeric_limits<Scalar>::epsilon() * next +
+                   2 * evaluation_error(p, next) / std::fabs(evaluate(slope, next));
+    for (int probe = 0; probe < 8 && !(at_high < -2 * evaluation_error(p, high)); ++probe, reach *= 2) {
+      high = next + reach;
+      if (!(high < horizon)) return std::nullopt;
+      at_high = evaluate(p, high);
+    }
+    if (!(at_high < -2 * evaluation_error(p, high))) return std::nullopt;
+    return Bracket<Scalar>{t, high, value, at_high};
+  }
+  return std::nullopt;
+}
+
 /// Whether p stays above what rounding can tell from 0 on all of [0, horizon], shown by the Bernstein
 /// coefficients of p(horizon s) on s in [0, 1] and, where those fall short, on its halves, quarters and
 /// eighths. Rounding moves the coefficients and their halving by at most 11 ε S (S = Σ |c_k| horizon^k),
@@ -476,10 +550,35 @@ template <typename Scalar, std::size_t N>
     if (lowest > Scalar(4 * p.degree + 4) * std::numeric_limits<Scalar>::epsilon() * size) return std::nullopt;
   }
   if (!(horizon > 0)) return std::nullopt;
-  // Apart now and, by its Bernstein coefficients, all the way to the horizon: no contact to search for.
-  if (p.c[0] > 0 && p.degree >= 3 && detail::stays_above(p, horizon)) return std::nullopt;
-  // The turning points of p in (0, horizon) split it into monotone pieces; walk them in order.
   const detail::EventPolynomial<Scalar> slope = detail::derivative(p);
+  // The root of p in (a, b) where p falls from left > 0 to right < 0, found by the type's search; one the
+  // type places only to more than 16 ulps (the rounding of p over its slope there, as at a near graze
+  // that touches) placed exactly; and not t = 0 where the bodies are apart at 0 (a root below the
+  // smallest step of the type).
+  const auto root_between = [&](Scalar a, Scalar b, Scalar left, Scalar right) {
+    Scalar t = detail::sign_change(p, slope, a, b, left, right);
+    const Scalar ulp = detail::next_up(t) - t;
+    if (!(detail::evaluation_error(p, t) <= 16 * ulp * std::fabs(detail::evaluate(slope, t))))
+      t = detail::placed_root(p, slope, a, b, t);
+    return t > 0 ? t : std::numeric_limits<Scalar>::denorm_min();
+  };
+  if (p.c[0] > 0 && p.degree >= 3) {
+    // Convex and falling at 0: Newton's steps from 0 bracket the first root without the turning points.
+    // Concave and not rising at 0, below 0 at the horizon beyond rounding: it falls throughout, and its
+    // one root lies in (0, horizon).
+    const int curvature = detail::curvature_on(p, horizon);
+    if (curvature > 0 && p.c[1] < 0) {
+      if (const auto bracket = detail::convex_first_root(p, slope, horizon))
+        return root_between(bracket->low, bracket->high, bracket->at_low, bracket->at_high);
+    } else if (curvature < 0 && p.c[1] <= 0) {
+      const Scalar at_horizon = detail::evaluate(p, horizon);
+      if (at_horizon < -2 * detail::evaluation_error(p, horizon))
+        return root_between(Scalar(0), horizon, p.c[0], at_horizon);
+    }
+    // Apart now and, by its Bernstein coefficients, all the way to the horizon: no contact to search for.
+    if (detail::stays_above(p, horizon)) return std::nullopt;
+  }
+  // The turning points of p in (0, horizon) split it into monotone pieces; walk them in order.
   std::array<Scalar, 6> breaks{};
   breaks[0] = 0;
   const int turns = detail::sign_changes(slope, Scalar(0), horizon, breaks.data() + 1);
@@ -501,16 +600,7 @@ template <typename Scalar, std::size_t N>
       // rising out of an overlap to within rounding of 0: Sturm's sequence in exact arithmetic decides.
       return detail::exact::earliest_contact_after_zero(c, horizon);
     }
-    if (left > 0 && right < 0) {
-      Scalar t = detail::sign_change(p, slope, a, b, left, right);
-      // A root the type places only to more than 16 ulps (the rounding of p over its slope there, as at
-      // a near graze that touches): placed exactly.
-      const Scalar ulp = detail::next_up(t) - t;
-      if (!(detail::evaluation_error(p, t) <= 16 * ulp * std::fabs(detail::evaluate(slope, t))))
-        t = detail::placed_root(p, slope, a, b, t);
-      // Not t = 0 where the bodies are apart at 0: the root lies below the smallest step of the type.
-      return t > 0 ? t : std::numeric_limits<Scalar>::denorm_min();
-    }
+    if (left > 0 && right < 0) return root_between(a, b, left, right);
     left = right;
   }
   return std::nullopt;

@@ -130,10 +130,31 @@ inline void touching(std::span<double> p, double scale, double radius) {
   return f >= 0 && f <= along.squaredNorm() ? *t : none;
 }
 
+/// Whether a centre on `path` (relative to a point) stays farther than `distance` from it over [0,
+/// horizon] by a margin no rounding of its contact polynomial reaches: the straight path r + v t comes no
+/// nearer than its closest approach on the interval, and the acceleration moves the centre by at most
+/// ½ |a| horizon² from it (|a| bounded by |a_x| + |a_y|). The margin, 10⁻⁹ S + 10⁻¹⁴ S²/distance with S
+/// = |r| + |v| horizon + ½ |a| horizon² (each length bounded by the sum of its components' sizes), lies
+/// far above the polynomial's rounding (a few ε S² against the 2 distance · margin its value keeps above
+/// 0). A certificate of no contact that costs a division and a few products, compared squared; where it
+/// does not hold, the polynomial decides.
+[[nodiscard]] inline bool certainly_apart(const Path& path, double distance, double horizon) {
+  if (!(horizon < std::numeric_limits<double>::max())) return false;
+  const Eigen::Vector2d &r = path.position, &v = path.velocity, &a = path.acceleration;
+  const double vv = v.squaredNorm();
+  const double closest = vv > 0 ? std::clamp(-r.dot(v) / vv, 0.0, horizon) : 0.0;
+  const double drift = 0.5 * (std::fabs(a.x()) + std::fabs(a.y())) * horizon * horizon;
+  const double size = std::fabs(r.x()) + std::fabs(r.y()) + (std::fabs(v.x()) + std::fabs(v.y())) * horizon + drift;
+  const double needed = distance + drift + 1e-9 * size + 1e-14 * size * (size / distance);
+  return (r + closest * v).squaredNorm() > needed * needed;
+}
+
 /// When a ball of radius R on `path` meets `jaw` within `horizon` (its centre R + the jaw's radius from
 /// the jaw's axis); +∞ if never.
 [[nodiscard]] inline double jaw_contact(const Path& path, const Jaw& jaw, double R, double horizon) {
   const double reach = R + jaw.radius;
+  if (certainly_apart({path.position - jaw.centre, path.velocity, path.acceleration}, reach, horizon))
+    return std::numeric_limits<double>::infinity();
   std::array<double, 5> p =
       contact_polynomial<double>(path.position - jaw.centre, path.velocity, path.acceleration, reach);
   touching(p, 2 * reach, R);
@@ -142,6 +163,8 @@ inline void touching(std::span<double> p, double scale, double radius) {
 
 /// When the centre of a ball on `path` enters `pocket`'s capture circle within `horizon`; +∞ if never.
 [[nodiscard]] inline double pocket_entry(const Path& path, const Pocket& pocket, double horizon) {
+  if (certainly_apart({path.position - pocket.centre, path.velocity, path.acceleration}, pocket.radius, horizon))
+    return std::numeric_limits<double>::infinity();
   const std::array<double, 5> p = contact_polynomial<double>(path.position - pocket.centre, path.velocity,
                                                              path.acceleration, pocket.radius);
   return earliest_contact(p, horizon).value_or(std::numeric_limits<double>::infinity());
@@ -150,6 +173,7 @@ inline void touching(std::span<double> p, double scale, double radius) {
 /// When two balls of radius R meet within `horizon`, `relative` the second's path less the first's
 /// (their centres two radii apart); +∞ if never.
 [[nodiscard]] inline double ball_contact(const Path& relative, double R, double horizon) {
+  if (certainly_apart(relative, 2 * R, horizon)) return std::numeric_limits<double>::infinity();
   std::array<double, 5> p =
       contact_polynomial<double>(relative.position, relative.velocity, relative.acceleration, 2 * R);
   touching(p, 4 * R, R);
