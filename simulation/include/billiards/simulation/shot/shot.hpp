@@ -527,7 +527,7 @@ inline void Shot::predict(std::size_t i, std::size_t first_other, std::size_t sk
 // their motion lies on the line of the contact. Whether they are.
 inline bool Shot::press_pair(std::size_t i, std::size_t j, const Eigen::Vector3d& n) {
   BallOnCloth<double>&a = balls_[i].state, &b = balls_[j].state;
-  if (!shot::presses(a, b, n, physics_.cloth) || !((b.velocity - a.velocity).dot(n) < options_.pressing_speed))
+  if (!((b.velocity - a.velocity).dot(n) < options_.pressing_speed) || !shot::presses(a, b, n, physics_.cloth))
     return false;
   const auto pieces = shot::pressed_pair(a, b, i, j, n, physics_);
   if (!pieces) return false;
@@ -540,7 +540,7 @@ inline bool Shot::press_pair(std::size_t i, std::size_t j, const Eigen::Vector3d
 // there, it leaves slower than pressing_speed and its motion lies on the cushion's normal. Whether it is.
 inline bool Shot::press_on_cushion(std::size_t i, std::size_t cushion, const Eigen::Vector3d& n) {
   BallOnCloth<double>& a = balls_[i].state;
-  if (!shot::presses(a, n, physics_.cloth) || !(-a.velocity.dot(n) < options_.pressing_speed)) return false;
+  if (!(-a.velocity.dot(n) < options_.pressing_speed) || !shot::presses(a, n, physics_.cloth)) return false;
   balls_[i].next = shot::pressed_on_cushion(a, cushion, n, table_, physics_);
   return balls_[i].next.has_value();
 }
