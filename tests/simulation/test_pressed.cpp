@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <random>
 #include <vector>
 
 using billiards::simulation::PoolBall;
@@ -216,4 +217,50 @@ TEST_CASE("Pressed: the pressed-pair shot converges as the pressing speed shrink
   // Each tenfold smaller tolerance resolves more of an inelastic collapse's bounces (e^k of the approach:
   // ln 10/ln(1/e) of them), not tenfold the events.
   CHECK(fine.events < coarse.events + 4 * 120);
+}
+
+TEST_CASE("Pressed: random shots on one line end, keeping every invariant", "[simulation][shot][pressed]") {
+  // Two to four balls on a line, with random speeds and follow or draw (some touching at the start): the
+  // pressed pieces' modes (sliding, rolling, sticking between the balls), their ends and releases, with
+  // every invariant checked at every event and a bounded number of events.
+  const PoolTable table = billiards::simulation::pool_table("7ft");
+  const PoolPhysics physics;
+  const double R = physics.radius;
+  std::mt19937_64 random(55);
+  std::uniform_real_distribution<double> unit(0, 1);
+  std::size_t touching_at_rest = 0, most_events = 0;
+  for (int trial = 0; trial < 400; ++trial) {
+    std::vector<PoolBall> balls;
+    double x = 0.2 + 0.3 * unit(random);
+    const int count = 2 + trial % 3;
+    for (int k = 0; k < count; ++k) {
+      PoolBall b;
+      b.position = {x, 0.5, R};
+      b.velocity = {4 * unit(random) - 2, 0, 0};
+      // The first ball (behind) mostly with follow beyond rolling: it presses those it meets.
+      const double spin = k == 0 && trial % 2 == 0 ? b.velocity.x() + 4 * unit(random) : 8 * unit(random) - 4;
+      b.angular_velocity = {0, spin / R, 0};
+      balls.push_back(b);
+      x += 2 * R + (unit(random) < 0.5 ? 0.0 : 0.2 * unit(random));
+    }
+    ShotOptions options;
+    options.check_invariants = true;
+    options.event_limit = 20000;
+    Shot shot(table, physics, balls, options);
+    INFO("trial " << trial);
+    REQUIRE_NOTHROW(shot.play());
+    const std::vector<PoolBall> end = shot.balls();
+    for (const PoolBall& b : end) CHECK(b.position.y() == 0.5);
+    for (std::size_t k = 0; k + 1 < end.size(); ++k) {
+      if (!end[k].pocketed && !end[k + 1].pocketed &&
+          std::fabs(std::fabs(end[k + 1].position.x() - end[k].position.x()) - 2 * R) < 1e-9) {
+        ++touching_at_rest;
+        break;
+      }
+    }
+    most_events = std::max<std::size_t>(most_events, shot.event_count());
+  }
+  INFO("shots ending with two balls touching: " << touching_at_rest << "; the most events " << most_events);
+  CHECK(touching_at_rest > 0);  // pressed pairs that rolled to rest together
+  CHECK(most_events < 2000);
 }

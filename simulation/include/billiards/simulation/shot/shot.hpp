@@ -585,6 +585,9 @@ inline void Shot::end_pressed(const Predicted& p) {
   std::optional<std::array<shot::PressedStart, 2>> pieces;
   if (shot::presses(balls_[a].state, balls_[b].state, n, physics_.cloth))
     pieces = shot::pressed_pair(balls_[a].state, balls_[b].state, a, b, n, physics_);
+  // A piece too short to move the shot's time on (rounding left its end's quantity a sliver from 0):
+  // the pair parts instead, so that time always advances.
+  if (pieces && !(now_ + (*pieces)[0].phase.duration > now_)) pieces.reset();
   if (pieces) {
     balls_[a].next = (*pieces)[0];
     balls_[b].next = (*pieces)[1];
