@@ -259,6 +259,47 @@ TEST_CASE("Resolution: the contact laws and the pressed contacts, worked by hand
   }
 }
 
+TEST_CASE("Pressing: the pieces of sustained contact, worked by hand", "[simulation][shot][pressed]") {
+  const PoolPhysics physics;
+  const double mu_g = physics.cloth.sliding_friction * physics.cloth.gravity, mu_b = physics.ball_friction;
+  // A with follow (u < 0: the cloth pushes it on), B sliding on (u > 0: held back), their contact points
+  // slipping (σ > 0): N = μ_s g from −N + μ_s g = N − μ_s g, the pair coasting (v̇ = 0); R ω̇ = −(5/2)(f + μ_b N).
+  {
+    const auto piece = shot::pair_piece(0.5, {-1.0, 0.3}, 1.2, physics);
+    REQUIRE(piece);
+    CHECK(piece->force == Approx(mu_g));
+    CHECK(piece->acceleration == Approx(0).margin(1e-12));
+    CHECK(piece->spin_rate[0] == Approx(-2.5 * (mu_g + mu_b * mu_g)));
+    CHECK(piece->spin_rate[1] == Approx(-2.5 * (-mu_g + mu_b * mu_g)));
+    // B's slip 0.3 closes at u̇ = v̇ − R ω̇ = 2.5 (−μ_s g + μ_b μ_s g), A's −1 at 2.5 (μ_s g + μ_b μ_s g).
+    const double b_end = 0.3 / (2.5 * mu_g * (1 - mu_b)), a_end = 1.0 / (2.5 * mu_g * (1 + mu_b));
+    CHECK(piece->duration == Approx(std::min(a_end, b_end)));
+    CHECK(piece->ending == (a_end < b_end ? shot::PressedEnd::first_slip : shot::PressedEnd::second_slip));
+  }
+  // A rolling behind B sliding on: f_A = (2N − 5T)/7 keeps A rolling, T = μ_b N; v̇_A = −N + f_A − the
+  // rolling resistance's share (1 − |f_A|/(μ_s g)) μ_r g, v̇_B = N − μ_s g.
+  {
+    const auto piece = shot::pair_piece(0.5, {0.0, 0.3}, 0.8, physics);
+    REQUIRE(piece);
+    const double N = piece->force, f = (2 * N - 5 * mu_b * N) / 7;
+    const double resistance = (1 - std::fabs(f) / mu_g) * physics.cloth.rolling_friction * physics.cloth.gravity;
+    CHECK(piece->rolling[0]);
+    CHECK_FALSE(piece->rolling[1]);
+    CHECK(-N + f - resistance == Approx(N - mu_g));
+    CHECK(piece->acceleration == Approx(N - mu_g));
+  }
+  // Both rolling at one speed: nothing presses them (N would be 0), so no piece.
+  CHECK_FALSE(shot::pair_piece(0.5, {0.0, 0.0}, 1.0, physics));
+  // A ball against the cushion: at rest, its spin running down at (5/2)(μ_s g + μ_c P).
+  const auto [sine, cosine] = billiards::detail::nose_angle(0.03629, physics.radius);
+  const auto cushion = shot::cushion_piece(2.0, sine, cosine, physics);
+  REQUIRE(cushion);
+  const double P = mu_g / (cosine + physics.cushion_friction * sine);
+  CHECK(cushion->spin_rate == Approx(-2.5 * (mu_g + physics.cushion_friction * P)));
+  CHECK(cushion->duration == Approx(2.0 / (2.5 * (mu_g + physics.cushion_friction * P))));
+  CHECK_FALSE(shot::cushion_piece(-1.0, sine, cosine, physics));  // spin that pulls it away
+}
+
 TEST_CASE("Checks: bad physics and balls named, capture circles closing the mouths, invariants",
           "[simulation][shot][checks]") {
   const PoolTable table = pool_table("9ft");

@@ -15,6 +15,7 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <utility>
 
 namespace billiards {
 
@@ -82,6 +83,16 @@ struct Cushion {
   Scalar friction = Scalar(0.2);       ///< \f$\mu_c \ge 0\f$, across it
 };
 
+namespace detail {
+/// sin θ_a and cos θ_a of the angle above a ball's equator (radius `radius`) at which a cushion's nose at
+/// height `height` touches it: sin θ_a = h/R − 1.
+template <typename Scalar>
+[[nodiscard]] std::pair<Scalar, Scalar> nose_angle(Scalar height, Scalar radius) noexcept {
+  const Scalar sine = height / radius - 1;
+  return {sine, std::sqrt(std::max(Scalar(0), (1 - sine) * (1 + sine)))};
+}
+}  // namespace detail
+
 /// The ball after it meets the cushion (`cushion.slip_in_cushion_frame`, `cushion.normal_impulse_per_unit_mass`,
 /// `cushion.regime`, `cushion.velocity_change`, `cushion.spin_change`). In the cushion's frame (x̂ = n, ŷ =
 /// ẑ × n along it, ẑ up) the contact point slips by s_t = v_x sin θ_a + R ω_y down the nose and s_y = v_y +
@@ -99,8 +110,7 @@ template <typename Scalar>
   const Vector rail{-n.y(), n.x(), 0};
   const Scalar approach = ball.velocity.x() * n.x() + ball.velocity.y() * n.y();
   if (!(approach > 0)) return ball;
-  const Scalar sin_nose = cushion.height / ball.radius - 1;
-  const Scalar cos_nose = std::sqrt(std::max(Scalar(0), (1 - sin_nose) * (1 + sin_nose)));
+  const auto [sin_nose, cos_nose] = detail::nose_angle(cushion.height, ball.radius);
   const Vector& w = ball.angular_velocity;
   const Scalar along = ball.velocity.dot(rail);
   const kernels::shot::CushionSlip<Scalar> slip = kernels::shot::cushion_slip(

@@ -25,6 +25,7 @@
 #include <billiards/simulation/shot/pool_table.hpp>
 
 #include <billiards/cloth.hpp>
+#include <billiards/shot.hpp>
 
 #include <Eigen/Core>
 
@@ -297,8 +298,7 @@ struct PressedStart {
   BallOnCloth<double> pa = a;
   if (!onto_line(pa, normal, line_tolerance)) return std::nullopt;
   const Eigen::Vector3d across{-normal.y(), normal.x(), 0};
-  const double sin_nose = table.nose_height / a.radius - 1;
-  const double cos_nose = std::sqrt(std::max(0.0, (1 - sin_nose) * (1 + sin_nose)));
+  const auto [sin_nose, cos_nose] = billiards::detail::nose_angle(table.nose_height, a.radius);
   const std::optional<CushionPiece> piece =
       cushion_piece(a.radius * pa.angular_velocity.dot(across), sin_nose, cos_nose, physics);
   if (!piece) return std::nullopt;

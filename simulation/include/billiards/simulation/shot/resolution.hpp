@@ -129,7 +129,7 @@ inline bool separate_pressed_pair(BallOnCloth<double>& a, BallOnCloth<double>& b
   const Eigen::Vector2d va(a.velocity.x(), a.velocity.y()), vb(b.velocity.x(), b.velocity.y());
   const Eigen::Vector2d centre = 0.5 * (va + vb), w = vb - va;
   const double along = w.dot(n);
-  if (!presses(a, b, normal, cloth) || !(along < speed)) return false;
+  if (!(along < speed) || !presses(a, b, normal, cloth)) return false;
   const Eigen::Vector2d tangential = w - along * n;
   const double R = a.radius;
   // Rotational energy 0.2 m R² ω² per ball, in units of m/4.
@@ -151,7 +151,7 @@ inline bool separate_pressed_ball(BallOnCloth<double>& a, const Eigen::Vector3d&
   const Eigen::Vector2d n(-normal.x(), -normal.y());  // from the cushion or jaw into the table
   const Eigen::Vector2d v(a.velocity.x(), a.velocity.y());
   const double along = v.dot(n);
-  if (!presses(a, normal, cloth) || !(along < speed)) return false;
+  if (!(along < speed) || !presses(a, normal, cloth)) return false;
   const Eigen::Vector2d tangential = v - along * n;
   const double R = a.radius;
   // Rotational energy 0.2 m R² ω², in units of m/2.

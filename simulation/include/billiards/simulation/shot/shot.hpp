@@ -102,9 +102,8 @@ class Shot {
   /// The kinetic energy may grow at an event by at most this fraction of the largest total the shot has
   /// had (rounding of the contact laws, which conserve or dissipate it exactly).
   static constexpr double energy_tolerance = 1e-12;
-  /// The default of ShotOptions::pressing_speed (m/s): the speed at which bodies the cloth presses
-  /// together leave a contact at the least, the energy taken from their relative velocity along the
-  /// contact plane, then from their spins (see the class's description).
+  /// The default of ShotOptions::pressing_speed (m/s): bodies the cloth presses together that leave a
+  /// contact slower than this are in sustained contact from there (see the class's description).
   static constexpr double pressing_speed = ShotOptions{}.pressing_speed;
 
   /// Validates the physics and the options (billiards::invalid_argument naming the field, shot::validate)
