@@ -12,6 +12,7 @@
 #include <cmath>
 #include <limits>
 #include <optional>
+#include <random>
 
 namespace {
 
@@ -229,4 +230,32 @@ TEMPLATE_TEST_CASE("checked::earliest_contact names the argument it rejects", "[
                     Catch::Contains("horizon is inf"));
   CHECK(billiards::checked::earliest_contact(std::array<S, 3>{1, -1, 0}, S(2)) ==
         billiards::earliest_contact(std::array<S, 3>{1, -1, 0}, S(2)));
+}
+
+TEMPLATE_TEST_CASE("sign_change: a quadratic's root closed on in closed form keeps p above 0 as evaluated",
+                   "[events]", float, double) {
+  using S = TestType;
+  // Balls decelerating toward a cushion from 0.05 to 2 m away at 0.5 to 6 m/s (the cushion polynomial):
+  // the root the search returns is where p, as evaluated, still has its sign at the bracket's left end,
+  // a value or two before the exact root (the quadratic formula in long double).
+  std::mt19937_64 random(7);
+  std::uniform_real_distribution<double> unit(0, 1);
+  int checked = 0;
+  for (int k = 0; k < 2000; ++k) {
+    const S radius = S(0.028575), gap = S(0.05 + 2 * unit(random)), speed = S(-0.5 - 5.5 * unit(random));
+    const S acceleration = S(0.1 + 2 * unit(random));
+    const std::array<S, 3> c = billiards::cushion_polynomial(gap, speed, acceleration, radius);
+    const long double a = c[2], b = c[1], q = c[0], disc = b * b - 4 * a * q;
+    if (disc <= 0) continue;
+    const long double root = (-b - std::sqrt(disc)) / (2 * a);
+    const billiards::detail::EventPolynomial<S> p{{c[0], c[1], c[2], 0, 0}, 2};
+    const S vertex = -c[1] / (2 * c[2]);
+    const S t = billiards::detail::sign_change(p, billiards::detail::derivative(p), S(0), vertex, c[0],
+                                               billiards::detail::evaluate(p, vertex));
+    if (!(billiards::detail::evaluate(p, vertex) < 0)) continue;
+    ++checked;
+    CHECK(billiards::detail::evaluate(p, t) > 0);
+    CHECK(std::fabs((long double)t - root) <= 16 * (long double)std::numeric_limits<S>::epsilon() * root);
+  }
+  CHECK(checked > 1500);
 }

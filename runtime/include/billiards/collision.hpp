@@ -358,11 +358,14 @@ template <typename Derived>
   using Scalar = typename Derived::Scalar;
   if constexpr (has_exponent_field<Scalar>) {
     using Field = ExponentField<Scalar>;
-    if (const auto field = Field::largest(scalars_of(v)); Field::has_normal_inverse(field)) {
+    const auto field = Field::largest(scalars_of(v));
+    if (Field::has_normal_inverse(field)) {
       // 2^e has the field f + 1, a normal number wherever 2^−e is one
       return (v * Field::inverse(field)).norm() *
              std::bit_cast<Scalar>(static_cast<typename Field::Bits>(field + Field::one));
     }
+    // The zero vector (a ball at rest, a spin without its horizontal part): 0 without the general path.
+    if (field == 0 && (v.array() == Scalar(0)).all()) return Scalar(0);
   }
   return scaled_norm_by_exponent(v);
 }

@@ -103,6 +103,15 @@ template <typename Scalar>
          (std::numeric_limits<Scalar>::epsilon() * r + std::numeric_limits<Scalar>::denorm_min());
 }
 
+/// The next value of the type above x: for a finite x > 0 its bits plus one (no library call), else
+/// std::nextafter's.
+template <typename Scalar>
+[[nodiscard]] Scalar next_up(Scalar x) noexcept {
+  if (x > 0 && x < std::numeric_limits<Scalar>::max())
+    return std::bit_cast<Scalar>(static_cast<kernels::BitsOf<Scalar>>(std::bit_cast<kernels::BitsOf<Scalar>>(x) + 1));
+  return std::nextafter(x, std::numeric_limits<Scalar>::infinity());
+}
+
 /// A point strictly inside (a, b) for bisection: the midpoint, or the geometric mean where a > 0 and
 /// b/a > 8, so that a root many decades below b is reached in few steps. Returns a or b once the interval
 /// cannot be split.
@@ -163,7 +172,18 @@ template <typename Scalar>
       const Scalar q = -(c1 + std::copysign(std::sqrt(discriminant), c1)) / 2;
       const Scalar first = q / c2, second = c0 / q;
       const Scalar root = first > a && first < b ? first : second;
-      close_on(root, std::fabs(evaluate(slope, root)));
+      if (close_on(root, std::fabs(evaluate(slope, root)))) {
+        // Closed on it (within a few ulps of the exact root): the value of the type where p changes sign
+        // as evaluated, found by steps of one value from the root within the closed bracket.
+        Scalar t = root;
+        if (evaluate(p, t) > 0) {
+          for (Scalar up = next_up(t); up < b && evaluate(p, up) > 0; up = next_up(up)) t = up;
+        } else {
+          do t = std::nextafter(t, a);
+          while (t > a && !(evaluate(p, t) > 0));
+        }
+        return t;
+      }
     }
   }
   Scalar x = falsi();
@@ -331,17 +351,14 @@ template <typename Scalar>
   return exact::sign_of_polynomial(c, t);
 }
 
-template <typename Scalar>
-[[nodiscard]] Scalar next_up(Scalar x) noexcept {
-  return std::nextafter(x, std::numeric_limits<Scalar>::infinity());
-}
-
 /// The root of p in (a, b] placed exactly: given p(a) > 0 and p(b) ≤ 0 (certainly: their signs are
 /// not for rounding to change) and `guess` in [a, b] near the root, the largest value t of the type
-/// with p(t) > 0 whose next value up has p ≤ 0 — that next value itself where p is 0 there. One Newton
-/// step from the guess with p's compensated value, then steps of 1, 2, 4, … values from it towards the
-/// root until the sign turns, then bisection: every sign certified. 0 ≤ a < b; `slope` is p' up to a
-/// positive factor (derivative()).
+/// with p(t) > 0 whose next value up has p ≤ 0 — that next value itself where p is 0 there. Newton's
+/// steps from the guess with p's compensated value (as accurate as in twice the precision, so that they
+/// settle within a value or two of the root), kept inside the bracket of certified signs: a compensated
+/// value sure of its sign moves the bracket's end, and a step that would leave the bracket splits it
+/// instead. Then steps of 1, 2, 4, … values from the last towards the root until the sign turns, then
+/// bisection: every sign certified. 0 ≤ a < b; `slope` is p' up to a positive factor (derivative()).
 template <typename Scalar>
 [[nodiscard]] Scalar placed_root(const EventPolynomial<Scalar>& p, const EventPolynomial<Scalar>& slope, Scalar a,
                                  Scalar b, Scalar guess) {
@@ -351,8 +368,8 @@ template <typename Scalar>
   Scalar lo = a, hi = b;  // certified: p(lo) > 0, p(hi) ≤ 0
   int at_hi = -1;         // the sign of p(hi), −1 or 0 (−1 stands for "≤ 0" until it is evaluated)
   bool hi_known = false;
-  const auto probe = [&](Scalar x) {
-    const int sign = certified_sign(p, x);
+  // x with p's certified sign `sign` there: an end of the bracket. Whether p is above 0 there.
+  const auto take = [&](Scalar x, int sign) {
     if (sign > 0) {
       lo = x;
     } else {
@@ -362,19 +379,27 @@ template <typename Scalar>
     }
     return sign > 0;
   };
-  if (guess > a && guess < b) {
+  const auto probe = [&](Scalar x) { return take(x, certified_sign(p, x)); };
+  // slope is p' up to a positive factor: a Newton step with it is the same only where the factor is 1,
+  // which derivative() keeps below overflow; the steps are guesses, only certified signs move the ends.
+  Scalar x = std::clamp(guess, a, b);
+  for (int step = 0; step < 32 && bits(hi) - bits(lo) > 1; ++step) {
     bool sure = false;
-    const Scalar value = compensated_value(p, guess, sure);
-    const Scalar gradient = evaluate(slope, guess);
-    // slope is p' up to a positive factor: a Newton step with it is the same only where the factor is
-    // 1, which derivative() keeps below overflow; the step is a guess, its signs are certified below.
-    const Scalar newton = gradient != 0 ? guess - value / gradient : guess;
-    if (newton > a && newton < b) guess = newton;
-    const bool above = probe(guess);
-    for (Bits step = 1; bits(hi) - bits(lo) > 1; step *= 2) {
-      if (step >= bits(hi) - bits(lo)) break;
-      if (probe(value_of(above ? bits(lo) + step : bits(hi) - step)) != above) break;
+    const Scalar value = compensated_value(p, x, sure);
+    if (sure && x > lo && x < hi) take(x, value > 0 ? 1 : -1);
+    const Scalar gradient = evaluate(slope, x);
+    const Scalar next = gradient != 0 ? x - value / gradient : split(lo, hi);
+    if (gradient != 0 && std::fabs(next - x) <= 2 * (next_up(x) - x)) {
+      x = next;  // settled
+      break;
     }
+    x = next > lo && next < hi ? next : split(lo, hi);
+  }
+  // From the last step (an end where it settled at or beyond one), steps towards the root.
+  const bool above = x <= lo || (x < hi && probe(x));
+  for (Bits step = 1; bits(hi) - bits(lo) > 1; step *= 2) {
+    if (step >= bits(hi) - bits(lo)) break;
+    if (probe(value_of(above ? bits(lo) + step : bits(hi) - step)) != above) break;
   }
   while (bits(hi) - bits(lo) > 1) probe(value_of(bits(lo) + (bits(hi) - bits(lo)) / 2));
   if (!hi_known) at_hi = certified_sign(p, hi);
@@ -568,8 +593,18 @@ template <typename Scalar, std::size_t N>
     // one root lies in (0, horizon).
     const int curvature = detail::curvature_on(p, horizon);
     if (curvature > 0 && p.c[1] < 0) {
-      if (const auto bracket = detail::convex_first_root(p, slope, horizon))
-        return root_between(bracket->low, bracket->high, bracket->at_low, bracket->at_high);
+      if (const auto bracket = detail::convex_first_root(p, slope, horizon)) {
+        // Where p's rounding over its slope at the bracket's upper end spans more than 8 values of the
+        // type (bodies far apart, whose polynomial's terms cancel at the root), the type's search could
+        // not place the root closer than that: it is placed exactly from the bracket at once.
+        const Scalar high = bracket->high;
+        if (detail::evaluation_error(p, high) >
+            8 * (detail::next_up(high) - high) * std::fabs(detail::evaluate(slope, high))) {
+          const Scalar t = detail::placed_root(p, slope, bracket->low, high, bracket->low > 0 ? bracket->low : high);
+          return t > 0 ? t : std::numeric_limits<Scalar>::denorm_min();
+        }
+        return root_between(bracket->low, high, bracket->at_low, bracket->at_high);
+      }
     } else if (curvature < 0 && p.c[1] <= 0) {
       const Scalar at_horizon = detail::evaluate(p, horizon);
       if (at_horizon < -2 * detail::evaluation_error(p, horizon))

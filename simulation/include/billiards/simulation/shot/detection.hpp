@@ -136,17 +136,21 @@ inline void touching(std::span<double> p, double scale, double radius) {
 /// ½ |a| horizon² from it (|a| bounded by |a_x| + |a_y|). The margin, 10⁻⁹ S + 10⁻¹⁴ S²/distance with S
 /// = |r| + |v| horizon + ½ |a| horizon² (each length bounded by the sum of its components' sizes), lies
 /// far above the polynomial's rounding (a few ε S² against the 2 distance · margin its value keeps above
-/// 0). A certificate of no contact that costs a division and a few products, compared squared; where it
-/// does not hold, the polynomial decides.
+/// 0). A certificate of no contact that costs a few products, compared squared and without a division:
+/// the closest approach at 0 (r·v ≥ 0), at the horizon (−r·v ≥ |v|² horizon), or between, where its
+/// square is (r × v)²/|v|² (the cross product's rounding, ε |r| |v|, far below the margin's |v| 10⁻⁹ S);
+/// where it does not hold, the polynomial decides.
 [[nodiscard]] inline bool certainly_apart(const Path& path, double distance, double horizon) {
   if (!(horizon < std::numeric_limits<double>::max())) return false;
   const Eigen::Vector2d &r = path.position, &v = path.velocity, &a = path.acceleration;
-  const double vv = v.squaredNorm();
-  const double closest = vv > 0 ? std::clamp(-r.dot(v) / vv, 0.0, horizon) : 0.0;
   const double drift = 0.5 * (std::fabs(a.x()) + std::fabs(a.y())) * horizon * horizon;
   const double size = std::fabs(r.x()) + std::fabs(r.y()) + (std::fabs(v.x()) + std::fabs(v.y())) * horizon + drift;
   const double needed = distance + drift + 1e-9 * size + 1e-14 * size * (size / distance);
-  return (r + closest * v).squaredNorm() > needed * needed;
+  const double vv = v.squaredNorm(), along = -r.dot(v);
+  if (!(along > 0)) return r.squaredNorm() > needed * needed;
+  if (!(along < vv * horizon)) return (r + horizon * v).squaredNorm() > needed * needed;
+  const double cross = r.x() * v.y() - r.y() * v.x();
+  return cross * cross > needed * needed * vv;
 }
 
 /// When a ball of radius R on `path` meets `jaw` within `horizon` (its centre R + the jaw's radius from
