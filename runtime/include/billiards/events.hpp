@@ -588,12 +588,25 @@ template <typename Scalar, std::size_t N>
     return t > 0 ? t : std::numeric_limits<Scalar>::denorm_min();
   };
   if (p.c[0] > 0 && p.degree >= 3) {
-    // Convex and falling at 0: Newton's steps from 0 bracket the first root without the turning points.
-    // Concave and not rising at 0, below 0 at the horizon beyond rounding: it falls throughout, and its
+    // Convex and falling at 0 (up to the horizon, or up to a point past the first root): Newton's steps
+    // from 0 bracket the first root without the turning points. Concave and not rising at 0, below 0 at the horizon beyond rounding: it falls throughout, and its
     // one root lies in (0, horizon).
-    const int curvature = detail::curvature_on(p, horizon);
+    int curvature = detail::curvature_on(p, horizon);
+    Scalar convex_end = horizon;
+    if (curvature <= 0 && p.c[1] < 0) {
+      // Not shown convex all the way to the horizon (a long window, over which the relative motion turns):
+      // convex up to twice its Taylor quadratic's root is enough, where the first root lies before that.
+      const Scalar discriminant = p.c[1] * p.c[1] - 4 * p.c[0] * p.c[2];
+      if (discriminant >= 0 && p.c[2] > 0) {
+        const Scalar near_end = 4 * p.c[0] / (-p.c[1] + std::sqrt(discriminant));
+        if (near_end < horizon && detail::curvature_on(p, near_end) > 0) {
+          convex_end = near_end;
+          curvature = 1;
+        }
+      }
+    }
     if (curvature > 0 && p.c[1] < 0) {
-      if (const auto bracket = detail::convex_first_root(p, slope, horizon)) {
+      if (const auto bracket = detail::convex_first_root(p, slope, convex_end)) {
         // Where p's rounding over its slope at the bracket's upper end spans more than 8 values of the
         // type (bodies far apart, whose polynomial's terms cancel at the root), the type's search could
         // not place the root closer than that: it is placed exactly from the bracket at once.
