@@ -155,7 +155,7 @@ class Shot {
     release_partner(index, index);
     const BallOnCloth<double> now = at(index, now_);
     const SpinningBall<double> struck = checked::strike(shot::spinning(now, physics_.mass), cue);
-    settle(index);
+    settle(index, now);
     Entry& e = balls_[index];
     const Motion from = motion(e.state, physics_.cloth);
     shot::take(e.state, struck);
@@ -300,10 +300,12 @@ class Shot {
   }
   // Ball i's state now becomes its reference state.
   void settle(std::size_t i) {
-    Entry& e = balls_[i];
-    if (e.pocketed) return;
-    e.state = at(i, now_);
-    e.since = now_;
+    if (!balls_[i].pocketed) settle(i, at(i, now_));
+  }
+  // Ball i's state now, `now` (at(i, now_), already computed), becomes its reference state.
+  void settle(std::size_t i, const BallOnCloth<double>& now) {
+    balls_[i].state = now;
+    balls_[i].since = now_;
   }
   void keyframe(std::size_t i) {
     const Entry& e = balls_[i];
@@ -404,8 +406,8 @@ class Shot {
         const BallOnCloth<double> a = at(i, now_), b = at(p.other, now_);
         const Eigen::Vector3d n = shot::towards(a, b);
         const auto after = shot::ball_ball(a, b, n, physics_);
-        settle(i);
-        settle(p.other);
+        settle(i, a);
+        settle(p.other, b);
         if (!after) {
           // No longer approaching (rounding at a graze): nothing changes, but the two are predicted again
           // from here, with each other only after now.
@@ -427,7 +429,7 @@ class Shot {
                                       ? shot::towards(cushions_[p.other])
                                       : shot::towards(jaws_[p.other], a.position);
         const std::optional<SpinningBall<double>> after = shot::ball_cushion(a, n, table_, physics_);
-        settle(i);
+        settle(i, a);
         if (!after) {
           changed(i, balls_.size(), {p.kind, p.other});
           return;
