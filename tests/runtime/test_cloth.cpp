@@ -222,3 +222,30 @@ TEST_CASE("cloth: a huge sliding friction beside a spin that stops at once still
   CHECK(billiards::motion(rolling, cloth) == billiards::Motion::rolling);
   CHECK(energy(rolling) <= energy(ball));
 }
+
+TEMPLATE_TEST_CASE("cloth: the rolling test by bounds agrees with the rolling tolerance at its edge",
+                   "[runtime][cloth]", float, double) {
+  using S = TestType;
+  // Balls with velocity and spin in every direction and over many decades (one component dominant, or
+  // both alike), and slip speeds around the tolerance: a few ulps either side of it and up to a fifth
+  // away; detail::slips (the bounds first) against its definition, slip > rolling_tolerance.
+  std::mt19937_64 random(17);
+  std::uniform_real_distribution<double> unit(0, 1);
+  int cases = 0;
+  for (int k = 0; k < 20000; ++k) {
+    billiards::BallOnCloth<S> ball;
+    ball.radius = S(0.028575);
+    const double scale = std::pow(10.0, -30 + 60 * unit(random)), lean = unit(random) < 0.3 ? 1e-9 : 1.0;
+    ball.velocity = V3<S>(S(scale * (unit(random) - 0.5)), S(scale * lean * (unit(random) - 0.5)), 0);
+    ball.angular_velocity =
+        V3<S>(S(scale * 40 * lean * (unit(random) - 0.5)), S(scale * 40 * (unit(random) - 0.5)), S(unit(random)));
+    const S tolerance = billiards::rolling_tolerance(ball);
+    if (!(tolerance > 0) || !std::isfinite(tolerance)) continue;
+    S slip = unit(random) < 0.5 ? S(tolerance * (1 + 0.4 * (unit(random) - 0.5))) : tolerance;
+    for (int step = static_cast<int>(unit(random) * 9) - 4; step != 0; step += step > 0 ? -1 : 1)
+      slip = std::nextafter(slip, step > 0 ? S(1e30) : S(0));
+    ++cases;
+    CHECK(billiards::detail::slips(ball, slip) == (slip > tolerance));
+  }
+  CHECK(cases > 15000);
+}

@@ -88,10 +88,30 @@ template <typename Scalar>
   return {slip, horizontal_length(slip.x(), slip.y())};
 }
 
+/// Whether `slip_speed` exceeds rolling_tolerance(ball), decided without its two lengths where bounds
+/// of them decide it: each length lies between its largest component's size and the sum of its
+/// components' sizes, and the factors 17 and 15 (for 16) leave room for those bounds' rounding, where
+/// the bounds are normal numbers far from overflow (elsewhere the lengths decide).
+template <typename Scalar>
+[[nodiscard]] bool slips(const BallOnCloth<Scalar>& ball, Scalar slip_speed) noexcept {
+  using std::fabs;
+  const Scalar vx = fabs(ball.velocity.x()), vy = fabs(ball.velocity.y());
+  const Scalar wx = fabs(ball.angular_velocity.x()), wy = fabs(ball.angular_velocity.y());
+  constexpr Scalar epsilon = std::numeric_limits<Scalar>::epsilon();
+  const Scalar least = std::max(vx, vy) + ball.radius * std::max(wx, wy);
+  const Scalar most = (vx + vy) + ball.radius * (wx + wy);
+  if (least >= Scalar(64) * std::numeric_limits<Scalar>::min() / epsilon &&
+      most <= std::numeric_limits<Scalar>::max() / Scalar(64)) {
+    if (slip_speed > Scalar(17) * epsilon * most) return true;
+    if (slip_speed <= Scalar(15) * epsilon * least) return false;
+  }
+  return slip_speed > rolling_tolerance(ball);
+}
+
 /// motion() given the ball's slip.
 template <typename Scalar>
 [[nodiscard]] Motion motion_with(const BallOnCloth<Scalar>& ball, const Slip<Scalar>& slip) noexcept {
-  if (slip.speed > rolling_tolerance(ball)) return Motion::sliding;
+  if (slips(ball, slip.speed)) return Motion::sliding;
   if (ball.velocity.x() != 0 || ball.velocity.y() != 0) return Motion::rolling;
   if (ball.angular_velocity.z() != 0) return Motion::spinning;
   return Motion::stationary;
