@@ -68,8 +68,10 @@ TEST_CASE("Detection: the next contact of a path, worked by hand", "[simulation]
     CHECK(box.near({0.55, 0}, 0.06));
     CHECK_FALSE(box.near({0.7, 0}, 0.06));
     const shot::Box near = shot::path_box({{0.5 + 1.9 * R, 0}, {0, 0}, {0, 0}}, 2, false, R);
-    CHECK(box.meets(near, 2 * R));
-    CHECK_FALSE(box.meets(shot::path_box({{0.6 + 2 * R + 0.01, 0}, {0, 0}, {0, 0}}, 2, false, R), 2 * R));
+    CHECK(box.widened(2 * R).overlaps(near));
+    CHECK_FALSE(box.widened(2 * R).overlaps(shot::path_box({{0.6 + 2 * R + 0.01, 0}, {0, 0}, {0, 0}}, 2, false, R)));
+    CHECK(box.widened(2 * R).overlaps(shot::path_box({{0.3, 1.9 * R}, {0, 0}, {0, 0}}, 2, false, R)));
+    CHECK_FALSE(box.widened(2 * R).overlaps(shot::path_box({{0.3, -2.1 * R}, {0, 0}, {0, 0}}, 2, false, R)));
   }
   SECTION("bodies overlapping within the tolerance count as touching; deeper ones do not") {
     std::vector<double> p = {-0.5 * R * overlap_tolerance, 1, 1};

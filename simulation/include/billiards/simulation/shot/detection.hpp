@@ -44,15 +44,19 @@ struct Box {
   double x_high = 0;  ///< the greatest x (m)
   double y_low = 0;   ///< the least y (m)
   double y_high = 0;  ///< the greatest y (m)
-  /// Whether `centre` lies within `reach` of the box.
+  /// Whether `centre` lies within `reach` of the box (four comparisons without a branch between them).
   [[nodiscard]] bool near(const Eigen::Vector2d& centre, double reach) const {
-    return centre.x() >= x_low - reach && centre.x() <= x_high + reach && centre.y() >= y_low - reach &&
-           centre.y() <= y_high + reach;
+    return (centre.x() >= x_low - reach) & (centre.x() <= x_high + reach) & (centre.y() >= y_low - reach) &
+           (centre.y() <= y_high + reach);
   }
-  /// Whether a point of this box and a point of `other` may lie within `reach` of each other.
-  [[nodiscard]] bool meets(const Box& other, double reach) const {
-    return other.x_low - reach <= x_high && x_low <= other.x_high + reach && other.y_low - reach <= y_high &&
-           y_low <= other.y_high + reach;
+  /// The box grown by `reach` on every side.
+  [[nodiscard]] Box widened(double reach) const {
+    return {x_low - reach, x_high + reach, y_low - reach, y_high + reach};
+  }
+  /// Whether this box and `other` share a point (for a box widened by a reach: whether a point of each
+  /// may lie within the reach of each other), its four comparisons without a branch between them.
+  [[nodiscard]] bool overlaps(const Box& other) const {
+    return (other.x_low <= x_high) & (x_low <= other.x_high) & (other.y_low <= y_high) & (y_low <= other.y_high);
   }
 };
 

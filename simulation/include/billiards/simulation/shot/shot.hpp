@@ -344,13 +344,17 @@ class Shot {
     const double R = physics_.radius;
     const Eigen::Vector2d r(e.state.position.x(), e.state.position.y()),
         v(e.state.velocity.x(), e.state.velocity.y());
+    const std::size_t partner = e.phase.pressed == shot::Pressed::ball ? e.piece.partner : i;  // moving as one
+    const shot::Box reach = e.box.widened(2 * R);
     for (std::size_t j = first_other; j < balls_.size(); ++j) {
       const Entry& o = balls_[j];
-      if (j == i || j == skip || o.pocketed || (!e.phase.moving && !o.phase.moving)) continue;
-      if (e.phase.pressed == shot::Pressed::ball && e.piece.partner == j) continue;  // moving as one
       const double end = std::min(e.reach_end, o.reach_end);
-      if (!(end >= now_)) continue;  // the other's box ends before now: it changes at once
-      if (!e.box.meets(o.box, 2 * R)) continue;
+      // One branch for the tests, most of which fail: the boxes, then the other ball in play, moving
+      // where this one is not, predicted until now at least (else it changes at once), not this one,
+      // the one skipped or the one it moves with.
+      if (!(reach.overlaps(o.box) & !o.pocketed & (e.phase.moving | o.phase.moving) & (end >= now_) & (j != i) &
+            (j != skip) & (j != partner)))
+        continue;
       const auto [position, velocity] = shot::centre_and_velocity(o.state, o.phase, now_ - o.since);
       const shot::Path relative{position - r, velocity - v, o.phase.acceleration - e.phase.acceleration};
       const double pair_horizon = std::isfinite(end) ? end - now_ : std::numeric_limits<double>::max();
