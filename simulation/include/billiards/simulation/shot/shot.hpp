@@ -492,8 +492,8 @@ inline void Shot::predict(std::size_t i, std::size_t first_other, std::size_t sk
                         detail::ExcludedContact excluded) {
   Entry& e = balls_[i];
   if (e.pocketed) return;
-  if (std::isfinite(e.phase.duration)) push(now_ + e.phase.duration, ShotEvent::Kind::transition, i, i);
   double horizon = remaining(i);
+  double first_own = std::numeric_limits<double>::infinity();  // its earliest cushion, jaw or pocket
   const double R = physics_.radius;
   const shot::Path me{{e.state.position.x(), e.state.position.y()},
                       {e.state.velocity.x(), e.state.velocity.y()},
@@ -503,6 +503,7 @@ inline void Shot::predict(std::size_t i, std::size_t first_other, std::size_t sk
     if (t == std::numeric_limits<double>::infinity() || excluded(kind, k, t)) return;
     push(now_ + t, kind, i, k);
     horizon = std::min(horizon, t);
+    first_own = std::min(first_own, now_ + t);
   };
   if (e.phase.moving) {
     // A cushion whose line the centre's box over the whole horizon keeps farther than R from is passed
@@ -522,6 +523,10 @@ inline void Shot::predict(std::size_t i, std::size_t first_other, std::size_t sk
       found(shot::pocket_entry(me, pockets_[k], horizon), ShotEvent::Kind::pocket, k);
     }
   }
+  // The phase's end, unless a cushion, jaw or pocket comes first (or at the same time, which orders
+  // before a transition): the ball changes there, and a transition queued after it would go stale.
+  if (std::isfinite(e.phase.duration) && !(first_own <= now_ + e.phase.duration))
+    push(now_ + e.phase.duration, ShotEvent::Kind::transition, i, i);
   e.box = shot::path_box(me, horizon, e.phase.moving, R);
   e.reach_end = e.phase.moving ? now_ + horizon : std::numeric_limits<double>::infinity();
   predict_pairs(i, first_other, skip, excluded);
