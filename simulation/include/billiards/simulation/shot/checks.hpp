@@ -100,9 +100,15 @@ inline void validate(const std::vector<PoolBall>& balls, const PoolTable& table,
   for (std::size_t i = 0; i < balls.size(); ++i) {
     for (std::size_t j = i + 1; j < balls.size(); ++j) {
       if (balls[i].pocketed || balls[j].pocketed) continue;
-      const double d = std::hypot(balls[i].position.x() - balls[j].position.x(),
-                                  balls[i].position.y() - balls[j].position.y());
-      if (d < 2 * R * (1 - overlap_tolerance))
+      // The squared distance first (the centres lie on the cloth, so the squares neither overflow nor,
+      // short of an overlap, underflow), a little above the limit's square for its rounding; the
+      // distance itself only where that leaves an overlap possible.
+      const double dx = balls[i].position.x() - balls[j].position.x(),
+                   dy = balls[i].position.y() - balls[j].position.y();
+      const double limit = 2 * R * (1 - overlap_tolerance);
+      if (!(dx * dx + dy * dy < limit * limit * (1 + 1e-12))) continue;
+      const double d = std::hypot(dx, dy);
+      if (d < limit)
         throw std::invalid_argument("balls " + std::to_string(i) + " and " + std::to_string(j) +
                                     " overlap: their centres are " + shortest(d) +
                                     " m apart, expected at least " + shortest(2 * R) + " (two radii)");

@@ -46,8 +46,8 @@ struct Box {
   double y_high = 0;  ///< the greatest y (m)
   /// Whether `centre` lies within `reach` of the box (four comparisons without a branch between them).
   [[nodiscard]] bool near(const Eigen::Vector2d& centre, double reach) const {
-    return (centre.x() >= x_low - reach) & (centre.x() <= x_high + reach) & (centre.y() >= y_low - reach) &
-           (centre.y() <= y_high + reach);
+    const double x = centre.x(), y = centre.y();
+    return (x >= x_low - reach) & (x <= x_high + reach) & (y >= y_low - reach) & (y <= y_high + reach);
   }
   /// The box grown by `reach` on every side.
   [[nodiscard]] Box widened(double reach) const {

@@ -505,15 +505,22 @@ inline void Shot::predict(std::size_t i, std::size_t first_other, std::size_t sk
     horizon = std::min(horizon, t);
     first_own = std::min(first_own, now_ + t);
   };
+  // The box of the centre's path up to the horizon, made again where a contact brings the horizon in.
+  e.box = shot::path_box(me, horizon, e.phase.moving, R);
+  double boxed = horizon;
+  const auto box_to_horizon = [&] {
+    if (horizon != boxed) e.box = shot::path_box(me, horizon, e.phase.moving, R);
+    boxed = horizon;
+  };
   if (e.phase.moving) {
     // A cushion whose line the centre's box over the whole horizon keeps farther than R from is passed
     // over: its polynomial stays above 0 there.
-    const shot::Box reach = shot::path_box(me, horizon, true, R);
+    const shot::Box reach = e.box;
     for (std::size_t k = 0; k < cushions_.size(); ++k) {
       if (shot::beyond_reach(reach, cushions_[k], R)) continue;
       found(shot::cushion_contact(me, cushions_[k], R, horizon), ShotEvent::Kind::cushion, k);
     }
-    e.box = shot::path_box(me, horizon, true, R);
+    box_to_horizon();
     for (std::size_t k = 0; k < jaws_.size(); ++k) {
       if (!e.box.near(jaws_[k].centre, R + jaws_[k].radius)) continue;
       found(shot::jaw_contact(me, jaws_[k], R, horizon), ShotEvent::Kind::jaw, k);
@@ -527,7 +534,7 @@ inline void Shot::predict(std::size_t i, std::size_t first_other, std::size_t sk
   // before a transition): the ball changes there, and a transition queued after it would go stale.
   if (std::isfinite(e.phase.duration) && !(first_own <= now_ + e.phase.duration))
     push(now_ + e.phase.duration, ShotEvent::Kind::transition, i, i);
-  e.box = shot::path_box(me, horizon, e.phase.moving, R);
+  box_to_horizon();
   e.reach_end = e.phase.moving ? now_ + horizon : std::numeric_limits<double>::infinity();
   predict_pairs(i, first_other, skip, excluded);
 }
