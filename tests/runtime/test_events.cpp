@@ -259,3 +259,17 @@ TEMPLATE_TEST_CASE("sign_change: a quadratic's root closed on in closed form kee
   }
   CHECK(checked > 1500);
 }
+
+TEST_CASE("earliest_contact: a quadratic whose rounding band spans many values of the type ends at once",
+          "[events]") {
+  // p = 2 d − 1.35e5 t² with d the smallest subnormal (found by the fuzzer): its root, near 2^-546, lies
+  // in a closed bracket 2^22 times as wide as itself, too wide for steps of one value from the closed
+  // form; the type's search finishes it, within a few ulps of the exact root.
+  const double d = std::numeric_limits<double>::denorm_min();
+  const std::array<double, 3> c{2 * d, 0, -0x1.4b4b4b4b4b4b5p+17};
+  const std::optional<double> t = billiards::earliest_contact(c, 1.0);
+  REQUIRE(t);
+  const long double root = std::sqrt(2.0L * d / 0x1.4b4b4b4b4b4b5p+17L);
+  CHECK(*t > 0);
+  CHECK(std::fabs(*t - root) <= 4 * std::numeric_limits<double>::epsilon() * root);
+}

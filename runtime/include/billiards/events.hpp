@@ -173,16 +173,23 @@ template <typename Scalar>
       const Scalar first = q / c2, second = c0 / q;
       const Scalar root = first > a && first < b ? first : second;
       if (close_on(root, std::fabs(evaluate(slope, root)))) {
-        // Closed on it (within a few ulps of the exact root): the value of the type where p changes sign
-        // as evaluated, found by steps of one value from the root within the closed bracket.
+        // Closed on it (within a few ulps of the exact root, as a rule): the value of the type where p
+        // changes sign as evaluated, found by at most 32 steps of one value from the root within the
+        // closed bracket; where that many do not reach it (a bracket many values wide, where p is
+        // nearly flat), the search below goes on from the closed bracket.
         Scalar t = root;
-        if (evaluate(p, t) > 0) {
-          for (Scalar up = next_up(t); up < b && evaluate(p, up) > 0; up = next_up(up)) t = up;
-        } else {
-          do t = std::nextafter(t, a);
-          while (t > a && !(evaluate(p, t) > 0));
+        const bool above = evaluate(p, t) > 0;
+        for (int step = 0; step < 32; ++step) {
+          if (above) {
+            const Scalar up = next_up(t);
+            if (!(up < b && evaluate(p, up) > 0)) return t;
+            t = up;
+          } else {
+            t = std::nextafter(t, a);
+            if (!(t > a)) break;
+            if (evaluate(p, t) > 0) return t;
+          }
         }
-        return t;
       }
     }
   }
