@@ -3,9 +3,13 @@
 # apt-get line and stops.
 
 # billiards-derive runs gappa to prove the fast paths' domains. The manual (docs target) needs doxygen,
-# python3 and libjs-mathjax; its browser test, chromium; the audit's JSON Schema test, python3-jsonschema.
+# python3 and libjs-mathjax; its browser test, chromium; the audit's JSON Schema test, python3-jsonschema. The
+# Python package: pybind11-dev, python3-dev and python3-numpy to build it; python3-pytest and
+# python3-distributed (Dask) for its tests; python3-pip and python3-venv for its installation test.
 billiards_packages=(cmake make g++ pkg-config clang-format libginac-dev gappa libeigen3-dev catch2 libbenchmark-dev
-                    nlohmann-json3-dev libcli11-dev doxygen libjs-mathjax python3 python3-jsonschema chromium)
+                    nlohmann-json3-dev libcli11-dev doxygen libjs-mathjax python3 python3-jsonschema chromium
+                    pybind11-dev python3-dev python3-numpy python3-pytest python3-distributed python3-pip
+                    python3-venv)
 
 billiards_require_packages() {
   local missing=() package

@@ -1,0 +1,25 @@
+"""billiards: billiard-ball physics derived and checked with a computer algebra system, and event-driven
+engines on it, from Python.
+
+- The runtime's calls on numpy arrays (``collide``, ``collide_with_friction``, ``strike``,
+  ``collide_with_cushion``, ``earliest_contact``, ``time_of_impact``): one case or a batch, broadcast,
+  in float64 or float32, each case the C++ call's result bit for bit.
+- The shot engine: ``pool_table``, ``PoolPhysics``, ``rack``, ``scatter``, ``balls``, ``Cue``, ``Shot``;
+  layouts and events as numpy structured arrays (``ball_dtype``, ``event_dtype``).
+- ``play_shots``: a batch of shots on every core; ``billiards.distributed``: the same on a Dask cluster.
+
+Units: metres, seconds, kilograms, radians.
+"""
+
+from ._billiards import __version__
+from ._batch import ShotResults, available_cores, play_shots
+from ._runtime import collide, collide_with_cushion, collide_with_friction, earliest_contact, strike, time_of_impact
+from ._shot import (EVENT_KINDS, MOTIONS, BrokenInvariant, Cloth, Cue, EventLimitReached, PoolPhysics, PoolTable,
+                    Shot, ShotOptions, ball_dtype, balls, cue_dtype, cues, event_dtype, pool_table, rack, scatter)
+
+__all__ = [
+    "__version__", "collide", "collide_with_friction", "strike", "collide_with_cushion", "earliest_contact",
+    "time_of_impact", "Cloth", "PoolPhysics", "PoolTable", "ShotOptions", "pool_table", "rack", "scatter", "balls",
+    "Cue", "cues", "Shot", "ShotResults", "play_shots", "available_cores", "ball_dtype", "event_dtype", "cue_dtype",
+    "EVENT_KINDS", "MOTIONS", "EventLimitReached", "BrokenInvariant",
+]

@@ -1,0 +1,66 @@
+"""Builds billiards._billiards, the compiled half of the package, from the project's headers.
+
+The version is the CMake project's (../CMakeLists.txt); the headers are the runtime's, the simulation
+library's, the io library's and the checked-in generated kernels, beside this folder in the source tree.
+"""
+
+import os
+import re
+import sys
+from pathlib import Path
+
+from setuptools import Extension, setup
+from setuptools.command.build_ext import build_ext
+
+here = Path(__file__).resolve().parent
+root = here.parent
+version = re.search(r"project\(\s*billiards\s+VERSION\s+([0-9.]+)", (root / "CMakeLists.txt").read_text()).group(1)
+
+
+def version_header(folder: Path) -> Path:
+    """billiards/version.hpp as CMake configures it, written under `folder`."""
+    major, minor, patch = version.split(".")
+    target = folder / "billiards" / "version.hpp"
+    target.parent.mkdir(parents=True, exist_ok=True)
+    text = (root / "runtime" / "version.hpp.in").read_text()
+    for name, value in (("PROJECT_VERSION_MAJOR", major), ("PROJECT_VERSION_MINOR", minor),
+                        ("PROJECT_VERSION_PATCH", patch), ("PROJECT_VERSION", version)):
+        text = text.replace(f"@{name}@", value)
+    if not target.exists() or target.read_text() != text:
+        target.write_text(text)
+    return folder
+
+
+class BuildWithVersion(build_ext):
+    def build_extensions(self):
+        generated = version_header(Path(self.build_temp) / "version")
+        for extension in self.extensions:
+            extension.include_dirs.append(str(generated))
+        super().build_extensions()
+
+
+def pybind11_include() -> list:
+    try:
+        import pybind11  # Debian's python3-pybind11, where installed
+        return [pybind11.get_include()]
+    except ImportError:
+        return []  # pybind11-dev's headers are in /usr/include
+
+
+if not (root / "runtime" / "include").is_dir():
+    sys.exit("billiards: build the package from the project's source tree (pip install ./python): "
+             f"{root / 'runtime' / 'include'} is missing")
+
+sources = [str(Path("src") / name) for name in ("module.cpp", "runtime.cpp", "engines.cpp", "batch.cpp")]
+extension = Extension(
+    "billiards._billiards",
+    sources=sources,
+    include_dirs=[str(root / "runtime" / "include"), str(root / "simulation" / "include"), str(root / "io" / "include"),
+                  str(root / "generated"), "/usr/include/eigen3"] + pybind11_include(),
+    language="c++",
+    extra_compile_args=["-std=c++20", "-O2", "-fvisibility=hidden", "-DNDEBUG"],
+    extra_link_args=["-pthread"],
+)
+
+os.chdir(here)
+setup(version=version, ext_modules=[extension], cmdclass={"build_ext": BuildWithVersion})

@@ -1,0 +1,262 @@
+// The shot engine's vocabulary for Python: the table, the physics, the options (plain classes with
+// their C++ defaults, picklable for Dask), the presets and layouts, and the Shot itself. The pure-Python
+// layer (billiards/_shot.py) wraps Shot with numpy structured arrays and docstrings.
+#include "shots.hpp"
+
+#include <billiards/simulation/shot.hpp>
+
+#include <pybind11/stl.h>
+
+#include <mutex>
+#include <string>
+
+namespace billiards::python {
+namespace {
+
+using simulation::PoolPhysics;
+using simulation::PoolTable;
+using simulation::ShotOptions;
+
+// A field-by-field __repr__ and pickling for the plain classes.
+template <typename Class, typename... Fields>
+void plain(py::class_<Class>& c, const char* name, std::pair<const char*, Fields Class::*>... fields) {
+  (c.def_readwrite(fields.first, fields.second), ...);
+  c.def("__repr__", [name, fields...](const Class& o) {
+    std::string text = std::string(name) + "(";
+    bool first = true;
+    ((text += (first ? "" : ", ") + std::string(fields.first) + "=" +
+              py::repr(py::cast(o.*(fields.second))).template cast<std::string>(),
+      first = false),
+     ...);
+    return text + ")";
+  });
+  c.def(py::pickle([fields...](const Class& o) { return py::make_tuple(py::cast(o.*(fields.second))...); },
+                   [fields...](const py::tuple& t) {
+                     if (t.size() != sizeof...(Fields))
+                       throw std::runtime_error("a pickled object of another version");
+                     Class o;
+                     std::size_t k = 0;
+                     ((o.*(fields.second) = t[k++].template cast<Fields>()), ...);
+                     return o;
+                   }));
+  c.def("__eq__", [fields...](const Class& a, const Class& b) {
+    return ((a.*(fields.second) == b.*(fields.second)) && ...);
+  });
+}
+
+void bind_settings(py::module_& m) {
+  py::class_<Cloth<double>> cloth(m, "Cloth");
+  cloth.def(py::init([](double sliding, double rolling, double spinning, double gravity) {
+              return Cloth<double>{sliding, rolling, spinning, gravity};
+            }),
+            py::arg("sliding_friction") = 0.2, py::arg("rolling_friction") = 0.01,
+            py::arg("spinning_friction") = 0.0127, py::arg("gravity") = 9.81);
+  plain(cloth, "Cloth", std::pair{"sliding_friction", &Cloth<double>::sliding_friction},
+        std::pair{"rolling_friction", &Cloth<double>::rolling_friction},
+        std::pair{"spinning_friction", &Cloth<double>::spinning_friction},
+        std::pair{"gravity", &Cloth<double>::gravity});
+
+  py::class_<PoolPhysics> physics(m, "PoolPhysics");
+  const PoolPhysics d;
+  physics.def(py::init([](double radius, double mass, const Cloth<double>& cloth, double ball_restitution,
+                          double ball_friction, double cushion_restitution, double cushion_friction) {
+                return PoolPhysics{radius,           mass,          cloth,
+                                   ball_restitution, ball_friction, cushion_restitution,
+                                   cushion_friction};
+              }),
+              py::arg("radius") = d.radius, py::arg("mass") = d.mass, py::arg("cloth") = d.cloth,
+              py::arg("ball_restitution") = d.ball_restitution, py::arg("ball_friction") = d.ball_friction,
+              py::arg("cushion_restitution") = d.cushion_restitution,
+              py::arg("cushion_friction") = d.cushion_friction);
+  plain(physics, "PoolPhysics", std::pair{"radius", &PoolPhysics::radius},
+        std::pair{"mass", &PoolPhysics::mass}, std::pair{"ball_restitution", &PoolPhysics::ball_restitution},
+        std::pair{"ball_friction", &PoolPhysics::ball_friction},
+        std::pair{"cushion_restitution", &PoolPhysics::cushion_restitution},
+        std::pair{"cushion_friction", &PoolPhysics::cushion_friction});
+  // The cloth apart: a nested class is copied in and out (physics.cloth.gravity = … changes a copy).
+  physics.def_readwrite("cloth", &PoolPhysics::cloth);
+}
+
+void bind_table(py::module_& m) {
+  py::class_<PoolTable> table(m, "PoolTable");
+  const PoolTable d;
+  table.def(
+      py::init([](double length, double width, double corner_mouth, double side_mouth, double nose_height,
+                  double corner_jaw_radius, double side_jaw_radius, double corner_pocket_radius,
+                  double corner_pocket_depth, double side_pocket_radius, double side_pocket_depth) {
+        return PoolTable{length,
+                         width,
+                         corner_mouth,
+                         side_mouth,
+                         nose_height,
+                         corner_jaw_radius,
+                         side_jaw_radius,
+                         corner_pocket_radius,
+                         corner_pocket_depth,
+                         side_pocket_radius,
+                         side_pocket_depth};
+      }),
+      py::arg("length") = d.length, py::arg("width") = d.width, py::arg("corner_mouth") = d.corner_mouth,
+      py::arg("side_mouth") = d.side_mouth, py::arg("nose_height") = d.nose_height,
+      py::arg("corner_jaw_radius") = d.corner_jaw_radius, py::arg("side_jaw_radius") = d.side_jaw_radius,
+      py::arg("corner_pocket_radius") = d.corner_pocket_radius,
+      py::arg("corner_pocket_depth") = d.corner_pocket_depth,
+      py::arg("side_pocket_radius") = d.side_pocket_radius,
+      py::arg("side_pocket_depth") = d.side_pocket_depth);
+  plain(table, "PoolTable", std::pair{"length", &PoolTable::length}, std::pair{"width", &PoolTable::width},
+        std::pair{"corner_mouth", &PoolTable::corner_mouth}, std::pair{"side_mouth", &PoolTable::side_mouth},
+        std::pair{"nose_height", &PoolTable::nose_height},
+        std::pair{"corner_jaw_radius", &PoolTable::corner_jaw_radius},
+        std::pair{"side_jaw_radius", &PoolTable::side_jaw_radius},
+        std::pair{"corner_pocket_radius", &PoolTable::corner_pocket_radius},
+        std::pair{"corner_pocket_depth", &PoolTable::corner_pocket_depth},
+        std::pair{"side_pocket_radius", &PoolTable::side_pocket_radius},
+        std::pair{"side_pocket_depth", &PoolTable::side_pocket_depth});
+  table.def("foot_spot", [](const PoolTable& t) {
+    const auto s = t.foot_spot();
+    return py::make_tuple(s.x(), s.y());
+  });
+  table.def("head_spot", [](const PoolTable& t) {
+    const auto s = t.head_spot();
+    return py::make_tuple(s.x(), s.y());
+  });
+  m.def(
+      "pool_table", [](const std::string& size) { return simulation::pool_table(size); }, py::arg("size"));
+
+  py::class_<ShotOptions> options(m, "ShotOptions");
+  options.def(py::init([](std::uint64_t event_limit, double pressing_speed, bool check_invariants) {
+                ShotOptions o;
+                o.event_limit = event_limit;
+                o.pressing_speed = pressing_speed;
+                o.check_invariants = check_invariants;
+                return o;
+              }),
+              py::arg("event_limit") = ShotOptions{}.event_limit,
+              py::arg("pressing_speed") = ShotOptions{}.pressing_speed, py::arg("check_invariants") = false);
+  plain(options, "ShotOptions", std::pair{"event_limit", &ShotOptions::event_limit},
+        std::pair{"pressing_speed", &ShotOptions::pressing_speed},
+        std::pair{"check_invariants", &ShotOptions::check_invariants});
+}
+
+void bind_layouts(py::module_& m) {
+  m.def(
+      "rack",
+      [](const PoolTable& table, const PoolPhysics& physics, const std::string& kind, double jitter,
+         std::uint64_t seed) {
+        simulation::Rack rack;
+        if (kind == "9ball")
+          rack = simulation::Rack::nine_ball;
+        else if (kind == "8ball")
+          rack = simulation::Rack::eight_ball;
+        else
+          throw py::value_error("rack: kind is '" + kind + "', expected '8ball' or '9ball'");
+        return ball_columns(simulation::rack(table, physics, rack, jitter, seed));
+      },
+      py::arg("table"), py::arg("physics"), py::arg("kind"), py::arg("jitter"), py::arg("seed"));
+  m.def(
+      "scatter",
+      [](const PoolTable& table, const PoolPhysics& physics, std::size_t count, std::uint64_t seed) {
+        return ball_columns(simulation::scatter(table, physics, count, seed));
+      },
+      py::arg("table"), py::arg("physics"), py::arg("count"), py::arg("seed"));
+}
+
+// simulation::Shot behind a mutex: the runs release the GIL, and one Shot is played by one thread at a
+// time.
+class PyShot {
+ public:
+  PyShot(const PoolTable& table, const PoolPhysics& physics, const Array<double>& position,
+         const Array<double>& velocity, const Array<double>& angular_velocity,
+         const py::array_t<bool, py::array::c_style>& pocketed, const ShotOptions& options)
+      : shot_(table, physics, balls_from(position, velocity, angular_velocity, pocketed), options) {}
+
+  // Runs `run` without the GIL, this Shot locked.
+  template <typename Run>
+  auto unlocked(Run&& run) {
+    py::gil_scoped_release released;
+    const std::lock_guard lock(mutex_);
+    return run();
+  }
+  void strike(std::size_t index, const Array<double>& cue) {
+    const std::lock_guard lock(mutex_);
+    shot_.strike(index, cue_from(rows_of(cue, "cue", 7)));
+  }
+  std::uint64_t play() {
+    return unlocked([&] { return shot_.play(); });
+  }
+  bool step() {
+    return unlocked([&] { return shot_.step().has_value(); });
+  }
+  std::uint64_t run_events(std::uint64_t count) {
+    return unlocked([&] { return shot_.run_events(count); });
+  }
+  std::uint64_t run_until(double until) {
+    return unlocked([&] { return shot_.run_until(until); });
+  }
+  // The centres at each of `times` (T,): (T, N, 3).
+  Array<double> positions_at(const Array<double>& times) {
+    const py::ssize_t count = times.ndim() == 1 ? times.shape(0) : -1;
+    const double* t = rows_of(times, "times", count);
+    const auto n = static_cast<py::ssize_t>(shot_.placed().size());
+    Array<double> out(std::vector<py::ssize_t>{count, n, 3});
+    double* o = out.mutable_data();
+    for (py::ssize_t k = 0; k < count; ++k) {
+      if (!(t[k] >= 0) || !std::isfinite(t[k]))
+        throw py::value_error("times[" + std::to_string(k) + "] is " + std::to_string(t[k]) +
+                              ", expected a finite time >= 0 (s)");
+    }
+    py::gil_scoped_release released;
+    for (py::ssize_t k = 0; k < count; ++k) {
+      const auto balls = shot_.balls_at(t[k]);
+      for (py::ssize_t i = 0; i < n; ++i)
+        Eigen::Map<Eigen::Vector3d>(o + 3 * (k * n + i)) = balls[static_cast<std::size_t>(i)].position;
+    }
+    return out;
+  }
+  const simulation::Shot& shot() const { return shot_; }
+
+ private:
+  simulation::Shot shot_;
+  std::mutex mutex_;
+};
+
+void bind_shot(py::module_& m) {
+  py::class_<PyShot>(m, "Shot")
+      .def(py::init<const PoolTable&, const PoolPhysics&, const Array<double>&, const Array<double>&,
+                    const Array<double>&, const py::array_t<bool, py::array::c_style>&, const ShotOptions&>())
+      .def("strike", &PyShot::strike)
+      .def("play", &PyShot::play)
+      .def("step", &PyShot::step)
+      .def("run_events", &PyShot::run_events)
+      .def("run_until", &PyShot::run_until)
+      .def("positions_at", &PyShot::positions_at)
+      .def("time", [](const PyShot& s) { return s.shot().time(); })
+      .def("energy", [](const PyShot& s) { return s.shot().energy(); })
+      .def("event_count", [](const PyShot& s) { return s.shot().event_count(); })
+      .def("balls", [](const PyShot& s) { return ball_columns(s.shot().balls()); })
+      .def("placed", [](const PyShot& s) { return ball_columns(s.shot().placed()); })
+      .def("balls_at",
+           [](const PyShot& s, double t) {
+             if (!(t >= 0) || !std::isfinite(t))
+               throw py::value_error("balls_at: t is " + std::to_string(t) +
+                                     ", expected a finite time >= 0 (s)");
+             return ball_columns(s.shot().balls_at(t));
+           })
+      .def(
+          "events",
+          [](const PyShot& s, std::size_t begin) { return event_columns(s.shot().events(), begin); },
+          py::arg("begin") = 0);
+}
+
+}  // namespace
+
+void bind_engines(py::module_& m) {
+  bind_settings(m);
+  bind_table(m);
+  bind_layouts(m);
+  bind_shot(m);
+  py::register_exception<simulation::EventLimitReached>(m, "EventLimitReached", PyExc_RuntimeError);
+  py::register_exception<simulation::BrokenInvariant>(m, "BrokenInvariant", PyExc_RuntimeError);
+}
+
+}  // namespace billiards::python
