@@ -51,7 +51,8 @@ if not (root / "runtime" / "include").is_dir():
     sys.exit("billiards: build the package from the project's source tree (pip install ./python): "
              f"{root / 'runtime' / 'include'} is missing")
 
-sources = [str(Path("src") / name) for name in ("module.cpp", "runtime.cpp", "engines.cpp", "batch.cpp")]
+sources = [str(Path("src") / name) for name in ("module.cpp", "runtime.cpp", "engines.cpp", "batch.cpp", "files.cpp",
+                                                                   "table_gas.cpp")]
 extension = Extension(
     "billiards._billiards",
     sources=sources,

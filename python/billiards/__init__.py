@@ -7,6 +7,8 @@ engines on it, from Python.
 - The shot engine: ``pool_table``, ``PoolPhysics``, ``rack``, ``scatter``, ``balls``, ``Cue``, ``Shot``;
   layouts and events as numpy structured arrays (``ball_dtype``, ``event_dtype``).
 - ``play_shots``: a batch of shots on every core; ``billiards.distributed``: the same on a Dask cluster.
+- ``Table`` and ``Gas``: the event-driven table and the hard-sphere gas, in the same vocabulary.
+- The file formats: events JSON, SVG, the animated page, CSV, shot setup files, gas snapshots.
 
 Units: metres, seconds, kilograms, radians.
 """
@@ -14,6 +16,9 @@ Units: metres, seconds, kilograms, radians.
 from ._billiards import __version__
 from ._batch import ShotResults, available_cores, play_shots
 from ._runtime import collide, collide_with_cushion, collide_with_friction, earliest_contact, strike, time_of_impact
+from ._files import (Snapshot, gas_from_snapshot, gas_snapshot, read_shot_setup, read_snapshot, shot_html,
+                     shot_json, shot_svg, trajectories_csv, write_shot_setup, write_snapshot, write_text)
+from ._table_gas import Gas, Table, gas_event_dtype, table_event_dtype
 from ._shot import (EVENT_KINDS, MOTIONS, BrokenInvariant, Cloth, Cue, EventLimitReached, PoolPhysics, PoolTable,
                     Shot, ShotOptions, ball_dtype, balls, cue_dtype, cues, event_dtype, pool_table, rack, scatter)
 
@@ -21,5 +26,7 @@ __all__ = [
     "__version__", "collide", "collide_with_friction", "strike", "collide_with_cushion", "earliest_contact",
     "time_of_impact", "Cloth", "PoolPhysics", "PoolTable", "ShotOptions", "pool_table", "rack", "scatter", "balls",
     "Cue", "cues", "Shot", "ShotResults", "play_shots", "available_cores", "ball_dtype", "event_dtype", "cue_dtype",
-    "EVENT_KINDS", "MOTIONS", "EventLimitReached", "BrokenInvariant",
+    "EVENT_KINDS", "MOTIONS", "EventLimitReached", "BrokenInvariant", "Table", "Gas", "table_event_dtype",
+    "gas_event_dtype", "Snapshot", "read_snapshot", "write_snapshot", "gas_snapshot", "gas_from_snapshot",
+    "read_shot_setup", "write_shot_setup", "shot_json", "shot_svg", "shot_html", "trajectories_csv", "write_text",
 ]

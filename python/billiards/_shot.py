@@ -19,7 +19,10 @@ PoolPhysics = _billiards.PoolPhysics
 PoolTable = _billiards.PoolTable
 ShotOptions = _billiards.ShotOptions
 EventLimitReached = _billiards.EventLimitReached
+EventLimitReached.__doc__ = "A run stopped at the engine's limit on events (ShotOptions.event_limit for a shot)."
 BrokenInvariant = _billiards.BrokenInvariant
+BrokenInvariant.__doc__ = ("An invariant broken at an event (two balls overlapping, a ball off the table, kinetic "
+                           "energy gained): a defect of the engine, reported with the time, the event and the balls.")
 
 #: A ball of a layout or of an event: its centre (m), velocity (m/s), angular velocity (rad/s) and
 #: whether it is out of play.
@@ -258,6 +261,7 @@ class Shot:
                                      np.ascontiguousarray(layout["angular_velocity"]),
                                      np.ascontiguousarray(layout["pocketed"]), options)
         self._count = len(layout)
+        self._table = table
 
     def strike(self, ball: int, cue: Cue) -> None:
         """Strikes ball ``ball`` (its index) with ``cue`` now; the strike is the shot's next event."""
@@ -325,9 +329,30 @@ class Shot:
         """The balls at the shot's time ``t`` ≥ 0 (s), on beyond the last event by their phases."""
         return _from_columns(self._shot.balls_at(float(t)))
 
+    def write_json(self, path) -> None:
+        """Writes the events as JSON (docs/events.schema.json), atomically."""
+        from ._files import shot_json, write_text
+        write_text(path, shot_json(self))
+
+    def write_svg(self, path, title: str = "billiards") -> None:
+        """Writes the shot as SVG (each ball's path), atomically."""
+        from ._files import shot_svg, write_text
+        write_text(path, shot_svg(self, title))
+
+    def write_html(self, path, title: str = "billiards", rate: float = 60.0) -> None:
+        """Writes a self-contained page that animates the shot, atomically."""
+        from ._files import shot_html, write_text
+        write_text(path, shot_html(self, title, rate))
+
+    def write_trajectories(self, path, rate: float = 100.0) -> None:
+        """Writes the centres sampled ``rate`` times a second as CSV, atomically."""
+        from ._files import trajectories_csv, write_text
+        write_text(path, trajectories_csv(self, rate))
+
     def trajectories(self, rate: float, until: float | None = None):
-        """The centres sampled ``rate`` times a second (Hz) from 0 to ``until`` (the shot's time now by
-        default). Returns (times (T,), positions (T, N, 3))."""
+        """The centres sampled ``rate`` times a second (Hz): at 0, 1/rate, … up to ``until`` (the shot's
+        time now by default) and at ``until`` itself, the samples of ``trajectories_csv``. Returns
+        (times (T,), positions (T, N, 3))."""
         if not (isinstance(rate, (int, float, np.floating, np.integer)) and 0 < rate < math.inf):
             raise ValueError(f"trajectories: rate is {rate!r}, expected a positive finite number of samples a second")
         end = self.time if until is None else float(until)
@@ -338,4 +363,6 @@ class Shot:
             raise ValueError(f"trajectories: {samples} samples asked (rate {rate} Hz over {end} s), expected at "
                              f"most 10**8")
         times = np.arange(samples, dtype=np.float64) / float(rate)
+        if times[-1] < end:
+            times = np.append(times, end)
         return times, self._shot.positions_at(times)

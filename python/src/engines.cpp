@@ -45,7 +45,10 @@ void plain(py::class_<Class>& c, const char* name, std::pair<const char*, Fields
 }
 
 void bind_settings(py::module_& m) {
-  py::class_<Cloth<double>> cloth(m, "Cloth");
+  py::class_<Cloth<double>> cloth(
+      m, "Cloth",
+      "The cloth: sliding_friction μ_s, rolling_friction μ_r, spinning_friction μ_sp "
+      "(dimensionless) and gravity g (m/s²); pooltool's defaults.");
   cloth.def(py::init([](double sliding, double rolling, double spinning, double gravity) {
               return Cloth<double>{sliding, rolling, spinning, gravity};
             }),
@@ -56,7 +59,11 @@ void bind_settings(py::module_& m) {
         std::pair{"spinning_friction", &Cloth<double>::spinning_friction},
         std::pair{"gravity", &Cloth<double>::gravity});
 
-  py::class_<PoolPhysics> physics(m, "PoolPhysics");
+  py::class_<PoolPhysics> physics(
+      m, "PoolPhysics",
+      "The physics of a shot: the balls' radius (m) and mass (kg), the cloth, and the "
+      "ball–ball and ball–cushion restitution and friction; the defaults and their "
+      "sources are in docs/shot.md.");
   const PoolPhysics d;
   physics.def(py::init([](double radius, double mass, const Cloth<double>& cloth, double ball_restitution,
                           double ball_friction, double cushion_restitution, double cushion_friction) {
@@ -78,7 +85,11 @@ void bind_settings(py::module_& m) {
 }
 
 void bind_table(py::module_& m) {
-  py::class_<PoolTable> table(m, "PoolTable");
+  py::class_<PoolTable> table(
+      m, "PoolTable",
+      "A pool table with six pockets (metres): the playing area between the cushions' "
+      "noses, the pocket mouths, the nose height, the jaws' radii and the pockets' capture "
+      "circles. pool_table(size) gives the presets.");
   const PoolTable d;
   table.def(
       py::init([](double length, double width, double corner_mouth, double side_mouth, double nose_height,
@@ -123,7 +134,10 @@ void bind_table(py::module_& m) {
   m.def(
       "pool_table", [](const std::string& size) { return simulation::pool_table(size); }, py::arg("size"));
 
-  py::class_<ShotOptions> options(m, "ShotOptions");
+  py::class_<ShotOptions> options(
+      m, "ShotOptions",
+      "How a shot plays: event_limit (EventLimitReached beyond it), pressing_speed "
+      "(m/s, the tolerance of sustained contact) and check_invariants (at every event).");
   options.def(py::init([](std::uint64_t event_limit, double pressing_speed, bool check_invariants) {
                 ShotOptions o;
                 o.event_limit = event_limit;
@@ -160,65 +174,6 @@ void bind_layouts(py::module_& m) {
       },
       py::arg("table"), py::arg("physics"), py::arg("count"), py::arg("seed"));
 }
-
-// simulation::Shot behind a mutex: the runs release the GIL, and one Shot is played by one thread at a
-// time.
-class PyShot {
- public:
-  PyShot(const PoolTable& table, const PoolPhysics& physics, const Array<double>& position,
-         const Array<double>& velocity, const Array<double>& angular_velocity,
-         const py::array_t<bool, py::array::c_style>& pocketed, const ShotOptions& options)
-      : shot_(table, physics, balls_from(position, velocity, angular_velocity, pocketed), options) {}
-
-  // Runs `run` without the GIL, this Shot locked.
-  template <typename Run>
-  auto unlocked(Run&& run) {
-    py::gil_scoped_release released;
-    const std::lock_guard lock(mutex_);
-    return run();
-  }
-  void strike(std::size_t index, const Array<double>& cue) {
-    const std::lock_guard lock(mutex_);
-    shot_.strike(index, cue_from(rows_of(cue, "cue", 7)));
-  }
-  std::uint64_t play() {
-    return unlocked([&] { return shot_.play(); });
-  }
-  bool step() {
-    return unlocked([&] { return shot_.step().has_value(); });
-  }
-  std::uint64_t run_events(std::uint64_t count) {
-    return unlocked([&] { return shot_.run_events(count); });
-  }
-  std::uint64_t run_until(double until) {
-    return unlocked([&] { return shot_.run_until(until); });
-  }
-  // The centres at each of `times` (T,): (T, N, 3).
-  Array<double> positions_at(const Array<double>& times) {
-    const py::ssize_t count = times.ndim() == 1 ? times.shape(0) : -1;
-    const double* t = rows_of(times, "times", count);
-    const auto n = static_cast<py::ssize_t>(shot_.placed().size());
-    Array<double> out(std::vector<py::ssize_t>{count, n, 3});
-    double* o = out.mutable_data();
-    for (py::ssize_t k = 0; k < count; ++k) {
-      if (!(t[k] >= 0) || !std::isfinite(t[k]))
-        throw py::value_error("times[" + std::to_string(k) + "] is " + std::to_string(t[k]) +
-                              ", expected a finite time >= 0 (s)");
-    }
-    py::gil_scoped_release released;
-    for (py::ssize_t k = 0; k < count; ++k) {
-      const auto balls = shot_.balls_at(t[k]);
-      for (py::ssize_t i = 0; i < n; ++i)
-        Eigen::Map<Eigen::Vector3d>(o + 3 * (k * n + i)) = balls[static_cast<std::size_t>(i)].position;
-    }
-    return out;
-  }
-  const simulation::Shot& shot() const { return shot_; }
-
- private:
-  simulation::Shot shot_;
-  std::mutex mutex_;
-};
 
 void bind_shot(py::module_& m) {
   py::class_<PyShot>(m, "Shot")

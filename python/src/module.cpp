@@ -1,6 +1,6 @@
 // billiards._billiards: the compiled half of the Python package (the runtime's calls over arrays, the
-// shot engine, the batch). Users import billiards, whose pure-Python layer documents and checks every
-// argument before it reaches this module.
+// engines, the batch, the file formats). Users import billiards, whose pure-Python layer documents and checks
+// every argument before it reaches this module.
 #include "arrays.hpp"
 
 #include <billiards/version.hpp>
@@ -11,4 +11,6 @@ PYBIND11_MODULE(_billiards, m) {
   billiards::python::bind_runtime(m);
   billiards::python::bind_engines(m);
   billiards::python::bind_batch(m);
+  billiards::python::bind_files(m);
+  billiards::python::bind_table_and_gas(m);
 }

@@ -8,12 +8,16 @@
 #include <billiards/simulation/shot.hpp>
 
 #include <cstdint>
+#include <mutex>
 #include <vector>
 
 namespace billiards::python {
 
 using simulation::PoolBall;
+using simulation::PoolPhysics;
+using simulation::PoolTable;
 using simulation::ShotEvent;
+using simulation::ShotOptions;
 
 /// The balls of a layout from their columns: positions, velocities and angular velocities (N, 3),
 /// pocketed (N,).
@@ -103,5 +107,64 @@ inline void store_state(const PoolBall& ball, double* position, double* velocity
 [[nodiscard]] inline Cue<double> cue_from(const double* c) {
   return {c[0], c[1], c[2], c[3], c[4], c[5], c[6]};
 }
+
+// simulation::Shot behind a mutex: the runs release the GIL, and one Shot is played by one thread at a
+// time.
+class PyShot {
+ public:
+  PyShot(const PoolTable& table, const PoolPhysics& physics, const Array<double>& position,
+         const Array<double>& velocity, const Array<double>& angular_velocity,
+         const py::array_t<bool, py::array::c_style>& pocketed, const ShotOptions& options)
+      : shot_(table, physics, balls_from(position, velocity, angular_velocity, pocketed), options) {}
+
+  // Runs `run` without the GIL, this Shot locked.
+  template <typename Run>
+  auto unlocked(Run&& run) {
+    py::gil_scoped_release released;
+    const std::lock_guard lock(mutex_);
+    return run();
+  }
+  void strike(std::size_t index, const Array<double>& cue) {
+    const std::lock_guard lock(mutex_);
+    shot_.strike(index, cue_from(rows_of(cue, "cue", 7)));
+  }
+  std::uint64_t play() {
+    return unlocked([&] { return shot_.play(); });
+  }
+  bool step() {
+    return unlocked([&] { return shot_.step().has_value(); });
+  }
+  std::uint64_t run_events(std::uint64_t count) {
+    return unlocked([&] { return shot_.run_events(count); });
+  }
+  std::uint64_t run_until(double until) {
+    return unlocked([&] { return shot_.run_until(until); });
+  }
+  // The centres at each of `times` (T,): (T, N, 3).
+  Array<double> positions_at(const Array<double>& times) {
+    const py::ssize_t count = times.ndim() == 1 ? times.shape(0) : -1;
+    const double* t = rows_of(times, "times", count);
+    const auto n = static_cast<py::ssize_t>(shot_.placed().size());
+    Array<double> out(std::vector<py::ssize_t>{count, n, 3});
+    double* o = out.mutable_data();
+    for (py::ssize_t k = 0; k < count; ++k) {
+      if (!(t[k] >= 0) || !std::isfinite(t[k]))
+        throw py::value_error("times[" + std::to_string(k) + "] is " + std::to_string(t[k]) +
+                              ", expected a finite time >= 0 (s)");
+    }
+    py::gil_scoped_release released;
+    for (py::ssize_t k = 0; k < count; ++k) {
+      const auto balls = shot_.balls_at(t[k]);
+      for (py::ssize_t i = 0; i < n; ++i)
+        Eigen::Map<Eigen::Vector3d>(o + 3 * (k * n + i)) = balls[static_cast<std::size_t>(i)].position;
+    }
+    return out;
+  }
+  [[nodiscard]] const simulation::Shot& shot() const { return shot_; }
+
+ private:
+  simulation::Shot shot_;
+  std::mutex mutex_;
+};
 
 }  // namespace billiards::python

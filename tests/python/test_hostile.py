@@ -164,3 +164,35 @@ def test_the_batch_refuses_bad_arguments():
         billiards.play_shots(table, None, layouts, [1.0, 2.0, 3.0])
     empty = billiards.play_shots(table, None, layouts[:0], billiards.cues(speed=np.ones(0)))
     assert empty.balls.shape == (0, 10)
+
+
+def test_the_table_and_the_gas_refuse_bad_balls():
+    with pytest.raises(ValueError, match="ball 1"):
+        billiards.Table([[0.5, 0.5], [np.nan, 0.5]], [[0.0, 0.0], [0.0, 0.0]])
+    with pytest.raises(ValueError, match="expected \\(N, 2\\)"):
+        billiards.Table(np.zeros((3, 3)))
+    with pytest.raises(TypeError, match="float64"):
+        billiards.Table(np.zeros((2, 2), np.float32))
+    with pytest.raises(ValueError, match="velocity"):
+        billiards.Gas(np.zeros((4, 3)), np.zeros((5, 3)), side=10.0)
+    with pytest.raises(ValueError):
+        billiards.Gas([[0.0, 0.0, 0.0], [0.1, 0.0, 0.0]], np.zeros((2, 3)), side=10.0)  # overlapping
+    with pytest.raises(ValueError, match="dimension"):
+        billiards.Gas.lattice(4)
+    gas = billiards.Gas.lattice(2, 64, 0.2)
+    with pytest.raises(ValueError, match="until"):
+        gas.run_until(np.nan)
+    with pytest.raises(ValueError, match="count"):
+        gas.run_events(-5)
+
+
+def test_the_files_refuse_bad_paths_and_contents(tmp_path):
+    with pytest.raises(ValueError, match="cannot open"):
+        billiards.read_shot_setup(tmp_path / "missing.setup")
+    with pytest.raises(TypeError, match="path"):
+        billiards.read_snapshot(42)
+    (tmp_path / "truncated.sph").write_text("3\n10 10 10\na 1 1 1 0.5\n")
+    with pytest.raises(ValueError, match="truncated.sph"):
+        billiards.read_snapshot(tmp_path / "truncated.sph")
+    with pytest.raises(OSError):
+        billiards.write_text(tmp_path, "a folder")

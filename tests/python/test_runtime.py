@@ -149,3 +149,21 @@ def test_version_is_the_projects():
     import re
     text = (pathlib.Path(__file__).resolve().parents[2] / "CMakeLists.txt").read_text()
     assert billiards.__version__ == re.search(r"project\(\s*billiards\s+VERSION ([0-9.]+)", text).group(1)
+
+
+def test_the_stubs_name_every_public_name():
+    import ast
+    import pathlib
+    stubs = pathlib.Path(billiards.__file__).with_name("__init__.pyi")
+    tree = ast.parse(stubs.read_text())
+    named = set()
+    for node in tree.body:
+        if isinstance(node, (ast.FunctionDef, ast.ClassDef)):
+            named.add(node.name)
+        elif isinstance(node, ast.AnnAssign):
+            named.add(node.target.id)
+    public = set(billiards.__all__)
+    assert public - named == set()
+    assert {n for n in named if not n.startswith("_")} - public <= {"ArrayLike", "FloatArray"}
+    for name in public:
+        assert getattr(billiards, name).__doc__ or name.isupper() or name.endswith("dtype") or name == "__version__"
