@@ -261,7 +261,7 @@ class Shot:
                                      np.ascontiguousarray(layout["angular_velocity"]),
                                      np.ascontiguousarray(layout["pocketed"]), options)
         self._count = len(layout)
-        self._table = table
+        self._table, self._physics = table, physics
 
     def strike(self, ball: int, cue: Cue) -> None:
         """Strikes ball ``ball`` (its index) with ``cue`` now; the strike is the shot's next event."""
