@@ -3,6 +3,7 @@
 
 Usage: bench/report.py RESULTS_JSON [--command "how the JSON was made"] [--derive BIN] [--out-dir DIR]
                        [--pooltool POOLTOOL_JSON] [--fastfiz FASTFIZ_JSON] [--edmd EDMD_TEXT]
+                       [--python PYTHON_JSON]
 
 POOLTOOL_JSON is what ../shared/peers/pooltool/bench_breaks.py printed in the same run (bench/run.sh runs
 both): pooltool's breaks beside ours. FASTFIZ_JSON is what ../shared/peers/fastfiz's bench_break printed
@@ -300,6 +301,53 @@ def shot_section(runs, pooltool, fastfiz=None):
     return "\n".join(lines)
 
 
+def python_section(runs, python, pooltool):
+    """The Python package beside the C++ calls and pooltool, from bench_python.py's JSON of the same run."""
+    if python is None:
+        return "(the Python package was not built for this run: BILLIARDS_BUILD_PYTHON)"
+    lines = ["| what | Python | C++ (the same run) | Python / C++ | goal | pooltool / Python | goal |",
+             "|---|---:|---:|---:|---:|---:|---:|"]
+    for game, name in (("9ball", "9-ball"), ("8ball", "8-ball")):
+        ours = python.get(f"break_{game}")
+        cpp = runs.get(f"shot/break/{game}")
+        if ours is None or cpp is None:
+            continue
+        cpp_us = per_item_ns(cpp) / 1e3
+        peer = ""
+        if pooltool is not None:
+            ms = 1e3 * pooltool[f"{game}_seeds1to20"]["time_s"]["median"]
+            peer = f"{1e3 * ms / ours['us_per_break']:,.0f}×"
+        lines.append(f"| a {name} break: Shot, strike, play from Python | {ours['us_per_break']:,.1f} µs "
+                     f"({ours['events_per_break']:.0f} events) | {cpp_us:,.1f} µs | "
+                     f"{ours['us_per_break'] / cpp_us:.2f}× | ≤ 1.2× | {peer or '(pooltool not set up)'} | ≥ 300× |")
+    one, random = python.get("random_one_thread"), runs.get("shot/random")
+    if one is not None and random is not None:
+        lines.append(f"| random shots with `play_shots`, one thread | {one['shots_per_second']:,.0f} shots/s "
+                     f"({one['events_per_shot']:.1f} events a shot) | {random['items_per_second']:,.0f} shots/s "
+                     f"({random.get('events_per_shot', float('nan')):.1f}) | "
+                     f"{one['shots_per_second'] / random['items_per_second']:.2f}× the rate | ≥ 0.8× | | |")
+    every = python.get("random_every_core")
+    if every is not None and one is not None:
+        lines.append(f"| random shots with `play_shots`, {every['threads']} threads | "
+                     f"{every['shots_per_second']:,.0f} shots/s | | "
+                     f"{every['shots_per_second'] / one['shots_per_second'] / every['threads']:.2f}× one thread's "
+                     f"rate a thread | | | |")
+    lines.append("")
+    lines.append(f"Python {python.get('python', '?')}, numpy {python.get('numpy', '?')}; {one['shots'] if one else '?'} "
+                 f"random shots, the kind of `shot/random` drawn from a seeded numpy generator and batched by "
+                 f"table and ball count.")
+    dask = python.get("dask")
+    if dask:
+        lines.append(f"The Dask batch (`billiards.distributed.play_shots`) on a local cluster of {dask['workers']} "
+                     f"worker processes, {dask['shots']:,} breaks in {dask['tasks']} tasks of {dask['chunk_size']}: "
+                     f"{dask['dask_shots_per_second']:,.0f} shots/s against {dask['local_shots_per_second']:,.0f} "
+                     f"for `play_shots` on every core in this process "
+                     f"({dask['dask_shots_per_second'] / dask['local_shots_per_second']:.2f}×): about "
+                     f"{dask['overhead_ms_per_task']:.1f} ms of overhead a task (scheduling, pickling the layouts "
+                     f"and the results).")
+    return "\n".join(lines)
+
+
 def gas_events(runs):
     """The hard-sphere gas (billiards::simulation::Gas): collisions per second against N, beside the table."""
     sizes = sorted({int(name.split("/")[-1]) for name in runs if name.startswith("gas/events/")})
@@ -417,6 +465,7 @@ def main():
     parser.add_argument("--pooltool", help="the JSON pooltool's bench_breaks.py printed in the same run")
     parser.add_argument("--edmd", help="what ../shared/peers/edmd/run.py printed in the same run")
     parser.add_argument("--fastfiz", help="the JSON ../shared/peers/fastfiz's bench_break printed in the same run")
+    parser.add_argument("--python", help="the JSON bench/bench_python.py printed in the same run")
     parser.add_argument("--out-dir", default=HERE, help="where RESULTS.md and throughput.svg go (default: bench/)")
     args = parser.parse_args()
     if not os.path.isdir(args.out_dir):
@@ -446,6 +495,17 @@ def main():
         except (UnicodeDecodeError, ValueError, KeyError, TypeError, ZeroDivisionError) as error:
             fail("--fastfiz", args.fastfiz, f"the JSON of FastFiz's bench_break ({error!r})")
     args.fastfiz_runs = fastfiz
+    python = None
+    if args.python:
+        try:
+            with open(args.python, encoding="utf-8") as f:
+                python = json.load(f)
+            float(python["break_9ball"]["us_per_break"])
+        except OSError as error:
+            fail("--python", args.python, f"a readable file ({error.strerror})")
+        except (ValueError, KeyError, TypeError) as error:
+            fail("--python", args.python, f"the JSON of bench/bench_python.py ({error!r})")
+    args.python_runs = python
     try:
         figure, text = report(args, context, runs)
     except (KeyError, TypeError, ValueError, ZeroDivisionError) as error:
@@ -621,6 +681,14 @@ stick at 8 m/s at the apex with b = 0.25 R, racks with 1e-3 R jitter) on the sam
 The models differ (docs/shot.md), so the event counts differ too.
 
 {shot_section(runs, args.pooltool_runs, getattr(args, "fastfiz_runs", None))}
+
+## Python
+
+The package `billiards` (docs/python.md) as built in the build tree, on Debian's Python: the breaks above
+called from Python (`Shot`, `strike`, `play`, pinned to the same core as the C++ benchmark), random shots
+through `play_shots`, and pooltool's breaks of the same run against the Python ones.
+
+{python_section(runs, getattr(args, "python_runs", None), args.pooltool_runs)}
 """
     return figure, text
 

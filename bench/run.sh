@@ -65,7 +65,21 @@ if [ -f "$edmd/run.py" ] && [ -x "$build/programs/billiards-gas" ]; then
 else
   echo "bench/run.sh: ../shared/peers/edmd/run.py or $build/programs/billiards-gas is missing; the gas's comparison is left out" >&2
 fi
+# The Python package, where it is built: its breaks and one-thread batch pinned to the same core, then its
+# batch on every core and on a local Dask cluster, unpinned; Debian's python3, where its numpy is.
+python_arguments=""
+if ls "$build"/python/billiards/_billiards*.so > /dev/null 2>&1; then
+  taskset -c $core /usr/bin/python3 "$here/bench_python.py" --build "$build" --part one-core > "$work/python1.json"
+  /usr/bin/python3 "$here/bench_python.py" --build "$build" --part every-core > "$work/python2.json" 2> "$work/dask.log"
+  /usr/bin/python3 -c 'import json, sys
+one = json.load(open(sys.argv[1]))
+one.update(json.load(open(sys.argv[2])))
+json.dump(one, open(sys.argv[1], "w"))' "$work/python1.json" "$work/python2.json"
+  python_arguments="--python $work/python1.json"
+else
+  echo "bench/run.sh: the Python package is not built in $build (BILLIARDS_BUILD_PYTHON); its figures are left out" >&2
+fi
 # shellcheck disable=SC2086
 python3 "$here/report.py" "$work/bench.json" --command "$command" --derive "$build/derive/billiards-derive" \
-  --out-dir "$out" $pooltool_arguments $fastfiz_arguments $edmd_arguments
+  --out-dir "$out" $pooltool_arguments $fastfiz_arguments $edmd_arguments $python_arguments
 echo "wrote $out/RESULTS.md"

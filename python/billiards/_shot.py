@@ -216,13 +216,14 @@ def _seed(function: str, seed) -> int:
     return int(seed)
 
 
-def cue_numbers(function: str, cue) -> np.ndarray:
+def cue_numbers(function: str, cue) -> tuple:
     """A Cue (or a cue_dtype record) as its seven numbers in the compiled module's order."""
     if isinstance(cue, Cue):
-        cue = cue.as_array()[0]
+        return (float(cue.mass), float(cue.speed), float(cue.azimuth), float(cue.elevation), float(cue.side_offset),
+                float(cue.up_offset), float(cue.tip_restitution))
     if not (isinstance(cue, (np.void, np.ndarray)) and cue.dtype == cue_dtype and np.ndim(cue) == 0):
         raise TypeError(f"{function}: cue is {_describe(cue)}, expected a billiards.Cue")
-    return np.array([cue[name] for name in cue_dtype.names], dtype=np.float64)
+    return tuple(float(cue[name]) for name in cue_dtype.names)
 
 
 class Shot:
@@ -256,10 +257,7 @@ class Shot:
         layout = check_layout("Shot", balls)
         if layout.ndim != 1:
             raise ValueError(f"Shot: balls has shape {layout.shape}, expected (N,)")
-        self._shot = _billiards.Shot(table, physics, np.ascontiguousarray(layout["position"]),
-                                     np.ascontiguousarray(layout["velocity"]),
-                                     np.ascontiguousarray(layout["angular_velocity"]),
-                                     np.ascontiguousarray(layout["pocketed"]), options)
+        self._shot = _billiards.Shot(table, physics, layout, options)
         self._count = len(layout)
         self._table, self._physics = table, physics
 
@@ -269,7 +267,11 @@ class Shot:
             raise TypeError(f"strike: ball is {_describe(ball)}, expected a ball's index")
         if not (0 <= ball < self._count):
             raise ValueError(f"strike: ball is {ball}, expected an index from 0 to {self._count - 1}")
-        self._shot.strike(int(ball), cue_numbers("strike", cue))
+        try:
+            numbers = cue_numbers("strike", cue)
+        except (TypeError, ValueError) as error:  # a field that is no number
+            raise TypeError(f"strike: cue is {_describe(cue)}, expected a billiards.Cue ({error})") from None
+        self._shot.strike(int(ball), *numbers)
 
     def play(self) -> int:
         """Plays every event until every ball is at rest or pocketed; returns how many ran."""

@@ -177,8 +177,7 @@ void bind_layouts(py::module_& m) {
 
 void bind_shot(py::module_& m) {
   py::class_<PyShot>(m, "Shot")
-      .def(py::init<const PoolTable&, const PoolPhysics&, const Array<double>&, const Array<double>&,
-                    const Array<double>&, const py::array_t<bool, py::array::c_style>&, const ShotOptions&>())
+      .def(py::init<const PoolTable&, const PoolPhysics&, const py::array&, const ShotOptions&>())
       .def("strike", &PyShot::strike)
       .def("play", &PyShot::play)
       .def("step", &PyShot::step)

@@ -8,6 +8,7 @@
 #include <billiards/simulation/shot.hpp>
 
 #include <cstdint>
+#include <cstring>
 #include <mutex>
 #include <vector>
 
@@ -34,16 +35,24 @@ using simulation::ShotOptions;
   return balls;
 }
 
-/// A layout's columns checked and read.
-[[nodiscard]] inline std::vector<PoolBall> balls_from(const Array<double>& position,
-                                                      const Array<double>& velocity,
-                                                      const Array<double>& angular_velocity,
-                                                      const py::array_t<bool, py::array::c_style>& pocketed) {
-  const py::ssize_t count = pocketed.ndim() == 1 ? pocketed.shape(0) : -1;
-  if (count < 0) throw py::value_error("pocketed must be one-dimensional");
-  return balls_from(rows_of(position, "position", count, 3), rows_of(velocity, "velocity", count, 3),
-                    rows_of(angular_velocity, "angular_velocity", count, 3), pocketed.data(),
-                    static_cast<std::size_t>(count));
+/// The balls of a layout from its records (billiards.ball_dtype: position, velocity and angular_velocity
+/// as three float64 each, then pocketed as one byte; 73 bytes a ball, packed), checked for that layout.
+[[nodiscard]] inline std::vector<PoolBall> balls_from_records(const py::array& records) {
+  constexpr py::ssize_t size = 9 * sizeof(double) + 1;
+  if (records.ndim() != 1 || records.itemsize() != size || !(records.flags() & py::array::c_style))
+    throw py::value_error("balls must be a one-dimensional C-contiguous array of billiards.ball_dtype");
+  const auto* bytes = static_cast<const unsigned char*>(records.data());
+  std::vector<PoolBall> balls(static_cast<std::size_t>(records.shape(0)));
+  for (std::size_t i = 0; i < balls.size(); ++i) {
+    const unsigned char* record = bytes + static_cast<std::size_t>(size) * i;
+    double values[9];
+    std::memcpy(values, record, sizeof values);
+    balls[i].position = Eigen::Map<const Eigen::Vector3d>(values);
+    balls[i].velocity = Eigen::Map<const Eigen::Vector3d>(values + 3);
+    balls[i].angular_velocity = Eigen::Map<const Eigen::Vector3d>(values + 6);
+    balls[i].pocketed = record[9 * sizeof(double)] != 0;
+  }
+  return balls;
 }
 
 /// Writes `ball`'s state into row `i` of the columns (whether it is pocketed: the caller's).
@@ -112,10 +121,9 @@ inline void store_state(const PoolBall& ball, double* position, double* velocity
 // time.
 class PyShot {
  public:
-  PyShot(const PoolTable& table, const PoolPhysics& physics, const Array<double>& position,
-         const Array<double>& velocity, const Array<double>& angular_velocity,
-         const py::array_t<bool, py::array::c_style>& pocketed, const ShotOptions& options)
-      : shot_(table, physics, balls_from(position, velocity, angular_velocity, pocketed), options) {}
+  PyShot(const PoolTable& table, const PoolPhysics& physics, const py::array& balls,
+         const ShotOptions& options)
+      : shot_(table, physics, balls_from_records(balls), options) {}
 
   // Runs `run` without the GIL, this Shot locked.
   template <typename Run>
@@ -124,9 +132,10 @@ class PyShot {
     const std::lock_guard lock(mutex_);
     return run();
   }
-  void strike(std::size_t index, const Array<double>& cue) {
+  void strike(std::size_t index, double mass, double speed, double azimuth, double elevation,
+              double side_offset, double up_offset, double tip_restitution) {
     const std::lock_guard lock(mutex_);
-    shot_.strike(index, cue_from(rows_of(cue, "cue", 7)));
+    shot_.strike(index, {mass, speed, azimuth, elevation, side_offset, up_offset, tip_restitution});
   }
   std::uint64_t play() {
     return unlocked([&] { return shot_.play(); });
