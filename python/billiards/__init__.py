@@ -15,7 +15,8 @@ Units: metres, seconds, kilograms, radians.
 
 from ._billiards import __version__
 from ._batch import ShotResults, available_cores, play_shots
-from ._runtime import collide, collide_with_cushion, collide_with_friction, earliest_contact, strike, time_of_impact
+from ._runtime import (collide, collide_with_cushion, collide_with_friction, earliest_contact, evolve, motion, strike,
+                       time_of_impact, transition_time)
 from ._files import (Snapshot, gas_from_snapshot, gas_snapshot, read_shot_setup, read_snapshot, shot_html,
                      shot_json, shot_svg, trajectories_csv, write_shot_setup, write_snapshot, write_text)
 from ._table_gas import Gas, Table, gas_event_dtype, table_event_dtype
@@ -24,7 +25,7 @@ from ._shot import (EVENT_KINDS, MOTIONS, BrokenInvariant, Cloth, Cue, EventLimi
 
 __all__ = [
     "__version__", "collide", "collide_with_friction", "strike", "collide_with_cushion", "earliest_contact",
-    "time_of_impact", "Cloth", "PoolPhysics", "PoolTable", "ShotOptions", "pool_table", "rack", "scatter", "balls",
+    "time_of_impact", "evolve", "transition_time", "motion", "Cloth", "PoolPhysics", "PoolTable", "ShotOptions", "pool_table", "rack", "scatter", "balls",
     "Cue", "cues", "Shot", "ShotResults", "play_shots", "available_cores", "ball_dtype", "event_dtype", "cue_dtype",
     "EVENT_KINDS", "MOTIONS", "EventLimitReached", "BrokenInvariant", "Table", "Gas", "table_event_dtype",
     "gas_event_dtype", "Snapshot", "read_snapshot", "write_snapshot", "gas_snapshot", "gas_from_snapshot",

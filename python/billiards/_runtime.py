@@ -229,3 +229,72 @@ def earliest_contact(coefficients, horizon):
     shape, f, r = broadcast(function, scalars, vectors)
     call = _billiards.earliest_contact3 if r["coefficients"].shape[1] == 3 else _billiards.earliest_contact5
     return _shaped(shape, call(r["coefficients"], f["horizon"], shape != ()))
+
+
+def _cloth_rows(function: str, cloth, dtype):
+    from ._shot import Cloth
+    cloth = Cloth() if cloth is None else cloth
+    if not isinstance(cloth, Cloth):
+        raise TypeError(f"{function}: cloth is {type(cloth).__name__}, expected a billiards.Cloth")
+    return np.array([cloth.sliding_friction, cloth.rolling_friction, cloth.spinning_friction, cloth.gravity],
+                    dtype=dtype)
+
+
+def _ball_on_cloth(function: str, args: dict, dtype, extra_scalars=()):
+    scalars = {k: as_array(function, k, args[k], dtype) for k in ("radius",) + tuple(extra_scalars)}
+    vectors = {k: as_array(function, k, args[k], dtype, 3) for k in ("position", "velocity", "angular_velocity")}
+    vectors["cloth"] = _cloth_rows(function, args["cloth"], dtype)
+    return broadcast(function, scalars, vectors)
+
+
+def evolve(position, velocity, angular_velocity, radius, t, cloth=None):
+    """Balls on the cloth after ``t`` seconds, across as many phases as ``t`` spans (sliding, rolling,
+    spinning, at rest), each by its derived closed form.
+
+    Parameters
+    ----------
+    position, velocity, angular_velocity : array_like, shape (..., 3)
+        The centre (m; z equal to the radius: on the table), the velocity (m/s, horizontal) and the spin
+        (rad/s).
+    radius : array_like
+        The balls' radius (m).
+    t : array_like
+        The time (s), ≥ 0.
+    cloth : Cloth, optional
+        μ_s, μ_r, μ_sp and g; pooltool's defaults where omitted.
+
+    Returns
+    -------
+    (position, velocity, angular_velocity) after ``t``.
+    """
+    function = "evolve"
+    args = dict(position=position, velocity=velocity, angular_velocity=angular_velocity, radius=radius, t=t,
+                cloth=cloth)
+    dtype = call_dtype(function, {k: v for k, v in args.items() if k != "cloth"})
+    shape, f, r = _ball_on_cloth(function, args, dtype, ("t",))
+    out = _billiards.evolve(r["position"], r["velocity"], r["angular_velocity"], f["radius"], f["t"], r["cloth"],
+                            shape != ())
+    return _shaped(shape, *out)
+
+
+def _phase(function: str, position, velocity, angular_velocity, radius, cloth):
+    args = dict(position=position, velocity=velocity, angular_velocity=angular_velocity, radius=radius, cloth=cloth)
+    dtype = call_dtype(function, {k: v for k, v in args.items() if k != "cloth"})
+    shape, f, r = _ball_on_cloth(function, args, dtype)
+    phases, duration = _billiards.phase(r["position"], r["velocity"], r["angular_velocity"], f["radius"],
+                                        r["cloth"], shape != ())
+    return shape, phases, duration
+
+
+def transition_time(position, velocity, angular_velocity, radius, cloth=None):
+    """How long each ball's phase on the cloth lasts (s): the slide, the roll or the spin; ``inf`` at rest.
+    Arguments as for ``evolve``."""
+    shape, _, duration = _phase("transition_time", position, velocity, angular_velocity, radius, cloth)
+    return _shaped(shape, duration)
+
+
+def motion(position, velocity, angular_velocity, radius, cloth=None):
+    """Each ball's phase on the cloth: "sliding", "rolling", "spinning" or "stationary" (a str array).
+    Arguments as for ``evolve``."""
+    shape, phases, _ = _phase("motion", position, velocity, angular_velocity, radius, cloth)
+    return _shaped(shape, np.asarray(("sliding", "rolling", "spinning", "stationary"))[phases])

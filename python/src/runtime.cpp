@@ -4,6 +4,7 @@
 #include "arrays.hpp"
 
 #include <billiards/checked.hpp>
+#include <billiards/cloth.hpp>
 #include <billiards/events.hpp>
 #include <billiards/shot.hpp>
 #include <billiards/spin.hpp>
@@ -11,7 +12,10 @@
 #include <Eigen/Core>
 
 #include <array>
+#include <cstdint>
 #include <limits>
+#include <map>
+#include <string>
 
 namespace billiards::python {
 namespace {
@@ -207,6 +211,74 @@ Array<Scalar> earliest_contact(const Array<Scalar>& coefficients, const Array<Sc
   return times;
 }
 
+// The balls on the cloth of `count` cases: centre, velocity and spin rows of 3, radius flat.
+template <typename Scalar>
+BallOnCloth<Scalar> ball_on_cloth(const Scalar* p, const Scalar* v, const Scalar* w, const Scalar* r,
+                                  py::ssize_t i) {
+  return {Row<Scalar, 3>(p + 3 * i), Row<Scalar, 3>(v + 3 * i), Row<Scalar, 3>(w + 3 * i), r[i]};
+}
+
+template <typename Scalar>
+Cloth<Scalar> cloth_of(const Scalar* c, py::ssize_t i) {
+  return {c[4 * i], c[4 * i + 1], c[4 * i + 2], c[4 * i + 3]};
+}
+
+const std::map<std::string, std::string>& cloth_names() {
+  static const std::map<std::string, std::string> names{{"ball.position", "position"},
+                                                        {"ball.velocity", "velocity"},
+                                                        {"ball.angular_velocity", "angular_velocity"},
+                                                        {"ball.radius", "radius"}};
+  return names;
+}
+
+// checked::evolve: the balls after t on the cloth whose rows are (μ_s, μ_r, μ_sp, g); returns the centre,
+// velocity and spin.
+template <typename Scalar>
+py::tuple evolve(const Array<Scalar>& position, const Array<Scalar>& velocity, const Array<Scalar>& spin,
+                 const Array<Scalar>& radius, const Array<Scalar>& t, const Array<Scalar>& cloth,
+                 bool batch) {
+  const py::ssize_t count = radius.shape(0);
+  const Scalar *pp = rows_of(position, "position", count, 3), *pv = rows_of(velocity, "velocity", count, 3),
+               *pw = rows_of(spin, "angular_velocity", count, 3), *pr = rows_of(radius, "radius", count),
+               *pt = rows_of(t, "t", count), *pc = rows_of(cloth, "cloth", count, 4);
+  std::array<Array<Scalar>, 3> out{new_rows<Scalar>(count, 3), new_rows<Scalar>(count, 3),
+                                   new_rows<Scalar>(count, 3)};
+  Scalar *op = out[0].mutable_data(), *ov = out[1].mutable_data(), *ow = out[2].mutable_data();
+  Rejection rejection("evolve", batch, cloth_names());
+  each_case(count, rejection, [&](py::ssize_t i) {
+    const BallOnCloth<Scalar> later =
+        checked::evolve(ball_on_cloth(pp, pv, pw, pr, i), cloth_of(pc, i), pt[i]);
+    Eigen::Map<Vector<Scalar, 3>>(op + 3 * i) = later.position;
+    Eigen::Map<Vector<Scalar, 3>>(ov + 3 * i) = later.velocity;
+    Eigen::Map<Vector<Scalar, 3>>(ow + 3 * i) = later.angular_velocity;
+  });
+  rejection.raise_if_any();
+  return py::make_tuple(out[0], out[1], out[2]);
+}
+
+// checked::motion and checked::transition_time: each ball's phase (billiards::Motion's value) and how
+// long it lasts.
+template <typename Scalar>
+py::tuple phase(const Array<Scalar>& position, const Array<Scalar>& velocity, const Array<Scalar>& spin,
+                const Array<Scalar>& radius, const Array<Scalar>& cloth, bool batch) {
+  const py::ssize_t count = radius.shape(0);
+  const Scalar *pp = rows_of(position, "position", count, 3), *pv = rows_of(velocity, "velocity", count, 3),
+               *pw = rows_of(spin, "angular_velocity", count, 3), *pr = rows_of(radius, "radius", count),
+               *pc = rows_of(cloth, "cloth", count, 4);
+  py::array_t<std::int8_t> motion(std::vector<py::ssize_t>{count});
+  Array<Scalar> duration = new_rows<Scalar>(count);
+  std::int8_t* om = motion.mutable_data();
+  Scalar* od = duration.mutable_data();
+  Rejection rejection("transition_time", batch, cloth_names());
+  each_case(count, rejection, [&](py::ssize_t i) {
+    const BallOnCloth<Scalar> ball = ball_on_cloth(pp, pv, pw, pr, i);
+    om[i] = static_cast<std::int8_t>(checked::motion(ball, cloth_of(pc, i)));
+    od[i] = checked::transition_time(ball, cloth_of(pc, i));
+  });
+  rejection.raise_if_any();
+  return py::make_tuple(motion, duration);
+}
+
 template <typename Scalar>
 void bind_scalar(py::module_& m) {
   m.def("collide2", &collide<Scalar, 2>);
@@ -218,6 +290,8 @@ void bind_scalar(py::module_& m) {
   m.def("collide_with_cushion", &collide_with_cushion<Scalar>);
   m.def("earliest_contact3", &earliest_contact<Scalar, 3>);
   m.def("earliest_contact5", &earliest_contact<Scalar, 5>);
+  m.def("evolve", &evolve<Scalar>);
+  m.def("phase", &phase<Scalar>);
 }
 
 }  // namespace

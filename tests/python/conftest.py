@@ -38,3 +38,9 @@ def shot_program():
 @pytest.fixture
 def rng():
     return np.random.default_rng(20261206)
+
+
+@pytest.fixture(scope="session")
+def gas_program():
+    """The path of billiards-gas."""
+    return _program("BILLIARDS_GAS_PROGRAM")

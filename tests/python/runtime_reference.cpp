@@ -3,6 +3,7 @@
 // then one case a line, its numbers in the order listed below (hexadecimal floating point is read
 // exactly). Output: one line a case, the results' numbers in hexadecimal floating point, or "rejected".
 #include <billiards/checked.hpp>
+#include <billiards/cloth.hpp>
 #include <billiards/events.hpp>
 #include <billiards/shot.hpp>
 #include <billiards/spin.hpp>
@@ -95,6 +96,14 @@ std::vector<Scalar> run(const std::string& name, const std::vector<Scalar>& x) {
   if (name == "earliest_contact5") {  // c[5] horizon
     const std::array<Scalar, 5> c{x[0], x[1], x[2], x[3], x[4]};
     return {billiards::checked::earliest_contact(c, x[5]).value_or(std::numeric_limits<Scalar>::infinity())};
+  }
+  if (name == "evolve") {  // position velocity spin radius t μs μr μsp g → position velocity spin
+    const billiards::BallOnCloth<Scalar> ball{vec<Scalar, 3>(x, 0), vec<Scalar, 3>(x, 3), vec<Scalar, 3>(x, 6), x[9]};
+    const auto later = billiards::checked::evolve(ball, billiards::Cloth<Scalar>{x[11], x[12], x[13], x[14]}, x[10]);
+    append<Scalar, 3>(out, later.position);
+    append<Scalar, 3>(out, later.velocity);
+    append<Scalar, 3>(out, later.angular_velocity);
+    return out;
   }
   if (name == "time_of_impact3") {  // p1 v1 p2 v2 distance
     return {billiards::checked::time_of_impact(vec<Scalar, 3>(x, 0), vec<Scalar, 3>(x, 3),

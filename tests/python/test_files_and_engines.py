@@ -43,6 +43,20 @@ def test_the_gas_conserves_energy_and_momentum_and_meets_carnahan_starling():
     assert gas.measured()["compressibility_factor"] == pytest.approx(carnahan_starling, rel=0.03)
 
 
+@pytest.mark.parametrize("dimension,balls", [(3, 500), (2, 400)])
+def test_the_gas_is_billiards_gas_bit_for_bit(gas_program, tmp_path, dimension, balls):
+    out = tmp_path / "end.xyz"
+    subprocess.run([gas_program, "--dimension", str(dimension), "--balls", str(balls), "--packing-fraction", "0.3",
+                    "--seed", "3", "--equilibrate", "0", "--events", "5000", "--write", str(out), "--json",
+                    str(tmp_path / "gas.json")], check=True, capture_output=True)
+    gas = billiards.Gas.lattice(dimension, balls, 0.3, seed=3)
+    gas.run_events(5000)
+    end = billiards.read_snapshot(out)
+    assert end.time == gas.time
+    assert np.array_equal(end.position[:, :dimension], gas.positions)
+    assert np.array_equal(end.velocity[:, :dimension], gas.velocities)
+
+
 def test_a_gas_of_your_own_in_two_dimensions():
     rng = np.random.default_rng(1)
     grid = np.stack(np.meshgrid(np.arange(10), np.arange(10)), -1).reshape(-1, 2) * 2.0 + 1.0

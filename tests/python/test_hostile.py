@@ -18,11 +18,13 @@ CALLS = {
                                                      speed=2.0), **k}),
     "collide_with_cushion": lambda **k: billiards.collide_with_cushion(
         **{**dict(mass=0.17, radius=0.028575, velocity=X3, angular_velocity=Z3, normal=X3, height=0.03629), **k}),
+    "evolve": lambda **k: billiards.evolve(**{**dict(position=[0.5, 0.5, 0.028575], velocity=X3, angular_velocity=Z3,
+                                                     radius=0.028575, t=1.0), **k}),
 }
 VECTORS = {"collide": "v1", "time_of_impact": "p1", "collide_with_friction": "w1", "strike": "velocity",
-           "collide_with_cushion": "angular_velocity"}
+           "collide_with_cushion": "angular_velocity", "evolve": "angular_velocity"}
 SCALARS = {"collide": "m1", "time_of_impact": "distance", "collide_with_friction": "friction", "strike": "speed",
-           "collide_with_cushion": "height"}
+           "collide_with_cushion": "height", "evolve": "t"}
 
 
 @pytest.mark.parametrize("name", CALLS)
@@ -196,3 +198,12 @@ def test_the_files_refuse_bad_paths_and_contents(tmp_path):
         billiards.read_snapshot(tmp_path / "truncated.sph")
     with pytest.raises(OSError):
         billiards.write_text(tmp_path, "a folder")
+
+
+def test_evolve_names_a_ball_off_the_table():
+    with pytest.raises(ValueError, match="evolve: position is .*on the table"):
+        billiards.evolve([0.5, 0.5, 1.0], X3, Z3, 0.028575, 1.0)
+    with pytest.raises(ValueError, match="evolve: t is"):
+        billiards.evolve([0.5, 0.5, 0.028575], X3, Z3, 0.028575, -1.0)
+    with pytest.raises(TypeError, match="cloth"):
+        billiards.evolve([0.5, 0.5, 0.028575], X3, Z3, 0.028575, 1.0, cloth=0.2)

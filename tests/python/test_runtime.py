@@ -144,6 +144,35 @@ def test_earliest_contact_equals_the_cpp_call_and_the_roots(runtime_reference, r
     assert np.all(np.isinf(t[r1 > horizon * (1 + 1e-9)]))
 
 
+def test_evolve_equals_the_cpp_call_and_the_closed_forms(runtime_reference, rng):
+    count, R = 300, 0.028575
+    position = np.column_stack([rng.uniform(0, 2, count), rng.uniform(0, 1, count), np.full(count, R)])
+    velocity = np.column_stack([rng.normal(size=(count, 2)), np.zeros(count)])
+    spin = rng.normal(size=(count, 3)) * 30
+    t = rng.uniform(0, 20, count)
+    cloth = billiards.Cloth()
+    p, v, w = billiards.evolve(position, velocity, spin, R, t)
+    cases = np.column_stack([position, velocity, spin, np.full(count, R), t,
+                             np.tile([cloth.sliding_friction, cloth.rolling_friction, cloth.spinning_friction,
+                                      cloth.gravity], (count, 1))])
+    expected = np.asarray(runtime_reference("evolve", cases))
+    assert np.array_equal(np.column_stack([p, v, w]).view(np.uint64), expected.view(np.uint64))
+    # A ball without spin slides for 2|v|/(7 μ_s g), decelerating at μ_s g, then rolls at 5/7 of its speed.
+    speed = np.linalg.norm(velocity, axis=-1)
+    slide = 2 * speed / (7 * cloth.sliding_friction * cloth.gravity)
+    zeros = np.zeros((count, 3))
+    assert np.allclose(billiards.transition_time(position, velocity, zeros, R), slide, rtol=1e-14)
+    assert set(billiards.motion(position, velocity, zeros, R).tolist()) == {"sliding"}
+    half = slide / 2
+    p, v, _ = billiards.evolve(position, velocity, zeros, R, half)
+    direction = velocity / speed[:, None]
+    travelled = speed * half - 0.5 * cloth.sliding_friction * cloth.gravity * half**2
+    assert np.allclose(p, position + travelled[:, None] * direction, rtol=1e-13, atol=1e-15)
+    _, v, _ = billiards.evolve(position, velocity, zeros, R, slide)
+    assert np.allclose(np.linalg.norm(v, axis=-1), 5 / 7 * speed, rtol=1e-13)
+    assert billiards.motion(position[0], [0.0, 0, 0], [0.0, 0, 1.0], R) == "spinning"
+
+
 def test_version_is_the_projects():
     import pathlib
     import re

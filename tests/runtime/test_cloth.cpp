@@ -7,6 +7,7 @@
 
 #include <cmath>
 #include <random>
+#include <string>
 
 namespace {
 
@@ -167,6 +168,9 @@ TEMPLATE_TEST_CASE("checked cloth calls reject bad input, naming the argument", 
       FAIL("accepted; expected a rejection of " << argument);
     } catch (const billiards::invalid_argument& error) {
       CHECK(error.argument() == argument);
+      // One line, a vector written "(x, y, z)".
+      CHECK(std::string(error.what()).find('\n') == std::string::npos);
+      if (argument == std::string("ball.position")) CHECK(error.value().front() == '(');
     }
   };
   auto bad = good;

@@ -80,7 +80,10 @@ template <typename Scalar>
 
 namespace detail {
 
+// A number (the vectors, Eigen's matrices included, take the overload below, which writes "(x, y, z)" on
+// one line: a plain Eigen::Matrix would otherwise match this one exactly and print a column).
 template <typename Scalar>
+  requires std::is_arithmetic_v<Scalar>
 std::string to_text(Scalar value) {
   std::ostringstream out;
   out.precision(std::numeric_limits<Scalar>::max_digits10);
