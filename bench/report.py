@@ -317,7 +317,7 @@ def python_section(runs, python, pooltool):
         if pooltool is not None:
             ms = 1e3 * pooltool[f"{game}_seeds1to20"]["time_s"]["median"]
             peer = f"{1e3 * ms / ours['us_per_break']:,.0f}×"
-        lines.append(f"| a {name} break: Shot, strike, play from Python | {ours['us_per_break']:,.1f} µs "
+        lines.append(f"| {'an' if name[0] == '8' else 'a'} {name} break: Shot, strike, play from Python | {ours['us_per_break']:,.1f} µs "
                      f"({ours['events_per_break']:.0f} events) | {cpp_us:,.1f} µs | "
                      f"{ours['us_per_break'] / cpp_us:.2f}× | ≤ 1.2× | {peer or '(pooltool not set up)'} | ≥ 300× |")
     one, random = python.get("random_one_thread"), runs.get("shot/random")
