@@ -15,6 +15,7 @@
 #include <billiards_support/cli_checks.hpp>
 #include <billiards_support/standard_output.hpp>
 
+#include <billiards/simulation/games.hpp>
 #include <billiards/simulation/shot.hpp>
 
 #include <CLI/CLI.hpp>
@@ -48,7 +49,7 @@ using namespace billiards::simulation;
 // What the command line asks for.
 struct Options {
   std::string table_name = "9ft", rack_name = "9ball", setup_file, offset_text = "0,0";
-  std::string json_file, svg_file, html_file, trajectories_file;
+  std::string json_file, svg_file, html_file, trajectories_file, game;
   double jitter = 0, speed = 8, azimuth = 0, elevation = 0, cue_mass = 0.567, tip_restitution = 1, rate = 100;
   std::uint64_t seed = 0, ball = 0, event_limit = ShotOptions{}.event_limit;
   bool check_invariants = true;
@@ -103,6 +104,10 @@ std::optional<int> parse(int argc, char** argv, Options& o) {
       ->check(count_at_least(1));
   app.add_option("--check-invariants", o.check_invariants,
                  "Check overlaps, the cloth and the energy at every event (default true)");
+  app.add_option("--game", o.game,
+                 "Decide the shot by the rules of GAME, 9ball or 8ball (WPA; docs/games.md): a rack's shot is "
+                 "the break, a setup's a shot of the game as it lies; the cue ball is ball 0")
+      ->check(CLI::IsMember({"9ball", "8ball"}));
   app.add_option("--json", o.json_file, "Write the events as JSON to FILE")
       ->check(path_given("a file's path"));
   app.add_option("--svg", o.svg_file, "Write the shot as SVG to FILE")->check(path_given("a file's path"));
@@ -146,6 +151,14 @@ std::optional<int> load(Options& o, Loaded& l) {
   if (o.setup_file.empty())
     l.balls = rack(l.table, l.physics, o.rack_name == "8ball" ? Rack::eight_ball : Rack::nine_ball, o.jitter,
                    o.seed);
+  if (!o.game.empty()) {
+    const std::size_t most = o.game == "9ball" ? 10 : 16;
+    if (l.balls.size() > most)
+      return bad("--game " + o.game + ": " + std::to_string(l.balls.size()) + " balls, expected at most " +
+                 std::to_string(most) + " (the cue ball, 0, and the object balls by number)");
+    if (o.ball != 0)
+      return bad("--game " + o.game + ": --ball is " + std::to_string(o.ball) + ", expected 0 (the cue ball)");
+  }
   if (o.ball >= l.balls.size())
     return bad("--ball: " + std::to_string(o.ball) + " is not a ball, expected 0 to " +
                std::to_string(l.balls.size() - 1));
@@ -231,6 +244,37 @@ void report(const Options& o, const Loaded& l, const Shot& shot, int status) {
   }
 }
 
+// The game's state before the shot: the balls of the layout on the table by number, the break where
+// the balls are a rack.
+template <typename State>
+State game_before(const Options& o, const std::vector<PoolBall>& placed) {
+  State state;
+  state.on_table.fill(false);
+  for (std::size_t b = 0; b < placed.size(); ++b) state.on_table[b] = !placed[b].pocketed;
+  state.breaking = o.setup_file.empty();
+  return state;
+}
+
+// The rules' verdict on the shot, printed after the summary (--game).
+void report_game(const Options& o, const Shot& shot) {
+  using namespace billiards::simulation::games;
+  const Verdict v = o.game == "9ball"
+                        ? nine_ball(game_before<NineBallState>(o, shot.placed()), shot.events()).verdict
+                        : eight_ball(game_before<EightBallState>(o, shot.placed()), shot.events()).verdict;
+  std::string fouls;
+  for (const Foul f : v.fouls) fouls += std::string(fouls.empty() ? "" : ", ") + foul_name(f);
+  std::printf("rules (%s%s): %s\n", o.game == "9ball" ? "9-ball" : "8-ball", o.setup_file.empty() ? ", the break" : "",
+              v.legal() ? "legal" : ("foul: " + fouls).c_str());
+  std::printf("  %s\n", v.reason.c_str());
+  std::printf("  next: %s%s\n", v.game_over ? "the game is over, won by " : "",
+              (v.game_over ? (*v.winner == 0 ? "the shooter" : "the opponent")
+                           : (v.next_player == 0 ? "the shooter again" : "the opponent")));
+  if (v.ball_in_hand != BallInHand::none)
+    std::printf("  cue ball in hand %s\n",
+                v.ball_in_hand == BallInHand::anywhere ? "anywhere" : "behind the head string");
+  for (const std::size_t b : v.respotted) std::printf("  ball %zu respotted\n", b);
+}
+
 // The files asked for; exit status 3 where one cannot be written.
 std::optional<int> write_files(const Options& o, const Shot& shot) {
   const std::string title = "billiards-shot: " + o.table_name + ", " + std::to_string(shot.balls().size()) +
@@ -267,6 +311,7 @@ int main(int argc, char** argv) {
   if (const std::optional<int> code = make_shot(options, loaded, shot)) return *code;
   const int status = play(*shot);
   report(options, loaded, *shot, status);
+  if (!options.game.empty() && status == 0) report_game(options, *shot);
   if (const std::optional<int> code = write_files(options, *shot)) return *code;
   if (billiards_support::standard_output_failed("billiards-shot")) return 3;
   return status;

@@ -1,0 +1,286 @@
+// The rules of 9-ball and 8-ball (billiards/simulation/games.hpp) on the rule books' cases: each foul,
+// each way to score, each end of a game, as hand-built event lists; and cases played through the engine.
+#include <billiards/simulation/games.hpp>
+#include <billiards/simulation/shot.hpp>
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <cstddef>
+#include <initializer_list>
+#include <vector>
+
+namespace {
+
+using namespace billiards::simulation;
+using namespace billiards::simulation::games;
+using Kind = ShotEvent::Kind;
+
+struct Step {
+  Kind kind;
+  std::size_t first, second;
+};
+
+// A shot's events: the strike of ball 0, then `steps` 0.1 s apart.
+std::vector<ShotEvent> events_of(std::initializer_list<Step> steps) {
+  std::vector<ShotEvent> events(1);
+  events[0].kind = Kind::strike;
+  double t = 0;
+  for (const Step& s : steps) {
+    ShotEvent e;
+    e.time = t += 0.1;
+    e.kind = s.kind;
+    e.first = s.first;
+    e.second = s.second;
+    events.push_back(e);
+  }
+  return events;
+}
+
+Step hit(std::size_t a, std::size_t b) { return {Kind::ball, a, b}; }
+Step rail(std::size_t a, std::size_t cushion = 2) { return {Kind::cushion, a, cushion}; }
+Step drop(std::size_t a, std::size_t pocket = 1) { return {Kind::pocket, a, pocket}; }
+
+NineBallState after_break() {
+  NineBallState s;
+  s.breaking = false;
+  return s;
+}
+
+}  // namespace
+
+TEST_CASE("9-ball: the break", "[simulation][games][nine_ball]") {
+  const NineBallState start;
+  SECTION("the 1 first and four object balls to a cushion: legal, the turn passes") {
+    const auto d = nine_ball(start, events_of({hit(0, 1), rail(2), rail(3), rail(4), rail(5)}));
+    CHECK(d.verdict.legal());
+    CHECK(d.verdict.next_player == 1);
+    CHECK(d.verdict.ball_in_hand == BallInHand::none);
+    CHECK_FALSE(d.next.breaking);
+  }
+  SECTION("a ball pocketed: the breaker continues") {
+    const auto d = nine_ball(start, events_of({hit(0, 1), drop(5)}));
+    CHECK(d.verdict.legal());
+    CHECK(d.verdict.next_player == 0);
+    CHECK(d.verdict.potted == std::vector<std::size_t>{5});
+    CHECK_FALSE(d.next.on_table[5]);
+  }
+  SECTION("nothing pocketed and three balls to a cushion: a foul, ball in hand anywhere") {
+    const auto d = nine_ball(start, events_of({hit(0, 1), rail(2), rail(3), rail(4), rail(2)}));
+    REQUIRE(d.verdict.fouls == std::vector<Foul>{Foul::illegal_break});
+    CHECK(d.verdict.next_player == 1);
+    CHECK(d.verdict.ball_in_hand == BallInHand::anywhere);
+    CHECK(d.next.ball_in_hand == BallInHand::anywhere);
+  }
+  SECTION("the 9 pocketed on a legal break wins") {
+    const auto d = nine_ball(start, events_of({hit(0, 1), hit(1, 9), drop(9, 4)}));
+    CHECK(d.verdict.game_over);
+    CHECK(d.verdict.winner == 0u);
+    CHECK(d.next.over);
+  }
+  SECTION("another ball first is a foul even when balls drop") {
+    const auto d = nine_ball(start, events_of({hit(0, 2), drop(2), rail(3)}));
+    CHECK(d.verdict.fouls.front() == Foul::wrong_ball_first);
+    CHECK_FALSE(d.next.on_table[2]);  // it stays down
+  }
+}
+
+TEST_CASE("9-ball: the lowest ball first, a pocket or a cushion after", "[simulation][games][nine_ball]") {
+  NineBallState s = after_break();
+  s.on_table[1] = s.on_table[2] = false;  // the 3 is the lowest
+  SECTION("the lowest first and a ball pocketed: the shooter continues") {
+    const auto d = nine_ball(s, events_of({hit(0, 3), drop(3)}));
+    CHECK(d.verdict.legal());
+    CHECK(d.verdict.next_player == 0);
+  }
+  SECTION("the lowest first and a cushion after: legal, the turn passes") {
+    const auto d = nine_ball(s, events_of({hit(0, 3), rail(0)}));
+    CHECK(d.verdict.legal());
+    CHECK(d.verdict.next_player == 1);
+    CHECK(d.next.player == 1);
+  }
+  SECTION("a cushion only before the contact: no rail") {
+    const auto d = nine_ball(s, events_of({rail(0), hit(0, 3)}));
+    CHECK(d.verdict.fouls == std::vector<Foul>{Foul::no_rail});
+  }
+  SECTION("a higher ball first: wrong ball first") {
+    const auto d = nine_ball(s, events_of({hit(0, 4), rail(4)}));
+    CHECK(d.verdict.fouls == std::vector<Foul>{Foul::wrong_ball_first});
+    CHECK(d.verdict.ball_in_hand == BallInHand::anywhere);
+  }
+  SECTION("the cue ball meets nothing") {
+    const auto d = nine_ball(s, events_of({rail(0), rail(0)}));
+    CHECK(d.verdict.fouls == std::vector<Foul>{Foul::no_contact});
+  }
+  SECTION("a scratch: the 9 pocketed on it is respotted, the others stay down") {
+    const auto d = nine_ball(s, events_of({hit(0, 3), hit(3, 9), drop(9), drop(4), drop(0, 2)}));
+    CHECK(d.verdict.fouls == std::vector<Foul>{Foul::scratch});
+    CHECK(d.verdict.respotted == std::vector<std::size_t>{9});
+    CHECK(d.next.on_table[9]);
+    CHECK_FALSE(d.next.on_table[4]);
+    CHECK_FALSE(d.verdict.game_over);
+  }
+  SECTION("a combination on the 9 wins") {
+    const auto d = nine_ball(s, events_of({hit(0, 3), hit(3, 9), drop(9)}));
+    CHECK(d.verdict.winner == 0u);
+  }
+}
+
+TEST_CASE("9-ball: three fouls in a row lose the game", "[simulation][games][nine_ball]") {
+  NineBallState s = after_break();
+  const auto miss = events_of({rail(0)});
+  auto d = nine_ball(s, miss);                             // player 0's first foul
+  d = nine_ball(d.next, events_of({hit(0, 1), rail(1)}));  // player 1 legal
+  d = nine_ball(d.next, miss);                             // 1 → 0: player 0's second
+  // Player 0's own shots: two fouls with no legal shot of theirs between (the opponent's does not count).
+  CHECK(d.next.fouls_in_a_row[0] == 2);
+  CHECK(d.next.fouls_in_a_row[1] == 0);
+  s = after_break();
+  for (int foul = 1; foul <= 3; ++foul) {
+    d = nine_ball(s, miss);
+    s = d.next;
+    s.player = 0;  // the opponent declines each time: player 0 shoots again
+  }
+  CHECK(d.verdict.game_over);
+  CHECK(d.verdict.winner == 1u);
+  // A legal shot between resets the count.
+  s = after_break();
+  s.fouls_in_a_row[0] = 2;
+  d = nine_ball(s, events_of({hit(0, 1), rail(1)}));
+  CHECK(d.next.fouls_in_a_row[0] == 0);
+}
+
+TEST_CASE("9-ball: input that is not one shot's, or a game over, is refused",
+          "[simulation][games][nine_ball]") {
+  NineBallState s = after_break();
+  CHECK_THROWS_WITH(nine_ball(s, std::vector<ShotEvent>{}), Catch::Contains("beginning with the strike"));
+  auto events = events_of({hit(0, 1), drop(1)});
+  s.on_table[1] = false;
+  CHECK_THROWS_WITH(nine_ball(s, events),
+                    Catch::Contains("ball 1 is pocketed, expected a ball on the table"));
+  s = after_break();
+  s.over = true;
+  CHECK_THROWS_WITH(nine_ball(s, events), Catch::Contains("the game is over"));
+  s = after_break();
+  s.player = 2;
+  CHECK_THROWS_WITH(nine_ball(s, events), Catch::Contains("player is 2"));
+  events.push_back(events.front());
+  CHECK_THROWS_WITH(nine_ball(after_break(), events), Catch::Contains("a second strike"));
+}
+
+TEST_CASE("8-ball: the break", "[simulation][games][eight_ball]") {
+  const EightBallState start;
+  SECTION("a scratch: ball in hand behind the head string") {
+    const auto d = eight_ball(start, events_of({hit(0, 1), rail(2), rail(3), rail(4), rail(5), drop(0)}));
+    CHECK(d.verdict.fouls == std::vector<Foul>{Foul::scratch});
+    CHECK(d.verdict.ball_in_hand == BallInHand::behind_head_string);
+    CHECK(d.verdict.next_player == 1);
+  }
+  SECTION("the 8 pocketed: respotted, the breaker continues") {
+    const auto d = eight_ball(start, events_of({hit(0, 1), hit(1, 8), drop(8)}));
+    CHECK(d.verdict.legal());
+    CHECK(d.verdict.respotted == std::vector<std::size_t>{8});
+    CHECK(d.next.on_table[8]);
+    CHECK(d.verdict.next_player == 0);
+    CHECK_FALSE(d.verdict.game_over);
+  }
+  SECTION("a ball pocketed: the breaker continues and the table stays open") {
+    const auto d = eight_ball(start, events_of({hit(0, 1), drop(3)}));
+    CHECK(d.verdict.next_player == 0);
+    CHECK(d.next.groups[0] == Group::open);
+  }
+  SECTION("nothing pocketed and three balls to a cushion: the incoming player takes the table as it lies") {
+    const auto d = eight_ball(start, events_of({hit(0, 1), rail(2), rail(3), rail(4)}));
+    CHECK(d.verdict.legal());
+    CHECK(d.verdict.next_player == 1);
+    CHECK(d.verdict.ball_in_hand == BallInHand::none);
+  }
+}
+
+TEST_CASE("8-ball: the open table, the groups and the 8", "[simulation][games][eight_ball]") {
+  EightBallState s;
+  s.breaking = false;
+  SECTION("the 8 first on an open table is a foul") {
+    const auto d = eight_ball(s, events_of({hit(0, 8), rail(8)}));
+    CHECK(d.verdict.fouls == std::vector<Foul>{Foul::wrong_ball_first});
+    CHECK(d.verdict.ball_in_hand == BallInHand::anywhere);
+  }
+  SECTION("a stripe first making a solid: legal, the shooter takes the solids") {
+    const auto d = eight_ball(s, events_of({hit(0, 12), hit(12, 2), drop(2)}));
+    CHECK(d.verdict.legal());
+    CHECK(d.next.groups[0] == Group::solids);
+    CHECK(d.next.groups[1] == Group::stripes);
+    CHECK(d.verdict.next_player == 0);
+  }
+  s.groups = {Group::solids, Group::stripes};
+  SECTION("the other group first is a foul") {
+    const auto d = eight_ball(s, events_of({hit(0, 12), drop(12)}));
+    CHECK(d.verdict.fouls == std::vector<Foul>{Foul::wrong_ball_first});
+    CHECK(d.verdict.next_player == 1);
+  }
+  SECTION("only the opponent's ball pocketed on a legal shot: the turn passes") {
+    const auto d = eight_ball(s, events_of({hit(0, 3), hit(3, 12), drop(12)}));
+    CHECK(d.verdict.legal());
+    CHECK(d.verdict.next_player == 1);
+    CHECK_FALSE(d.next.on_table[12]);
+  }
+  SECTION("the 8 pocketed before the group is cleared loses") {
+    const auto d = eight_ball(s, events_of({hit(0, 3), hit(3, 8), drop(8)}));
+    CHECK(d.verdict.game_over);
+    CHECK(d.verdict.winner == 1u);
+  }
+  for (std::size_t b = 1; b <= 7; ++b) s.on_table[b] = false;
+  SECTION("the group cleared: the 8 first and pocketed wins") {
+    REQUIRE(s.on_the_eight(0));
+    const auto d = eight_ball(s, events_of({hit(0, 8), drop(8, 3)}));
+    CHECK(d.verdict.legal());
+    CHECK(d.verdict.winner == 0u);
+  }
+  SECTION("the group cleared: a stripe first is a foul") {
+    const auto d = eight_ball(s, events_of({hit(0, 12), rail(12)}));
+    CHECK(d.verdict.fouls == std::vector<Foul>{Foul::wrong_ball_first});
+  }
+  SECTION("the 8 pocketed with a scratch loses") {
+    const auto d = eight_ball(s, events_of({hit(0, 8), drop(8), drop(0)}));
+    CHECK(d.verdict.fouls == std::vector<Foul>{Foul::scratch});
+    CHECK(d.verdict.winner == 1u);
+  }
+}
+
+TEST_CASE("9-ball through the engine: a scratch, a pot and a miss", "[simulation][games][nine_ball]") {
+  const PoolTable table = pool_table("9ft");
+  const PoolPhysics physics;
+  const double R = physics.radius;
+  NineBallState state = after_break();
+  for (std::size_t b = 2; b <= 9; ++b) state.on_table[b] = false;  // the 1 alone with the cue ball
+  const auto play = [&](std::vector<PoolBall> balls, const billiards::Cue<double>& cue) {
+    Shot shot(table, physics, std::move(balls));
+    shot.strike(0, cue);
+    shot.play();
+    return nine_ball(state, shot.events());
+  };
+  std::vector<PoolBall> balls(10);
+  for (std::size_t b = 0; b < 10; ++b) {
+    balls[b].position = {0.3 + 0.1 * static_cast<double>(b), 1.0, R};
+    balls[b].pocketed = b >= 2;
+  }
+  // The cue ball at (0.5, 0.3) rolled into the head-side corner pocket at (0, 0): a scratch, no contact.
+  balls[0].position = {0.5, 0.3, R};
+  balls[1].position = {2.0, 1.0, R};
+  const double away = std::atan2(-0.3, -0.5);
+  auto d = play(balls, {0.567, 3.0, away, 0.0, 0.0, 0.0, 1.0});
+  CHECK(d.verdict.fouls == std::vector<Foul>{Foul::no_contact, Foul::scratch});
+  // The 1 in front of the foot-side corner pocket at (L, W), the cue ball behind it on the same line,
+  // drawn back: the 1 drops, the cue ball stays on the table.
+  const Eigen::Vector3d corner(table.length, table.width, R),
+      one = corner - 0.2 * Eigen::Vector3d(1, 1, 0).normalized();
+  balls[1].position = one;
+  balls[0].position = one - 0.5 * Eigen::Vector3d(1, 1, 0).normalized();
+  d = play(balls, {0.567, 2.0, M_PI / 4, 0.0, 0.0, -0.4, 1.0});
+  CHECK(d.verdict.legal());
+  CHECK(d.verdict.potted == std::vector<std::size_t>{1});
+  CHECK(d.verdict.next_player == 0);
+  // Aimed away from the 1 along the side cushion: no contact.
+  d = play(balls, {0.567, 1.0, -3 * M_PI / 4, 0.0, 0.0, 0.0, 1.0});
+  CHECK(d.verdict.fouls.front() == Foul::no_contact);
+}
