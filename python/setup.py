@@ -52,7 +52,7 @@ if not (root / "runtime" / "include").is_dir():
              f"{root / 'runtime' / 'include'} is missing")
 
 sources = [str(Path("src") / name) for name in ("module.cpp", "runtime.cpp", "engines.cpp", "batch.cpp", "files.cpp",
-                                                                   "table_gas.cpp")]
+                                                                   "table_gas.cpp", "games.cpp")]
 extension = Extension(
     "billiards._billiards",
     sources=sources,

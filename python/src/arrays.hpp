@@ -84,5 +84,6 @@ void bind_engines(py::module_& m);
 void bind_batch(py::module_& m);
 void bind_files(py::module_& m);
 void bind_table_and_gas(py::module_& m);
+void bind_games(py::module_& m);
 
 }  // namespace billiards::python

@@ -13,4 +13,5 @@ PYBIND11_MODULE(_billiards, m) {
   billiards::python::bind_batch(m);
   billiards::python::bind_files(m);
   billiards::python::bind_table_and_gas(m);
+  billiards::python::bind_games(m);
 }

@@ -284,3 +284,28 @@ TEST_CASE("9-ball through the engine: a scratch, a pot and a miss", "[simulation
   d = play(balls, {0.567, 1.0, -3 * M_PI / 4, 0.0, 0.0, 0.0, 1.0});
   CHECK(d.verdict.fouls.front() == Foul::no_contact);
 }
+
+TEST_CASE("a shot's end starts the next: a ball at rest in a pocket's mouth is taken, one in a cushion not",
+          "[simulation][games][shot]") {
+  const PoolTable table = pool_table("7ft");
+  const PoolPhysics physics;
+  const double R = physics.radius;
+  const auto pockets = shot::capture_circles(table, R);
+  // Along the corner's diagonal from the cloth towards the pocket: the last point clear of the jaws and
+  // outside every capture circle lies beyond the noses' lines, in the mouth.
+  Eigen::Vector2d mouth(0, 0);
+  for (double d = 0; d < 0.1; d += 1e-4) {
+    const Eigen::Vector2d q(table.length - R + d, table.width - R + d);
+    const bool clear =
+        !shot::broken_invariant(table, table.cushions(), table.jaws(), pockets, {q}, {true}, R);
+    const bool captured = (q - pockets[3].centre).norm() < pockets[3].radius;
+    if (clear && !captured) mouth = q;
+  }
+  REQUIRE(mouth.x() > table.length - R);  // beyond the foot cushion's nose line
+  std::vector<PoolBall> balls(2);
+  balls[0].position = {0.5, 0.5, R};
+  balls[1].position = {mouth.x(), mouth.y(), R};
+  CHECK_NOTHROW(Shot(table, physics, balls));
+  balls[1].position = {table.length - 0.5 * R, 0.5, R};  // inside the foot cushion
+  CHECK_THROWS_WITH(Shot(table, physics, balls), Catch::Contains("ball 1 is at"));
+}

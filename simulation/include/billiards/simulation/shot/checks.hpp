@@ -63,59 +63,6 @@ inline void validate(const ShotOptions& options) {
                                       "a positive, finite speed (m/s)");
 }
 
-/// Throws std::invalid_argument naming the ball where `balls` cannot start a shot on `table` with balls
-/// of radius R: a state not finite; a velocity component, or R times a spin component, beyond
-/// billiards::component_limit (the checked calls' bound, within which the kinetic energy and every
-/// contact stay finite), struck or not; a ball in play whose centre is not on the cloth at least a
-/// radius inside every cushion's nose, or whose velocity is not horizontal; two balls in play
-/// overlapping.
-inline void validate(const std::vector<PoolBall>& balls, const PoolTable& table, double R) {
-  using detail::shortest;
-  for (std::size_t i = 0; i < balls.size(); ++i) {
-    const PoolBall& b = balls[i];
-    const auto fail = [&](const std::string& what) {
-      throw std::invalid_argument("ball " + std::to_string(i) + " " + what);
-    };
-    if (!b.position.allFinite() || !b.velocity.allFinite() || !b.angular_velocity.allFinite())
-      fail("has a position, velocity or spin that is not finite");
-    const double limit = billiards::component_limit<double>();
-    const auto bounded = [&](const char* what, const Eigen::Vector3d& v, double scale, const char* unit) {
-      if (!(scale * v.cwiseAbs().maxCoeff() <= limit))
-        fail("has " + std::string(what) + " (" + shortest(v.x()) + ", " + shortest(v.y()) + ", " +
-             shortest(v.z()) + ")" + unit + ", expected components" +
-             (scale == 1 ? "" : " times the radius") + " of magnitude at most " + shortest(limit) +
-             " (billiards::component_limit: within it the energy and every contact stay finite)");
-    };
-    bounded("velocity", b.velocity, 1, " m/s");
-    bounded("spin", b.angular_velocity, R, " rad/s");
-    if (b.pocketed) continue;
-    const double x = b.position.x(), y = b.position.y(), slack = R * overlap_tolerance;
-    if (!(x >= R - slack && x <= table.length - R + slack && y >= R - slack && y <= table.width - R + slack))
-      fail("is at (" + shortest(x) + ", " + shortest(y) +
-           "), expected a centre on the cloth at least a radius (" + shortest(R) +
-           ") inside every cushion's nose");
-    if (b.velocity.z() != 0)
-      fail("has v_z = " + shortest(b.velocity.z()) + ", expected 0 (a ball on the cloth moves horizontally)");
-  }
-  for (std::size_t i = 0; i < balls.size(); ++i) {
-    for (std::size_t j = i + 1; j < balls.size(); ++j) {
-      if (balls[i].pocketed || balls[j].pocketed) continue;
-      // The squared distance first (the centres lie on the cloth, so the squares neither overflow nor,
-      // short of an overlap, underflow), a little above the limit's square for its rounding; the
-      // distance itself only where that leaves an overlap possible.
-      const double dx = balls[i].position.x() - balls[j].position.x(),
-                   dy = balls[i].position.y() - balls[j].position.y();
-      const double limit = 2 * R * (1 - overlap_tolerance);
-      if (!(dx * dx + dy * dy < limit * limit * (1 + 1e-12))) continue;
-      const double d = std::hypot(dx, dy);
-      if (d < limit)
-        throw std::invalid_argument("balls " + std::to_string(i) + " and " + std::to_string(j) +
-                                    " overlap: their centres are " + shortest(d) +
-                                    " m apart, expected at least " + shortest(2 * R) + " (two radii)");
-    }
-  }
-}
-
 /// The pockets' capture circles a shot plays with: the table's, each widened where needed to reach into
 /// both its jaws' reach (a centre comes no nearer a jaw's axis than R + ρ_jaw), so that no ball can pass
 /// between a jaw and the pocket (pooltool's geometry leaves a gap of 0.2 mm there at the corners, which
@@ -175,6 +122,67 @@ inline void validate(const std::vector<PoolBall>& balls, const PoolTable& table,
     }
   }
   return std::nullopt;
+}
+
+/// Throws std::invalid_argument naming the ball where `balls` cannot start a shot on `table` with balls
+/// of radius R: a state not finite; a velocity component, or R times a spin component, beyond
+/// billiards::component_limit (the checked calls' bound, within which the kinetic energy and every
+/// contact stay finite), struck or not; a ball in play whose centre is neither on the cloth at least a
+/// radius inside every cushion's nose nor in a pocket's mouth clear of the cushions and jaws (where a
+/// shot may leave a ball), or whose velocity is not horizontal; two balls in play overlapping.
+inline void validate(const std::vector<PoolBall>& balls, const PoolTable& table, double R) {
+  using detail::shortest;
+  for (std::size_t i = 0; i < balls.size(); ++i) {
+    const PoolBall& b = balls[i];
+    const auto fail = [&](const std::string& what) {
+      throw std::invalid_argument("ball " + std::to_string(i) + " " + what);
+    };
+    if (!b.position.allFinite() || !b.velocity.allFinite() || !b.angular_velocity.allFinite())
+      fail("has a position, velocity or spin that is not finite");
+    const double limit = billiards::component_limit<double>();
+    const auto bounded = [&](const char* what, const Eigen::Vector3d& v, double scale, const char* unit) {
+      if (!(scale * v.cwiseAbs().maxCoeff() <= limit))
+        fail("has " + std::string(what) + " (" + shortest(v.x()) + ", " + shortest(v.y()) + ", " +
+             shortest(v.z()) + ")" + unit + ", expected components" +
+             (scale == 1 ? "" : " times the radius") + " of magnitude at most " + shortest(limit) +
+             " (billiards::component_limit: within it the energy and every contact stay finite)");
+    };
+    bounded("velocity", b.velocity, 1, " m/s");
+    bounded("spin", b.angular_velocity, R, " rad/s");
+    if (b.pocketed) continue;
+    const double x = b.position.x(), y = b.position.y(), slack = R * overlap_tolerance;
+    // Beyond a nose's line only in a pocket's mouth, clear of the cushions and the jaws: where a shot
+    // may leave a ball at rest (the engine's own invariant), so that a shot's end can start the next.
+    const bool inside =
+        x >= R - slack && x <= table.length - R + slack && y >= R - slack && y <= table.width - R + slack;
+    const auto in_mouth = [&] {
+      return !broken_invariant(table, table.cushions(), table.jaws(), capture_circles(table, R), {{x, y}},
+                               {true}, R);
+    };
+    if (!inside && !in_mouth())
+      fail("is at (" + shortest(x) + ", " + shortest(y) +
+           "), expected a centre on the cloth at least a radius (" + shortest(R) +
+           ") inside every cushion's nose, or in a pocket's mouth clear of its jaws");
+    if (b.velocity.z() != 0)
+      fail("has v_z = " + shortest(b.velocity.z()) + ", expected 0 (a ball on the cloth moves horizontally)");
+  }
+  for (std::size_t i = 0; i < balls.size(); ++i) {
+    for (std::size_t j = i + 1; j < balls.size(); ++j) {
+      if (balls[i].pocketed || balls[j].pocketed) continue;
+      // The squared distance first (the centres lie on the cloth, so the squares neither overflow nor,
+      // short of an overlap, underflow), a little above the limit's square for its rounding; the
+      // distance itself only where that leaves an overlap possible.
+      const double dx = balls[i].position.x() - balls[j].position.x(),
+                   dy = balls[i].position.y() - balls[j].position.y();
+      const double limit = 2 * R * (1 - overlap_tolerance);
+      if (!(dx * dx + dy * dy < limit * limit * (1 + 1e-12))) continue;
+      const double d = std::hypot(dx, dy);
+      if (d < limit)
+        throw std::invalid_argument("balls " + std::to_string(i) + " and " + std::to_string(j) +
+                                    " overlap: their centres are " + shortest(d) +
+                                    " m apart, expected at least " + shortest(2 * R) + " (two radii)");
+    }
+  }
 }
 
 }  // namespace billiards::simulation::shot

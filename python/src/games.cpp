@@ -1,0 +1,84 @@
+// The rules of the games for Python: a game's state in, the rules' decision on a Shot's events and the
+// state after it out, as plain Python values (billiards/games.py wraps them).
+#include "shots.hpp"
+
+#include <billiards/simulation/games.hpp>
+
+#include <pybind11/stl.h>
+
+#include <string>
+#include <vector>
+
+namespace billiards::python {
+namespace {
+
+namespace games = simulation::games;
+
+py::dict verdict_dict(const games::Verdict& v) {
+  py::dict d;
+  py::list fouls;
+  for (const games::Foul f : v.fouls) fouls.append(games::foul_name(f));
+  d["fouls"] = fouls;
+  d["potted"] = v.potted;
+  d["respotted"] = v.respotted;
+  d["next_player"] = v.next_player;
+  d["ball_in_hand"] = static_cast<int>(v.ball_in_hand);
+  d["game_over"] = v.game_over;
+  d["winner"] = v.winner ? py::cast(*v.winner) : py::none();
+  d["reason"] = v.reason;
+  return d;
+}
+
+template <typename State>
+void common_from(State& s, const std::vector<bool>& on_table, std::size_t player, bool breaking, int ball_in_hand) {
+  if (on_table.size() != s.on_table.size())
+    throw py::value_error("on_table has " + std::to_string(on_table.size()) + " balls, expected " +
+                          std::to_string(s.on_table.size()));
+  std::copy(on_table.begin(), on_table.end(), s.on_table.begin());
+  s.player = player;
+  s.breaking = breaking;
+  s.ball_in_hand = static_cast<games::BallInHand>(ball_in_hand);
+}
+
+template <typename State>
+py::dict common_to(const State& s) {
+  py::dict d;
+  d["on_table"] = std::vector<bool>(s.on_table.begin(), s.on_table.end());
+  d["player"] = s.player;
+  d["breaking"] = s.breaking;
+  d["ball_in_hand"] = static_cast<int>(s.ball_in_hand);
+  d["over"] = s.over;
+  d["winner"] = s.winner ? py::cast(*s.winner) : py::none();
+  return d;
+}
+
+py::tuple nine_ball(const std::vector<bool>& on_table, std::size_t player, bool breaking,
+                    const std::array<int, 2>& fouls, int ball_in_hand, const PyShot& shot) {
+  games::NineBallState s;
+  common_from(s, on_table, player, breaking, ball_in_hand);
+  s.fouls_in_a_row = fouls;
+  const auto d = games::nine_ball(s, shot.shot().events());
+  py::dict next = common_to(d.next);
+  next["fouls_in_a_row"] = d.next.fouls_in_a_row;
+  return py::make_tuple(verdict_dict(d.verdict), next);
+}
+
+py::tuple eight_ball(const std::vector<bool>& on_table, std::size_t player, bool breaking,
+                     const std::array<int, 2>& groups, int ball_in_hand, const PyShot& shot) {
+  games::EightBallState s;
+  common_from(s, on_table, player, breaking, ball_in_hand);
+  s.groups = {static_cast<games::Group>(groups[0]), static_cast<games::Group>(groups[1])};
+  const auto d = games::eight_ball(s, shot.shot().events());
+  py::dict next = common_to(d.next);
+  next["groups"] = std::array<int, 2>{static_cast<int>(d.next.groups[0]), static_cast<int>(d.next.groups[1])};
+  return py::make_tuple(verdict_dict(d.verdict), next);
+}
+
+}  // namespace
+
+void bind_games(py::module_& m) {
+  m.def("nine_ball", &nine_ball);
+  m.def("eight_ball", &eight_ball);
+}
+
+}  // namespace billiards::python
