@@ -1,5 +1,6 @@
-"""The games: the rules of 9-ball and 8-ball (WPA) decided from a shot's events, and a game environment
-with the ``reset()`` / ``step(action)`` conventions of Gymnasium (without depending on it).
+"""The games: the rules of 9-ball and 8-ball (WPA) and of three-cushion (UMB) decided from a shot's
+events, and a game environment with the ``reset()`` / ``step(action)`` conventions of Gymnasium (without
+depending on it).
 
 Which rules are in and which are left out: docs/games.md. Ball 0 is the cue ball, the object balls are
 numbered as in the game (9-ball: 1 to 9; 8-ball: 1 to 15, the solids 1–7, the stripes 9–15).
@@ -33,6 +34,7 @@ class Verdict:
     game_over: bool        #: the game has ended
     winner: int | None     #: who won it
     reason: str            #: the rule applied, in words
+    points: int = 0        #: the points the shot scored for its shooter
 
     @property
     def legal(self) -> bool:
@@ -68,9 +70,21 @@ class EightBallState:
     winner: int | None = None
 
 
+@dataclass
+class ThreeCushionState:
+    """A game of three-cushion: ball 0 is player 0's cue ball (white), ball 1 player 1's (yellow), ball 2
+    the red; each player's points, whose turn, the points that win, the end."""
+
+    scores: tuple = (0, 0)
+    player: int = 0
+    target: int = 40
+    over: bool = False
+    winner: int | None = None
+
+
 def _verdict(d: dict) -> Verdict:
     return Verdict(list(d["fouls"]), list(d["potted"]), list(d["respotted"]), d["next_player"],
-                   BALL_IN_HAND[d["ball_in_hand"]], d["game_over"], d["winner"], d["reason"])
+                   BALL_IN_HAND[d["ball_in_hand"]], d["game_over"], d["winner"], d["reason"], d["points"])
 
 
 def _check(function: str, state, kind, shot):
@@ -78,7 +92,7 @@ def _check(function: str, state, kind, shot):
         raise TypeError(f"{function}: state is {type(state).__name__}, expected a billiards.games.{kind.__name__}")
     if not isinstance(shot, Shot):
         raise TypeError(f"{function}: shot is {type(shot).__name__}, expected a billiards.Shot that was played")
-    if state.ball_in_hand not in BALL_IN_HAND:
+    if getattr(state, "ball_in_hand", "none") not in BALL_IN_HAND:
         raise ValueError(f"{function}: ball_in_hand is {state.ball_in_hand!r}, expected one of {BALL_IN_HAND}")
 
 
@@ -109,6 +123,18 @@ def eight_ball(state: EightBallState, shot: Shot):
     return _verdict(verdict), EightBallState(list(after["on_table"]), after["player"], after["breaking"],
                                              tuple(GROUPS[g] for g in after["groups"]),
                                              BALL_IN_HAND[after["ball_in_hand"]], after["over"], after["winner"])
+
+
+def three_cushion(state: ThreeCushionState, shot: Shot):
+    """The rules' decision on ``shot`` (its events, from its strike of the shooter's cue ball, ball
+    ``state.player``) in the game ``state``: a point when that ball meets both others and at least three
+    cushions before the second. Returns (Verdict, the ThreeCushionState after it)."""
+    _check("three_cushion", state, ThreeCushionState, shot)
+    if state.over:
+        _over("three_cushion")
+    verdict, after = _billiards.three_cushion(list(state.scores), int(state.player), int(state.target), shot._shot)
+    return _verdict(verdict), ThreeCushionState(tuple(after["scores"]), after["player"], after["target"],
+                                                after["over"], after["winner"])
 
 
 def _over(function: str):

@@ -26,11 +26,13 @@ py::dict verdict_dict(const games::Verdict& v) {
   d["game_over"] = v.game_over;
   d["winner"] = v.winner ? py::cast(*v.winner) : py::none();
   d["reason"] = v.reason;
+  d["points"] = v.points;
   return d;
 }
 
 template <typename State>
-void common_from(State& s, const std::vector<bool>& on_table, std::size_t player, bool breaking, int ball_in_hand) {
+void common_from(State& s, const std::vector<bool>& on_table, std::size_t player, bool breaking,
+                 int ball_in_hand) {
   if (on_table.size() != s.on_table.size())
     throw py::value_error("on_table has " + std::to_string(on_table.size()) + " balls, expected " +
                           std::to_string(s.on_table.size()));
@@ -74,11 +76,28 @@ py::tuple eight_ball(const std::vector<bool>& on_table, std::size_t player, bool
   return py::make_tuple(verdict_dict(d.verdict), next);
 }
 
+py::tuple three_cushion(const std::array<int, 2>& scores, std::size_t player, int target,
+                        const PyShot& shot) {
+  games::ThreeCushionState s;
+  s.scores = scores;
+  s.player = player;
+  s.target = target;
+  const auto d = games::three_cushion(s, shot.shot().events());
+  py::dict next;
+  next["scores"] = d.next.scores;
+  next["player"] = d.next.player;
+  next["target"] = d.next.target;
+  next["over"] = d.next.over;
+  next["winner"] = d.next.winner ? py::cast(*d.next.winner) : py::none();
+  return py::make_tuple(verdict_dict(d.verdict), next);
+}
+
 }  // namespace
 
 void bind_games(py::module_& m) {
   m.def("nine_ball", &nine_ball);
   m.def("eight_ball", &eight_ball);
+  m.def("three_cushion", &three_cushion);
 }
 
 }  // namespace billiards::python

@@ -87,3 +87,31 @@ def test_the_environment_refuses_bad_actions():
         env.step([1.0, 0.0, 0.0, 1.5])
     with pytest.raises(ValueError, match="game"):
         games.PoolEnv("snooker")
+
+
+def test_three_cushion_scores_a_bank_into_both_balls():
+    # The white banked off three cushions into the red and then the yellow, on a table without a pocket
+    # in its way: the rules count the cushions before the second ball.
+    table = billiards.pool_table("9ft")
+    layout = billiards.balls([[1.0, 0.3], [1.9, 0.9], [1.7, 0.95]])
+    state = games.ThreeCushionState(target=1)
+    for azimuth in np.linspace(0.2, 1.4, 25):
+        shot = played(layout, billiards.Cue(4.0, azimuth=azimuth), table)
+        if any(shot.events["kind"] == "pocket"):
+            continue
+        verdict, after = games.three_cushion(state, shot)
+        assert verdict.points in (0, 1) and verdict.legal
+        assert after.over == (verdict.points == 1)
+        kinds = [(str(e["kind"]), int(e["first"]), int(e["second"])) for e in shot.events]
+        hits, cushions, scored = set(), 0, False
+        for kind, first, second in kinds:
+            if kind in ("cushion", "jaw") and first == 0:
+                cushions += 1
+            if kind == "ball" and 0 in (first, second):
+                hits.add(first + second)
+                if len(hits) == 2:
+                    scored = cushions >= 3
+                    break
+        assert scored == (verdict.points == 1)
+    with pytest.raises(ValueError, match="the strike of ball 1"):
+        games.three_cushion(games.ThreeCushionState(player=1), played(layout, billiards.Cue(1.0)))

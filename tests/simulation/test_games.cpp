@@ -309,3 +309,48 @@ TEST_CASE("a shot's end starts the next: a ball at rest in a pocket's mouth is t
   balls[1].position = {table.length - 0.5 * R, 0.5, R};  // inside the foot cushion
   CHECK_THROWS_WITH(Shot(table, physics, balls), Catch::Contains("ball 1 is at"));
 }
+
+TEST_CASE("three-cushion: a point is both object balls and three cushions before the second",
+          "[simulation][games][three_cushion]") {
+  ThreeCushionState s;
+  const auto decide = [&](std::vector<ShotEvent> events) { return three_cushion(s, events); };
+  SECTION("three cushions, then both balls") {
+    const auto d = decide(events_of({rail(0, 1), rail(0, 2), rail(0, 3), hit(0, 2), hit(0, 1)}));
+    CHECK(d.verdict.points == 1);
+    CHECK(d.next.scores[0] == 1);
+    CHECK(d.verdict.next_player == 0);
+  }
+  SECTION("the first ball, three cushions, the second") {
+    CHECK(decide(events_of({hit(0, 2), rail(0, 1), rail(0, 3), rail(0, 0), hit(0, 1)})).verdict.points == 1);
+  }
+  SECTION("two cushions before the second ball, the third after it: no point") {
+    const auto d = decide(events_of({hit(0, 2), rail(0, 1), rail(0, 3), hit(0, 1), rail(0, 0)}));
+    CHECK(d.verdict.points == 0);
+    CHECK(d.verdict.next_player == 1);
+    CHECK(d.next.player == 1);
+  }
+  SECTION("one object ball only, however many cushions") {
+    CHECK(decide(events_of({hit(0, 2), rail(0), rail(0), rail(0), rail(0), hit(0, 2)})).verdict.points == 0);
+  }
+  SECTION("the object balls meeting each other, or their cushions, count for nothing") {
+    CHECK(decide(events_of({hit(0, 2), rail(2), rail(2), rail(2), hit(2, 1)})).verdict.points == 0);
+  }
+  SECTION("player 1 strikes the yellow, ball 1") {
+    s.player = 1;
+    auto events = events_of({rail(1), rail(1), rail(1), hit(1, 0), hit(2, 1)});
+    events[0].first = events[0].second = 1;
+    const auto d = decide(events);
+    CHECK(d.verdict.points == 1);
+    CHECK(d.next.scores[1] == 1);
+    CHECK_THROWS_WITH(decide(events_of({hit(0, 2)})), Catch::Contains("the strike of ball 1"));
+  }
+  SECTION("the target reached wins") {
+    s.scores = {39, 12};
+    const auto d = decide(events_of({rail(0), rail(0), rail(0), hit(0, 1), hit(0, 2)}));
+    CHECK(d.verdict.game_over);
+    CHECK(d.verdict.winner == 0u);
+  }
+  SECTION("a pocket is not a carom table's") {
+    CHECK_THROWS_WITH(decide(events_of({hit(0, 2), drop(2)})), Catch::Contains("carom table"));
+  }
+}

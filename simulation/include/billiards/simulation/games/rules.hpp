@@ -2,7 +2,7 @@
 /// What the rules of every game read from a shot: its events summed up (the cue ball's first contact,
 /// the cushions met after it, the balls pocketed, the object balls driven to a cushion) and what a
 /// rule's decision says (legal or which foul, what was potted and must be respotted, who plays next and
-/// from where, whether the game is over). The games: nine_ball.hpp, eight_ball.hpp.
+/// from where, whether the game is over). The games: nine_ball.hpp, eight_ball.hpp, three_cushion.hpp.
 #pragma once
 
 #include <billiards/simulation/shot/event.hpp>
@@ -93,6 +93,7 @@ struct Verdict {
   std::vector<Foul> fouls;                     ///< every foul committed (none: a legal shot)
   std::vector<std::size_t> potted;             ///< the object balls pocketed, in the order they dropped
   std::vector<std::size_t> respotted;          ///< the balls to put back on their spot
+  int points = 0;                              ///< the points the shot scored for its shooter
   std::size_t next_player = 0;                 ///< who shoots next (0 or 1)
   BallInHand ball_in_hand = BallInHand::none;  ///< where the next player may place the cue ball
   bool game_over = false;                      ///< the game has ended
