@@ -63,6 +63,30 @@ def _cue_array(cues) -> np.ndarray:
                     f"of billiards.cue_dtype (billiards.cues(...))")
 
 
+def broadcast_batch(function: str, layouts, cues, struck):
+    """A batch's layouts, cues and struck balls checked and broadcast to one count S of shots: returns
+    (S, layouts (S, N), cues (S,) of cue_dtype, struck (S,) int64), each C-contiguous."""
+    layouts = check_layout(function, layouts)
+    if layouts.ndim not in (1, 2):
+        raise ValueError(f"{function}: layouts has shape {layouts.shape}, expected (S, N) or (N,)")
+    cue = _cue_array(cues)
+    if cue.ndim > 1:
+        raise ValueError(f"{function}: cues has shape {cue.shape}, expected (S,) or one cue")
+    struck = np.asarray(struck)
+    if struck.dtype.kind not in "iu" or struck.ndim > 1:
+        raise TypeError(f"{function}: struck is {_describe(struck)}, expected a ball's index or one a shot")
+    shots_of = {"layouts": layouts.shape[0] if layouts.ndim == 2 else None,
+                "cues": cue.shape[0] if cue.ndim == 1 else None,
+                "struck": struck.shape[0] if struck.ndim == 1 else None}
+    counts = {k: v for k, v in shots_of.items() if v is not None}
+    if len(set(counts.values())) > 1:
+        raise ValueError(f"{function}: the shots' counts differ ({counts}); expected one count S for all")
+    shots = next(iter(counts.values()), 1)
+    return (shots, np.ascontiguousarray(np.broadcast_to(layouts, (shots, layouts.shape[-1]))),
+            np.ascontiguousarray(np.broadcast_to(cue, (shots,))),
+            np.ascontiguousarray(np.broadcast_to(struck, (shots,)), dtype=np.int64))
+
+
 def play_shots(table: PoolTable, physics: PoolPhysics | None, layouts, cues, *, struck=0,
                options: ShotOptions | None = None, threads: int | None = None, events: bool = False) -> ShotResults:
     """Plays a batch of shots, each its own layout and cue, on ``threads`` threads (every core this
@@ -98,28 +122,10 @@ def play_shots(table: PoolTable, physics: PoolPhysics | None, layouts, cues, *, 
     options = ShotOptions() if options is None else options
     if not isinstance(physics, PoolPhysics) or not isinstance(options, ShotOptions):
         raise TypeError(f"{function}: physics and options must be a billiards.PoolPhysics and a billiards.ShotOptions")
-    layouts = check_layout(function, layouts)
-    if layouts.ndim not in (1, 2):
-        raise ValueError(f"{function}: layouts has shape {layouts.shape}, expected (S, N) or (N,)")
-    cue = _cue_array(cues)
-    if cue.ndim > 1:
-        raise ValueError(f"{function}: cues has shape {cue.shape}, expected (S,) or one cue")
-    struck = np.asarray(struck)
-    if struck.dtype.kind not in "iu" or struck.ndim > 1:
-        raise TypeError(f"{function}: struck is {_describe(struck)}, expected a ball's index or one a shot")
-    shots_of = {"layouts": layouts.shape[0] if layouts.ndim == 2 else None,
-                "cues": cue.shape[0] if cue.ndim == 1 else None,
-                "struck": struck.shape[0] if struck.ndim == 1 else None}
-    counts = {k: v for k, v in shots_of.items() if v is not None}
-    if len(set(counts.values())) > 1:
-        raise ValueError(f"{function}: the shots' counts differ ({counts}); expected one count S for all")
-    shots = next(iter(counts.values()), 1)
+    shots, layouts, cue_rows, struck = broadcast_batch(function, layouts, cues, struck)
     balls = layouts.shape[-1]
-    layouts = np.ascontiguousarray(np.broadcast_to(layouts, (shots, balls)))
-    cue_rows = np.broadcast_to(cue, (shots,))
     cue_numbers = np.ascontiguousarray(np.stack([cue_rows[name].astype(np.float64) for name in cue_dtype.names],
                                                 axis=-1).reshape(shots, 7))
-    struck = np.ascontiguousarray(np.broadcast_to(struck, (shots,)), dtype=np.int64)
     if np.any(struck >= balls):
         bad = int(np.argmax(struck >= balls))
         raise ValueError(f"{function}: struck[{bad}] is {struck[bad]}, expected a ball's index below {balls}")

@@ -161,8 +161,8 @@ class Gas(_Engine):
         velocity = _rows("Gas", "velocity", velocity, dimension, len(position))
         engine = _billiards.Gas2 if dimension == 2 else _billiards.Gas3
         self._engine = engine(position, velocity, float(side), float(radius), float(mass),
-                              [] if radii is None else [float(r) for r in np.asarray(radii, dtype=np.float64)],
-                              [] if masses is None else [float(m) for m in np.asarray(masses, dtype=np.float64)],
+                              [] if radii is None else np.asarray(radii, dtype=np.float64),
+                              [] if masses is None else np.asarray(masses, dtype=np.float64),
                               int(max_events_without_collision))
 
     @classmethod

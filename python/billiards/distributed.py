@@ -9,9 +9,9 @@ from __future__ import annotations
 
 import numpy as np
 
-from ._batch import ShotResults, _cue_array
+from ._batch import ShotResults, broadcast_batch
 from ._batch import play_shots as _play_locally
-from ._shot import PoolPhysics, PoolTable, ShotOptions, check_layout
+from ._shot import PoolPhysics, PoolTable, ShotOptions
 
 
 def _play_chunk(table, physics, options, layouts, cues, struck, threads, events):
@@ -36,21 +36,12 @@ def play_shots(client, table: PoolTable, physics: PoolPhysics | None, layouts, c
         raise ValueError(f"{function}: chunk_size is {chunk_size!r}, expected a whole number >= 1")
     physics = PoolPhysics() if physics is None else physics
     options = ShotOptions() if options is None else options
-    layouts = check_layout(function, layouts)
-    cue = _cue_array(cues)
-    struck = np.asarray(struck)
-    sizes = [a.shape[0] for a, full in ((layouts, 2), (cue, 1), (struck, 1)) if a.ndim == full]
-    if len(set(sizes)) > 1:
-        raise ValueError(f"{function}: the shots' counts differ ({sizes}); expected one count S for all")
-    shots = sizes[0] if sizes else 1
-    layouts = np.broadcast_to(layouts, (shots, layouts.shape[-1]))
-    cue = np.broadcast_to(cue, (shots,))
-    struck = np.broadcast_to(struck, (shots,))
+    shots, layouts, cue, struck = broadcast_batch(function, layouts, cues, struck)
     futures = []
     for begin in range(0, shots, int(chunk_size)):
         end = min(begin + int(chunk_size), shots)
-        futures.append(client.submit(_play_chunk, table, physics, options, np.ascontiguousarray(layouts[begin:end]),
-                                     np.ascontiguousarray(cue[begin:end]), np.ascontiguousarray(struck[begin:end]),
+        futures.append(client.submit(_play_chunk, table, physics, options, layouts[begin:end],
+                                     cue[begin:end], struck[begin:end],
                                      threads, events, pure=False))
     parts = client.gather(futures)
     if not parts:
