@@ -25,6 +25,7 @@
 #include <filesystem>
 #include <iostream>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 namespace {
@@ -48,7 +49,7 @@ using namespace billiards::simulation;
 
 // What the command line asks for.
 struct Options {
-  std::string table_name = "9ft", rack_name = "9ball", setup_file, offset_text = "0,0";
+  std::string table_name = "9ft", rack_name, setup_file, offset_text = "0,0";
   std::string json_file, svg_file, html_file, trajectories_file, game;
   double jitter = 0, speed = 8, azimuth = 0, elevation = 0, cue_mass = 0.567, tip_restitution = 1, rate = 100;
   std::uint64_t seed = 0, ball = 0, event_limit = ShotOptions{}.event_limit;
@@ -74,10 +75,14 @@ int bad(const std::string& what) {
 std::optional<int> parse(int argc, char** argv, Options& o) {
   using billiards_support::count_at_least, billiards_support::finite_number, billiards_support::path_given;
   CLI::App app{"A shot on a pool table played from the cue to rest, event by event.", "billiards-shot"};
-  app.add_option("--table", o.table_name, "The table: 7ft, 8ft or 9ft (default 9ft)")
-      ->check(CLI::IsMember({"7ft", "8ft", "9ft"}));
-  auto* rack_option = app.add_option("--rack", o.rack_name, "The rack: 9ball or 8ball (default 9ball)")
-                          ->check(CLI::IsMember({"9ball", "8ball"}));
+  app.add_option("--table", o.table_name,
+                 "The table and its balls: 7ft, 8ft or 9ft (pool), snooker or carom (default 9ft)")
+      ->check(CLI::IsMember({"7ft", "8ft", "9ft", "snooker", "carom"}));
+  auto* rack_option =
+      app.add_option("--rack", o.rack_name,
+                     "The starting position: 9ball, 8ball, snooker or 3cushion (default: 9ball on a pool table, "
+                     "snooker on the snooker table, 3cushion on the carom table)")
+          ->check(CLI::IsMember({"9ball", "8ball", "snooker", "3cushion"}));
   app.add_option("--jitter", o.jitter, "The rack's gaps as a fraction of the radius, in [0, 1] (default 0)")
       ->check(finite_number(false));
   app.add_option("--seed", o.seed, "The seed of the rack's jitter (default 0)")->check(count_at_least(0));
@@ -105,9 +110,10 @@ std::optional<int> parse(int argc, char** argv, Options& o) {
   app.add_option("--check-invariants", o.check_invariants,
                  "Check overlaps, the cloth and the energy at every event (default true)");
   app.add_option("--game", o.game,
-                 "Decide the shot by the rules of GAME, 9ball or 8ball (WPA; docs/games.md): a rack's shot is "
-                 "the break, a setup's a shot of the game as it lies; the cue ball is ball 0")
-      ->check(CLI::IsMember({"9ball", "8ball"}));
+                 "Decide the shot by the rules of GAME: 9ball or 8ball (WPA), snooker (WPBSA) or 3cushion (UMB) "
+                 "(docs/games.md): a rack's shot is the break, a setup's a shot of the game as it lies; the "
+                 "striker is player 0, ball 0")
+      ->check(CLI::IsMember({"9ball", "8ball", "snooker", "3cushion"}));
   app.add_option("--json", o.json_file, "Write the events as JSON to FILE")
       ->check(path_given("a file's path"));
   app.add_option("--svg", o.svg_file, "Write the shot as SVG to FILE")->check(path_given("a file's path"));
@@ -147,15 +153,28 @@ std::optional<int> load(Options& o, Loaded& l) {
   } catch (const std::invalid_argument& error) {
     return bad(error.what());
   }
-  l.table = pool_table(o.table_name);
-  if (o.setup_file.empty())
-    l.balls = rack(l.table, l.physics, o.rack_name == "8ball" ? Rack::eight_ball : Rack::nine_ball, o.jitter,
-                   o.seed);
+  l.table = table_preset(o.table_name);
+  l.physics = physics_preset(o.table_name);
+  if (o.rack_name.empty())
+    o.rack_name = o.table_name == "snooker" ? "snooker" : o.table_name == "carom" ? "3cushion" : "9ball";
+  if (o.setup_file.empty()) {
+    try {
+      l.balls = o.rack_name == "snooker"    ? snooker_setup(l.table, l.physics, o.jitter, o.seed)
+                : o.rack_name == "3cushion" ? three_cushion_setup(l.table, l.physics)
+                                            : rack(l.table, l.physics,
+                                                   o.rack_name == "8ball" ? Rack::eight_ball : Rack::nine_ball,
+                                                   o.jitter, o.seed);
+    } catch (const std::invalid_argument& error) {
+      return bad("--rack " + o.rack_name + " on the " + o.table_name + " table: " + error.what());
+    }
+  }
   if (!o.game.empty()) {
-    const std::size_t most = o.game == "9ball" ? 10 : 16;
-    if (l.balls.size() > most)
-      return bad("--game " + o.game + ": " + std::to_string(l.balls.size()) + " balls, expected at most " +
-                 std::to_string(most) + " (the cue ball, 0, and the object balls by number)");
+    const std::size_t most = o.game == "9ball" ? 10 : o.game == "8ball" ? 16 : o.game == "snooker" ? 22 : 3;
+    if (l.balls.size() > most || (o.game == "3cushion" && l.balls.size() != 3))
+      return bad("--game " + o.game + ": " + std::to_string(l.balls.size()) + " balls, expected " +
+                 (o.game == "3cushion" ? "3 (the white, the yellow and the red)"
+                                       : "at most " + std::to_string(most) +
+                                             " (the cue ball, 0, and the object balls by number)"));
     if (o.ball != 0)
       return bad("--game " + o.game + ": --ball is " + std::to_string(o.ball) + ", expected 0 (the cue ball)");
   }
@@ -245,33 +264,48 @@ void report(const Options& o, const Loaded& l, const Shot& shot, int status) {
 }
 
 // The game's state before the shot: the balls of the layout on the table by number, the break where
-// the balls are a rack.
+// the balls are a rack (snooker: on a red while one is on the table, else on the colours in order).
 template <typename State>
 State game_before(const Options& o, const std::vector<PoolBall>& placed) {
   State state;
   state.on_table.fill(false);
   for (std::size_t b = 0; b < placed.size(); ++b) state.on_table[b] = !placed[b].pocketed;
-  state.breaking = o.setup_file.empty();
+  if constexpr (std::is_same_v<State, billiards::simulation::games::SnookerState>)
+    state.on = state.reds() > 0 ? games::SnookerOn::red : games::SnookerOn::sequence;
+  else
+    state.breaking = o.setup_file.empty();
   return state;
+}
+
+// The rules' verdict on the shot (--game) and the game's name.
+std::pair<billiards::simulation::games::Verdict, const char*> decide(const Options& o, const Shot& shot) {
+  using namespace billiards::simulation::games;
+  if (o.game == "9ball") return {nine_ball(game_before<NineBallState>(o, shot.placed()), shot.events()).verdict, "9-ball"};
+  if (o.game == "8ball")
+    return {eight_ball(game_before<EightBallState>(o, shot.placed()), shot.events()).verdict, "8-ball"};
+  if (o.game == "snooker")
+    return {snooker(game_before<SnookerState>(o, shot.placed()), shot.events()).verdict, "snooker"};
+  return {three_cushion(ThreeCushionState{}, shot.events()).verdict, "three-cushion"};
 }
 
 // The rules' verdict on the shot, printed after the summary (--game).
 void report_game(const Options& o, const Shot& shot) {
   using namespace billiards::simulation::games;
-  const Verdict v = o.game == "9ball"
-                        ? nine_ball(game_before<NineBallState>(o, shot.placed()), shot.events()).verdict
-                        : eight_ball(game_before<EightBallState>(o, shot.placed()), shot.events()).verdict;
+  const auto [v, game] = decide(o, shot);
   std::string fouls;
   for (const Foul f : v.fouls) fouls += std::string(fouls.empty() ? "" : ", ") + foul_name(f);
-  std::printf("rules (%s%s): %s\n", o.game == "9ball" ? "9-ball" : "8-ball", o.setup_file.empty() ? ", the break" : "",
+  std::printf("rules (%s%s): %s\n", game, o.setup_file.empty() ? ", the break" : "",
               v.legal() ? "legal" : ("foul: " + fouls).c_str());
+  if (v.points != 0) std::printf("  %d point%s to the shooter\n", v.points, v.points == 1 ? "" : "s");
+  if (v.penalty != 0) std::printf("  %d points to the opponent\n", v.penalty);
   std::printf("  %s\n", v.reason.c_str());
   std::printf("  next: %s%s\n", v.game_over ? "the game is over, won by " : "",
               (v.game_over ? (*v.winner == 0 ? "the shooter" : "the opponent")
                            : (v.next_player == 0 ? "the shooter again" : "the opponent")));
   if (v.ball_in_hand != BallInHand::none)
-    std::printf("  cue ball in hand %s\n",
-                v.ball_in_hand == BallInHand::anywhere ? "anywhere" : "behind the head string");
+    std::printf("  cue ball in hand %s\n", v.ball_in_hand == BallInHand::anywhere             ? "anywhere"
+                                            : v.ball_in_hand == BallInHand::behind_head_string ? "behind the head string"
+                                                                                               : "in the D");
   for (const std::size_t b : v.respotted) std::printf("  ball %zu respotted\n", b);
 }
 

@@ -187,15 +187,51 @@ def pool_table(size: str = "9ft") -> PoolTable:
     return _billiards.pool_table(size)
 
 
+TABLES = ("7ft", "8ft", "9ft", "snooker", "carom")
+
+
+def table_preset(name: str = "9ft") -> PoolTable:
+    """A table by name: "7ft", "8ft", "9ft" (pool_table), "snooker" (the WPBSA's 12-ft table, 3.569 ×
+    1.778 m, pockets with curved facings) or "carom" (the UMB's 2.84 × 1.42 m, no pockets); the sources
+    of every dimension are in docs/games.md."""
+    if not isinstance(name, str):
+        raise TypeError(f"table_preset: name is {_describe(name)}, expected one of {TABLES}")
+    return _billiards.table_preset(name)
+
+
+def physics_preset(name: str = "9ft") -> PoolPhysics:
+    """The balls' and the cloth's physics of table_preset(name): the pool physics on the pool tables,
+    52.5 mm balls of 0.140 kg on the snooker table, 61.5 mm balls of 0.210 kg on the carom table's faster
+    heated cloth."""
+    if not isinstance(name, str):
+        raise TypeError(f"physics_preset: name is {_describe(name)}, expected one of {TABLES}")
+    return _billiards.physics_preset(name)
+
+
+def snooker_table() -> PoolTable:
+    """The snooker table: table_preset("snooker")."""
+    return table_preset("snooker")
+
+
+def carom_table() -> PoolTable:
+    """The carom table: table_preset("carom")."""
+    return table_preset("carom")
+
+
 def rack(table: PoolTable, physics: PoolPhysics | None = None, kind: str = "9ball", jitter: float = 0.0,
          seed: int = 0) -> np.ndarray:
-    """The balls of a break: the cue ball (index 0) on the head spot, the object balls racked on the foot
-    spot. ``kind`` is "9ball" (a diamond of 9) or "8ball" (a triangle of 15); ``jitter`` in [0, 1]
-    spreads the rack by 1 + jitter and moves each ball by up to jitter/2 of a radius, drawn from
-    ``seed`` (every gap ≥ jitter R). Returns an array of ball_dtype."""
-    physics = PoolPhysics() if physics is None else physics
+    """The balls of a game's start. "9ball" (a diamond of 9) or "8ball" (a triangle of 15): the cue ball
+    (index 0) on the head spot, the object balls racked on the foot spot; "snooker": the snooker set-up
+    (0 the white in the D, 1–15 the reds behind the pink, 16–21 yellow, green, brown, blue, pink, black on
+    their spots); "3cushion": the UMB's opening position (0 the white on the head string 182 mm beside
+    the head spot — on the side +y for an even ``seed``, −y for an odd —, 1 the yellow on the head spot,
+    2 the red on the foot spot). ``jitter`` in [0, 1] spreads a rack by 1 + jitter and moves each ball by
+    up to jitter/2 of a radius, drawn from ``seed`` (every gap ≥ jitter R). ``physics`` defaults to the
+    game's (physics_preset). Returns an array of ball_dtype."""
     if not isinstance(kind, str):
-        raise TypeError(f"rack: kind is {_describe(kind)}, expected '8ball' or '9ball'")
+        raise TypeError(f"rack: kind is {_describe(kind)}, expected '9ball', '8ball', 'snooker' or '3cushion'")
+    if physics is None:
+        physics = physics_preset({"snooker": "snooker", "3cushion": "carom"}.get(kind, "9ft"))
     if not (0 <= jitter <= 1):
         raise ValueError(f"rack: jitter is {jitter!r}, expected a number in [0, 1]")
     return _from_columns(_billiards.rack(table, physics, kind, float(jitter), _seed("rack", seed)))

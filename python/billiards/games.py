@@ -1,23 +1,30 @@
-"""The games: the rules of 9-ball and 8-ball (WPA) and of three-cushion (UMB) decided from a shot's
-events, and a game environment with the ``reset()`` / ``step(action)`` conventions of Gymnasium (without
-depending on it).
+"""The games: the rules of 9-ball and 8-ball (WPA), snooker (WPBSA) and three-cushion (UMB) decided
+from a shot's events, placing balls by hand (the cue ball in hand, respotting), and a game environment
+with the ``reset()`` / ``step(action)`` conventions of Gymnasium (without depending on it).
 
 Which rules are in and which are left out: docs/games.md. Ball 0 is the cue ball, the object balls are
-numbered as in the game (9-ball: 1 to 9; 8-ball: 1 to 15, the solids 1–7, the stripes 9–15).
+numbered as in the game (9-ball: 1 to 9; 8-ball: 1 to 15, the solids 1–7, the stripes 9–15; snooker: 1–15
+the reds, 16–21 yellow, green, brown, blue, pink, black; three-cushion: 0 the white, 1 the yellow, 2 the
+red).
 """
 
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass, field, replace
 
 import numpy as np
 
 from . import _billiards
-from ._shot import Cue, PoolPhysics, PoolTable, Shot, ShotOptions, pool_table, rack
+from ._shot import (Cue, PoolPhysics, PoolTable, Shot, ShotOptions, _from_columns, physics_preset, rack,
+                    table_preset)
 
-#: Where the next player may place the cue ball: "none", "anywhere", "behind_head_string".
-BALL_IN_HAND = ("none", "anywhere", "behind_head_string")
+#: Where the next player may place the cue ball: "none", "anywhere", "behind_head_string", "in_d" (the
+#: snooker D).
+BALL_IN_HAND = ("none", "anywhere", "behind_head_string", "in_d")
+#: What a snooker player is on: "red", "colour" (any, after a red), "sequence" (the lowest colour left).
+SNOOKER_ON = ("red", "colour", "sequence")
+#: The snooker balls' values by index: the white 0, the reds 1, yellow 2 … black 7.
+SNOOKER_VALUES = (0,) + (1,) * 15 + (2, 3, 4, 5, 6, 7)
 #: An 8-ball player's group: "open" (not chosen yet), "solids" (1–7), "stripes" (9–15).
 GROUPS = ("open", "solids", "stripes")
 
@@ -26,7 +33,8 @@ GROUPS = ("open", "solids", "stripes")
 class Verdict:
     """What the rules decide about a shot."""
 
-    fouls: list            #: the fouls committed: "scratch", "no contact", "wrong ball first", "no rail", "illegal break"
+    fouls: list            #: the fouls committed: "scratch", "no contact", "wrong ball first", "no rail",
+    #: "illegal break", "wrong ball potted"
     potted: list           #: the object balls pocketed, in the order they dropped
     respotted: list        #: the balls to put back on their spot
     next_player: int       #: who shoots next (0 or 1)
@@ -35,6 +43,7 @@ class Verdict:
     winner: int | None     #: who won it
     reason: str            #: the rule applied, in words
     points: int = 0        #: the points the shot scored for its shooter
+    penalty: int = 0       #: the points a foul gave the opponent (snooker)
 
     @property
     def legal(self) -> bool:
@@ -71,6 +80,21 @@ class EightBallState:
 
 
 @dataclass
+class SnookerState:
+    """A frame of snooker: the balls on the table by index (0 the white, 1–15 the reds, 16–21 the
+    colours), whose turn, the scores, what the player to shoot is on (SNOOKER_ON), where they may place
+    the white (in the D for the opening stroke), the end."""
+
+    on_table: list = field(default_factory=lambda: [True] * 22)
+    player: int = 0
+    scores: tuple = (0, 0)
+    on: str = "red"
+    ball_in_hand: str = "in_d"
+    over: bool = False
+    winner: int | None = None
+
+
+@dataclass
 class ThreeCushionState:
     """A game of three-cushion: ball 0 is player 0's cue ball (white), ball 1 player 1's (yellow), ball 2
     the red; each player's points, whose turn, the points that win, the end."""
@@ -84,7 +108,8 @@ class ThreeCushionState:
 
 def _verdict(d: dict) -> Verdict:
     return Verdict(list(d["fouls"]), list(d["potted"]), list(d["respotted"]), d["next_player"],
-                   BALL_IN_HAND[d["ball_in_hand"]], d["game_over"], d["winner"], d["reason"], d["points"])
+                   BALL_IN_HAND[d["ball_in_hand"]], d["game_over"], d["winner"], d["reason"], d["points"],
+                   d["penalty"])
 
 
 def _check(function: str, state, kind, shot):
@@ -125,6 +150,24 @@ def eight_ball(state: EightBallState, shot: Shot):
                                              BALL_IN_HAND[after["ball_in_hand"]], after["over"], after["winner"])
 
 
+def snooker(state: SnookerState, shot: Shot):
+    """The rules' decision on ``shot`` (its events, from its strike of the white, ball 0) in the frame
+    ``state``: a red then a colour while reds remain (the first colour the white meets is the nominated
+    one; colours respotted), then the colours in order; a foul gives the opponent the highest value
+    involved, at least 4. Returns (Verdict, the SnookerState after it). Errors as for nine_ball."""
+    _check("snooker", state, SnookerState, shot)
+    if state.over:
+        raise ValueError("snooker: the frame is over, expected a frame in play")
+    if state.on not in SNOOKER_ON:
+        raise ValueError(f"snooker: on is {state.on!r}, expected one of {SNOOKER_ON}")
+    verdict, after = _billiards.snooker([bool(b) for b in state.on_table], int(state.player), list(state.scores),
+                                        SNOOKER_ON.index(state.on), BALL_IN_HAND.index(state.ball_in_hand),
+                                        shot._shot)
+    return _verdict(verdict), SnookerState(list(after["on_table"]), after["player"], tuple(after["scores"]),
+                                           SNOOKER_ON[after["on"]], BALL_IN_HAND[after["ball_in_hand"]],
+                                           after["over"], after["winner"])
+
+
 def three_cushion(state: ThreeCushionState, shot: Shot):
     """The rules' decision on ``shot`` (its events, from its strike of the shooter's cue ball, ball
     ``state.player``) in the game ``state``: a point when that ball meets both others and at least three
@@ -141,112 +184,129 @@ def _over(function: str):
     raise ValueError(f"{function}: the game is over, expected a game in play")
 
 
-def _free(layout: np.ndarray, xy, radius: float, ignore: int) -> bool:
-    live = ~layout["pocketed"]
-    live[ignore] = False
-    centres = layout["position"][live, :2]
-    return bool(np.all(np.hypot(centres[:, 0] - xy[0], centres[:, 1] - xy[1]) >= 2 * radius * (1 + 1e-9)))
+def _physics(radius: float) -> PoolPhysics:
+    return PoolPhysics(radius=float(radius))
+
+
+def _region(function: str, region: str) -> int:
+    if region not in BALL_IN_HAND[1:]:
+        raise ValueError(f"{function}: region is {region!r}, expected one of {BALL_IN_HAND[1:]}")
+    return BALL_IN_HAND.index(region) - 1
 
 
 def place(layout: np.ndarray, ball: int, xy, table: PoolTable, radius: float, region: str = "anywhere") -> bool:
-    """Puts ``ball`` of ``layout`` (in place) at ``xy`` if it lies on the cloth (a radius inside the
-    noses), in ``region`` ("anywhere", or "behind_head_string": x at most a quarter of the length) and
-    overlaps no ball; returns whether it did."""
+    """Puts ``ball`` of ``layout`` (in place) at rest at ``xy`` if it lies on the cloth (a radius inside the
+    noses), in ``region`` ("anywhere"; "behind_head_string": x at most a quarter of the length; "in_d":
+    in the snooker D) and overlaps no ball; returns whether it did."""
     x, y = float(xy[0]), float(xy[1])
-    if not (math.isfinite(x) and math.isfinite(y)):
-        return False
-    inside = radius <= x <= table.length - radius and radius <= y <= table.width - radius
-    if region == "behind_head_string":
-        inside = inside and x <= 0.25 * table.length
-    if not inside or not _free(layout, (x, y), radius, ball):
-        return False
-    layout[ball]["position"] = (x, y, radius)
-    layout[ball]["velocity"] = 0.0
-    layout[ball]["angular_velocity"] = 0.0
-    layout[ball]["pocketed"] = False
-    return True
+    placed, columns = _billiards.place_ball(table, _physics(radius), layout, int(ball), x, y,
+                                            _region("place", region))
+    if placed:
+        layout[ball] = _from_columns(columns)[ball]
+    return bool(placed)
 
 
-def respot(layout: np.ndarray, ball: int, table: PoolTable, radius: float) -> None:
-    """Puts ``ball`` back on the foot spot, or where that is covered, on the long string behind it as
-    near the spot as it fits (then in front of it), as the WPA's rules spot a ball."""
-    fx, fy = table.foot_spot()
-    step = radius / 8
-    for k in range(int(table.length / step)):
-        for x in (fx + k * step, fx - k * step):
-            if place(layout, ball, (x, fy), table, radius):
-                return
-    raise RuntimeError(f"respot: no free place on the long string for ball {ball}")
+def respot(layout: np.ndarray, ball: int, table: PoolTable, radius: float, game: str = "pool") -> None:
+    """Puts ``ball`` back on the table (in place). Pool (``game`` "pool"): on the foot spot, or where that
+    is covered, on the long string behind it as near the spot as it fits (then in front of it), as the
+    WPA's rules spot a ball. Snooker (``game`` "snooker", ``ball`` a colour 16–21): on its own spot, else
+    the highest valued free spot, else as near its own spot as it fits towards the top cushion (then
+    towards the baulk cushion). RuntimeError where no place is free."""
+    if game not in ("pool", "snooker"):
+        raise ValueError(f"respot: game is {game!r}, expected 'pool' or 'snooker'")
+    if game == "snooker" and not 16 <= ball <= 21:
+        raise ValueError(f"respot: ball is {ball!r}, expected a snooker colour (16 to 21)")
+    layout[:] = _from_columns(_billiards.respot(table, _physics(radius), layout, int(ball), game == "snooker"))
 
 
 def place_cue_ball(layout: np.ndarray, xy, region: str, table: PoolTable, radius: float) -> None:
-    """The cue ball in hand: at ``xy`` where that is legal, else on the head spot, else the nearest free
-    point to it in ``region``."""
-    if xy is not None and place(layout, 0, xy, table, radius, region):
-        return
-    hx, hy = table.head_spot()
-    for k in range(200):
-        for angle in np.linspace(0, 2 * np.pi, 8 * k + 1, endpoint=False):
-            if place(layout, 0, (hx + k * radius / 2 * np.cos(angle), hy + k * radius / 2 * np.sin(angle)), table,
-                     radius, region):
-                return
-    raise RuntimeError("place_cue_ball: no free place for the cue ball")
+    """The cue ball in hand (in place): at ``xy`` where that is legal, else the nearest free point in
+    ``region`` to its own point (the head spot; the middle of the D for "in_d")."""
+    where = None if xy is None else (float(xy[0]), float(xy[1]))
+    layout[:] = _from_columns(_billiards.place_cue_ball(table, _physics(radius), layout, where,
+                                                        _region("place_cue_ball", region)))
 
 
-class PoolEnv:
-    """A game of 9-ball or 8-ball as an environment, with Gymnasium's conventions (``reset(seed)`` →
-    ``(observation, info)``; ``step(action)`` → ``(observation, reward, terminated, truncated, info)``),
-    without depending on Gymnasium. One agent plays both sides; the observation says whose turn it is.
+GAMES = ("9ball", "8ball", "snooker", "3cushion")
+_DEFAULT_TABLES = {"9ball": "7ft", "8ball": "7ft", "snooker": "snooker", "3cushion": "carom"}
+_STARTING_HAND = {"9ball": "behind_head_string", "8ball": "behind_head_string", "snooker": "in_d"}
+
+
+class GameEnv:
+    """A game of 9-ball, 8-ball, snooker or three-cushion as an environment, with Gymnasium's conventions
+    (``reset(seed)`` → ``(observation, info)``; ``step(action)`` → ``(observation, reward, terminated,
+    truncated, info)``), without depending on Gymnasium. One agent plays both sides; the observation says
+    whose turn it is.
 
     Parameters
     ----------
-    game : "9ball" or "8ball"
+    game : "9ball", "8ball", "snooker" or "3cushion"
     table : str or PoolTable
-        A preset ("7ft", "8ft", "9ft") or a table of your own.
+        A preset (table_preset's names) or a table of your own; by default "7ft" for pool, "snooker" and
+        "carom".
     physics : PoolPhysics, optional
+        By default the table preset's (physics_preset), the pool physics for a table of your own.
     jitter : float
-        The rack's spread and jitter, as ``billiards.rack`` takes it.
+        The rack's spread and jitter, as ``billiards.rack`` takes it (no effect in three-cushion).
     max_shots : int
         Shots after which an unfinished game is truncated.
+    target : int
+        Three-cushion: the points that win (40 by default).
     options : ShotOptions, optional
         How each shot plays (``check_invariants=True`` checks the engine's invariants at every event).
 
     Observation (a dict of arrays): ``positions`` (N, 2) — the centres (m), NaN for a ball off the table;
-    ``on_table`` (N,) bool (the cue ball in hand after a scratch: False until it is placed); ``player`` — who shoots (0 or 1); ``ball_in_hand`` — an index into
-    BALL_IN_HAND; ``breaking``; for 8-ball ``groups`` — each player's, an index into GROUPS.
+    ``on_table`` (N,) bool (the cue ball in hand after it was pocketed: False until it is placed);
+    ``player`` — who shoots (0 or 1); ``ball_in_hand`` — an index into BALL_IN_HAND; pool: ``breaking``,
+    and for 8-ball ``groups`` — each player's, an index into GROUPS; snooker and three-cushion:
+    ``scores`` (2,); snooker: ``on`` — an index into SNOOKER_ON.
 
     Action: ``(speed, azimuth, side_offset, up_offset)`` or ``(speed, azimuth, side_offset, up_offset, x,
     y)`` — the cue's speed (m/s), its direction in the table's plane (radians from +x), the tip's offsets in
     units of the radius (as ``Cue``), and where to place the cue ball when it is in hand (m; an illegal or
-    missing place puts it on the head spot, or the nearest free point). A level cue of 0.567 kg.
+    missing place puts it on the nearest free point to the head spot, or to the D's middle). A level cue
+    of 0.567 kg, on ball 0 — in three-cushion on the shooter's own ball (``player``).
 
-    Reward: +1 when the shot wins the game for the player who took it, −1 when it loses it, 0 otherwise.
-    ``info``: the shot's ``verdict`` (Verdict), its ``shooter``, its ``events`` count.
+    Reward, for the player who took the shot: pool: +1 when it wins the game, −1 when it loses it, 0
+    otherwise; snooker: the points it scored less the points a foul gave away; three-cushion: the point
+    it scored (0 or 1). ``info``: the shot's ``verdict`` (Verdict), its ``shooter``, its ``events`` count.
     """
 
-    def __init__(self, game: str = "9ball", table="7ft", physics: PoolPhysics | None = None, jitter: float = 1e-3,
-                 max_shots: int = 200, options: ShotOptions | None = None):
-        if game not in ("9ball", "8ball"):
-            raise ValueError(f"PoolEnv: game is {game!r}, expected '9ball' or '8ball'")
+    def __init__(self, game: str = "9ball", table=None, physics: PoolPhysics | None = None, jitter: float = 1e-3,
+                 max_shots: int = 200, options: ShotOptions | None = None, target: int = 40):
+        if game not in GAMES:
+            raise ValueError(f"{type(self).__name__}: game is {game!r}, expected one of {GAMES}")
         self.game = game
-        self.table = pool_table(table) if isinstance(table, str) else table
+        name = _DEFAULT_TABLES[game] if table is None else table
+        self.table = table_preset(name) if isinstance(name, str) else name
         if not isinstance(self.table, PoolTable):
-            raise TypeError(f"PoolEnv: table is {type(table).__name__}, expected a preset's name or a PoolTable")
-        self.physics = PoolPhysics() if physics is None else physics
+            raise TypeError(f"{type(self).__name__}: table is {type(table).__name__}, expected a preset's name or "
+                            f"a PoolTable")
+        if physics is None:
+            physics = physics_preset(name) if isinstance(name, str) else PoolPhysics()
+        self.physics = physics
         if not (isinstance(max_shots, int) and max_shots >= 1):
-            raise ValueError(f"PoolEnv: max_shots is {max_shots!r}, expected a whole number >= 1")
-        self.jitter, self.max_shots = float(jitter), max_shots
+            raise ValueError(f"{type(self).__name__}: max_shots is {max_shots!r}, expected a whole number >= 1")
+        if not (isinstance(target, int) and target >= 1):
+            raise ValueError(f"{type(self).__name__}: target is {target!r}, expected a whole number >= 1")
+        self.jitter, self.max_shots, self.target = float(jitter), max_shots, target
         self._options = ShotOptions() if options is None else options
         self._rng = np.random.default_rng()
         self._layout = None
 
     def reset(self, seed: int | None = None, options: dict | None = None):
-        """A new game: the rack (its jitter drawn from ``seed``), the break to play."""
+        """A new game: the game's starting position (the rack's jitter, or three-cushion's side, drawn from
+        ``seed``), the break to play."""
         if seed is not None:
             self._rng = np.random.default_rng(seed)
         self._layout = rack(self.table, self.physics, self.game, self.jitter, int(self._rng.integers(2**63)))
-        state = NineBallState() if self.game == "9ball" else EightBallState()
-        self._state = replace(state, ball_in_hand="behind_head_string")
+        if self.game == "3cushion":
+            self._state = ThreeCushionState(target=self.target)
+        elif self.game == "snooker":
+            self._state = SnookerState()
+        else:
+            state = NineBallState() if self.game == "9ball" else EightBallState()
+            self._state = replace(state, ball_in_hand=_STARTING_HAND[self.game])
         self._shots = 0
         return self._observation(), {}
 
@@ -255,37 +315,63 @@ class PoolEnv:
         on_table = ~self._layout["pocketed"]
         positions[~on_table] = np.nan
         obs = {"positions": positions, "on_table": on_table, "player": self._state.player,
-               "ball_in_hand": BALL_IN_HAND.index(self._state.ball_in_hand), "breaking": self._state.breaking}
+               "ball_in_hand": BALL_IN_HAND.index(getattr(self._state, "ball_in_hand", "none"))}
+        if self.game in ("9ball", "8ball"):
+            obs["breaking"] = self._state.breaking
         if self.game == "8ball":
             obs["groups"] = np.array([GROUPS.index(g) for g in self._state.groups])
+        if self.game in ("snooker", "3cushion"):
+            obs["scores"] = np.array(self._state.scores)
+        if self.game == "snooker":
+            obs["on"] = SNOOKER_ON.index(self._state.on)
         return obs
+
+    def _action(self, action) -> np.ndarray:
+        numbers = np.asarray(action, dtype=np.float64).reshape(-1)
+        if numbers.size not in (4, 6) or not np.all(np.isfinite(numbers[:4])):
+            raise ValueError(f"{type(self).__name__}.step: action is {action!r}, expected 4 finite numbers (speed, "
+                             f"azimuth, side_offset, up_offset) and optionally the cue ball's place x, y")
+        return numbers
 
     def step(self, action):
         """Plays one shot: returns (observation, reward, terminated, truncated, info)."""
+        name = type(self).__name__
         if self._layout is None:
-            raise RuntimeError("PoolEnv.step: call reset() first")
+            raise RuntimeError(f"{name}.step: call reset() first")
         if self._state.over:
-            raise RuntimeError("PoolEnv.step: the game is over; call reset()")
-        numbers = np.asarray(action, dtype=np.float64).reshape(-1)
-        if numbers.size not in (4, 6) or not np.all(np.isfinite(numbers[:4])):
-            raise ValueError(f"PoolEnv.step: action is {action!r}, expected 4 finite numbers (speed, azimuth, "
-                             f"side_offset, up_offset) and optionally the cue ball's place x, y")
-        if self._state.ball_in_hand != "none":
+            raise RuntimeError(f"{name}.step: the game is over; call reset()")
+        numbers = self._action(action)
+        hand = getattr(self._state, "ball_in_hand", "none")
+        if hand != "none":
             where = numbers[4:6] if numbers.size == 6 else None
-            place_cue_ball(self._layout, where, self._state.ball_in_hand, self.table, self.physics.radius)
+            place_cue_ball(self._layout, where, hand, self.table, self.physics.radius)
         shooter = self._state.player
         shot = Shot(self.table, self.physics, self._layout, self._options)
-        shot.strike(0, Cue(speed=numbers[0], azimuth=numbers[1], side_offset=numbers[2], up_offset=numbers[3]))
+        striker = shooter if self.game == "3cushion" else 0
+        shot.strike(striker, Cue(speed=numbers[0], azimuth=numbers[1], side_offset=numbers[2], up_offset=numbers[3]))
         shot.play()
-        decide = nine_ball if self.game == "9ball" else eight_ball
+        decide = {"9ball": nine_ball, "8ball": eight_ball, "snooker": snooker, "3cushion": three_cushion}[self.game]
         verdict, self._state = decide(self._state, shot)
         self._layout = shot.balls
         for ball in verdict.respotted:
-            respot(self._layout, ball, self.table, self.physics.radius)
+            respot(self._layout, ball, self.table, self.physics.radius, "snooker" if self.game == "snooker" else "pool")
         self._shots += 1
-        reward = 0.0
-        if verdict.game_over:
-            reward = 1.0 if verdict.winner == shooter else -1.0
+        if self.game == "snooker":
+            reward = float(verdict.points - verdict.penalty)
+        elif self.game == "3cushion":
+            reward = float(verdict.points)
+        else:
+            reward = 0.0 if not verdict.game_over else 1.0 if verdict.winner == shooter else -1.0
         truncated = not verdict.game_over and self._shots >= self.max_shots
         info = {"verdict": verdict, "shooter": shooter, "events": shot.event_count}
         return self._observation(), reward, verdict.game_over, truncated, info
+
+
+class PoolEnv(GameEnv):
+    """GameEnv for 9-ball and 8-ball (its defaults: 9-ball on the 7-ft table)."""
+
+    def __init__(self, game: str = "9ball", table="7ft", physics: PoolPhysics | None = None, jitter: float = 1e-3,
+                 max_shots: int = 200, options: ShotOptions | None = None):
+        if game not in ("9ball", "8ball"):
+            raise ValueError(f"PoolEnv: game is {game!r}, expected '9ball' or '8ball' (GameEnv plays the others)")
+        super().__init__(game, table, physics, jitter, max_shots, options)

@@ -42,11 +42,13 @@ def _vector_to_theirs(v):
 
 
 def table_from(system, specs=None) -> PoolTable:
-    """Our table for pooltool's: its length and width, its cushions' height, and the pocket mouths of
-    ``specs`` (a pooltool ``PocketTableSpecs``) where given, else ours (the WPA's)."""
+    """Our table for pooltool's: its length and width, its cushions' height, no pockets where it has none
+    (a carom table), and the pocket mouths of ``specs`` (a pooltool ``PocketTableSpecs``) where given,
+    else ours (the WPA's)."""
     table = system.table
     linear = next(iter(table.cushion_segments.linear.values()))
-    fields = dict(length=float(table.l), width=float(table.w), nose_height=float(linear.height))
+    fields = dict(length=float(table.l), width=float(table.w), nose_height=float(linear.height),
+                  has_pockets=bool(table.pockets))
     if specs is not None:
         fields.update(corner_mouth=float(specs.corner_pocket_width), side_mouth=float(specs.side_pocket_width),
                       corner_jaw_radius=float(specs.corner_jaw_radius), side_jaw_radius=float(specs.side_jaw_radius),

@@ -87,14 +87,15 @@ void bind_settings(py::module_& m) {
 void bind_table(py::module_& m) {
   py::class_<PoolTable> table(
       m, "PoolTable",
-      "A pool table with six pockets (metres): the playing area between the cushions' "
-      "noses, the pocket mouths, the nose height, the jaws' radii and the pockets' capture "
-      "circles. pool_table(size) gives the presets.");
+      "A table (metres): the playing area between the cushions' noses, the pocket mouths, "
+      "the nose height, the jaws' radii and the pockets' capture circles, or no pockets "
+      "(has_pockets False: a carom table). table_preset(name) gives the presets.");
   const PoolTable d;
   table.def(
       py::init([](double length, double width, double corner_mouth, double side_mouth, double nose_height,
                   double corner_jaw_radius, double side_jaw_radius, double corner_pocket_radius,
-                  double corner_pocket_depth, double side_pocket_radius, double side_pocket_depth) {
+                  double corner_pocket_depth, double side_pocket_radius, double side_pocket_depth,
+                  bool has_pockets) {
         return PoolTable{length,
                          width,
                          corner_mouth,
@@ -105,7 +106,8 @@ void bind_table(py::module_& m) {
                          corner_pocket_radius,
                          corner_pocket_depth,
                          side_pocket_radius,
-                         side_pocket_depth};
+                         side_pocket_depth,
+                         has_pockets};
       }),
       py::arg("length") = d.length, py::arg("width") = d.width, py::arg("corner_mouth") = d.corner_mouth,
       py::arg("side_mouth") = d.side_mouth, py::arg("nose_height") = d.nose_height,
@@ -113,7 +115,7 @@ void bind_table(py::module_& m) {
       py::arg("corner_pocket_radius") = d.corner_pocket_radius,
       py::arg("corner_pocket_depth") = d.corner_pocket_depth,
       py::arg("side_pocket_radius") = d.side_pocket_radius,
-      py::arg("side_pocket_depth") = d.side_pocket_depth);
+      py::arg("side_pocket_depth") = d.side_pocket_depth, py::arg("has_pockets") = d.has_pockets);
   plain(table, "PoolTable", std::pair{"length", &PoolTable::length}, std::pair{"width", &PoolTable::width},
         std::pair{"corner_mouth", &PoolTable::corner_mouth}, std::pair{"side_mouth", &PoolTable::side_mouth},
         std::pair{"nose_height", &PoolTable::nose_height},
@@ -122,7 +124,8 @@ void bind_table(py::module_& m) {
         std::pair{"corner_pocket_radius", &PoolTable::corner_pocket_radius},
         std::pair{"corner_pocket_depth", &PoolTable::corner_pocket_depth},
         std::pair{"side_pocket_radius", &PoolTable::side_pocket_radius},
-        std::pair{"side_pocket_depth", &PoolTable::side_pocket_depth});
+        std::pair{"side_pocket_depth", &PoolTable::side_pocket_depth},
+        std::pair{"has_pockets", &PoolTable::has_pockets});
   table.def("foot_spot", [](const PoolTable& t) {
     const auto s = t.foot_spot();
     return py::make_tuple(s.x(), s.y());
@@ -133,6 +136,11 @@ void bind_table(py::module_& m) {
   });
   m.def(
       "pool_table", [](const std::string& size) { return simulation::pool_table(size); }, py::arg("size"));
+  m.def(
+      "table_preset", [](const std::string& name) { return simulation::table_preset(name); }, py::arg("name"));
+  m.def(
+      "physics_preset", [](const std::string& name) { return simulation::physics_preset(name); },
+      py::arg("name"));
 
   py::class_<ShotOptions> options(
       m, "ShotOptions",
@@ -157,13 +165,11 @@ void bind_layouts(py::module_& m) {
       "rack",
       [](const PoolTable& table, const PoolPhysics& physics, const std::string& kind, double jitter,
          std::uint64_t seed) {
-        simulation::Rack rack;
-        if (kind == "9ball")
-          rack = simulation::Rack::nine_ball;
-        else if (kind == "8ball")
-          rack = simulation::Rack::eight_ball;
-        else
-          throw py::value_error("rack: kind is '" + kind + "', expected '8ball' or '9ball'");
+        if (kind == "snooker") return ball_columns(simulation::snooker_setup(table, physics, jitter, seed));
+        if (kind == "3cushion") return ball_columns(simulation::three_cushion_setup(table, physics, seed % 2 ? -1 : 1));
+        if (kind != "9ball" && kind != "8ball")
+          throw py::value_error("rack: kind is '" + kind + "', expected '9ball', '8ball', 'snooker' or '3cushion'");
+        const auto rack = kind == "9ball" ? simulation::Rack::nine_ball : simulation::Rack::eight_ball;
         return ball_columns(simulation::rack(table, physics, rack, jitter, seed));
       },
       py::arg("table"), py::arg("physics"), py::arg("kind"), py::arg("jitter"), py::arg("seed"));
@@ -173,6 +179,37 @@ void bind_layouts(py::module_& m) {
         return ball_columns(simulation::scatter(table, physics, count, seed));
       },
       py::arg("table"), py::arg("physics"), py::arg("count"), py::arg("seed"));
+  // Placing by hand: the layout's records in, whether it was placed and the balls after out.
+  m.def("place_ball", [](const PoolTable& table, const PoolPhysics& physics, const py::array& layout,
+                         std::size_t ball, double x, double y, int where) {
+    std::vector<PoolBall> balls = balls_from_records(layout);
+    if (ball >= balls.size())
+      throw py::index_error("place: ball is " + std::to_string(ball) + ", expected 0 to " +
+                            std::to_string(balls.size() - 1));
+    const bool placed =
+        simulation::place_ball(table, physics, balls, ball, {x, y}, static_cast<simulation::Placement>(where));
+    return py::make_tuple(placed, ball_columns(balls));
+  });
+  m.def("place_cue_ball", [](const PoolTable& table, const PoolPhysics& physics, const py::array& layout,
+                             std::optional<std::pair<double, double>> wanted, int where) {
+    std::vector<PoolBall> balls = balls_from_records(layout);
+    std::optional<simulation::TableVector> at;
+    if (wanted) at = simulation::TableVector(wanted->first, wanted->second);
+    simulation::place_cue_ball(table, physics, balls, at, static_cast<simulation::Placement>(where));
+    return ball_columns(balls);
+  });
+  m.def("respot", [](const PoolTable& table, const PoolPhysics& physics, const py::array& layout,
+                     std::size_t ball, bool colour) {
+    std::vector<PoolBall> balls = balls_from_records(layout);
+    if (ball >= balls.size())
+      throw py::index_error("respot: ball is " + std::to_string(ball) + ", expected 0 to " +
+                            std::to_string(balls.size() - 1));
+    if (colour)
+      simulation::respot_colour(table, physics, balls, ball);
+    else
+      simulation::respot_on_long_string(table, physics, balls, ball);
+    return ball_columns(balls);
+  });
 }
 
 void bind_shot(py::module_& m) {

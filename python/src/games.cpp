@@ -27,19 +27,26 @@ py::dict verdict_dict(const games::Verdict& v) {
   d["winner"] = v.winner ? py::cast(*v.winner) : py::none();
   d["reason"] = v.reason;
   d["points"] = v.points;
+  d["penalty"] = v.penalty;
   return d;
 }
 
+// The balls on the table, whose turn and the cue ball in hand into a game's state.
 template <typename State>
-void common_from(State& s, const std::vector<bool>& on_table, std::size_t player, bool breaking,
-                 int ball_in_hand) {
+void table_from(State& s, const std::vector<bool>& on_table, std::size_t player, int ball_in_hand) {
   if (on_table.size() != s.on_table.size())
     throw py::value_error("on_table has " + std::to_string(on_table.size()) + " balls, expected " +
                           std::to_string(s.on_table.size()));
   std::copy(on_table.begin(), on_table.end(), s.on_table.begin());
   s.player = player;
-  s.breaking = breaking;
   s.ball_in_hand = static_cast<games::BallInHand>(ball_in_hand);
+}
+
+template <typename State>
+void common_from(State& s, const std::vector<bool>& on_table, std::size_t player, bool breaking,
+                 int ball_in_hand) {
+  table_from(s, on_table, player, ball_in_hand);
+  s.breaking = breaking;
 }
 
 template <typename State>
@@ -92,9 +99,28 @@ py::tuple three_cushion(const std::array<int, 2>& scores, std::size_t player, in
   return py::make_tuple(verdict_dict(d.verdict), next);
 }
 
+py::tuple snooker(const std::vector<bool>& on_table, std::size_t player, const std::array<int, 2>& scores, int on,
+                  int ball_in_hand, const PyShot& shot) {
+  games::SnookerState s;
+  table_from(s, on_table, player, ball_in_hand);
+  s.scores = scores;
+  s.on = static_cast<games::SnookerOn>(on);
+  const auto d = games::snooker(s, shot.shot().events());
+  py::dict next;
+  next["on_table"] = std::vector<bool>(d.next.on_table.begin(), d.next.on_table.end());
+  next["player"] = d.next.player;
+  next["scores"] = d.next.scores;
+  next["on"] = static_cast<int>(d.next.on);
+  next["ball_in_hand"] = static_cast<int>(d.next.ball_in_hand);
+  next["over"] = d.next.over;
+  next["winner"] = d.next.winner ? py::cast(*d.next.winner) : py::none();
+  return py::make_tuple(verdict_dict(d.verdict), next);
+}
+
 }  // namespace
 
 void bind_games(py::module_& m) {
+  m.def("snooker", &snooker);
   m.def("nine_ball", &nine_ball);
   m.def("eight_ball", &eight_ball);
   m.def("three_cushion", &three_cushion);

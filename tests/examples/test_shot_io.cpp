@@ -44,7 +44,7 @@ TEST_CASE("Shot setup files", "[io][shot]") {
       CHECK_THROWS_WITH(read_shot_setup(in, "bad.setup", R), Catch::Contains(message));
     };
     fails("ball 1 1\nball 1\n", "bad.setup:2: ball: 1 numbers, expected 2, 4 or 7");
-    fails("table 10ft\n", "bad.setup:1: table: '10ft', expected one of 7ft, 8ft, 9ft");
+    fails("table 10ft\n", "bad.setup:1: table: '10ft', expected one of 7ft, 8ft, 9ft, snooker, carom");
     fails("ball 1 1\ncue 1 2\n", "bad.setup:2: unknown directive 'cue'");
     fails("ball 1 nan\n", "bad.setup:1:");
     fails("# nothing\n", "bad.setup: no ball");

@@ -115,3 +115,118 @@ def test_three_cushion_scores_a_bank_into_both_balls():
         assert scored == (verdict.points == 1)
     with pytest.raises(ValueError, match="the strike of ball 1"):
         games.three_cushion(games.ThreeCushionState(player=1), played(layout, billiards.Cue(1.0)))
+
+
+def _aimed(rng, observation, env):
+    """A random player's action that aims, with a random cut, at a random ball it may meet first."""
+    state, positions = env._state, observation["positions"]
+    if env.game == "snooker":
+        lowest = min((b for b in range(16, 22) if state.on_table[b]), default=21)
+        candidates = [b for b in range(1, 22) if observation["on_table"][b] and
+                      (state.on == "red" and b <= 15 or state.on == "colour" and b >= 16 or b == lowest)]
+        striker = 0
+    else:
+        striker = observation["player"]
+        candidates = [b for b in range(3) if b != striker]
+    place = [rng.uniform(0.4, 0.75), rng.uniform(0.6, 1.2)]
+    cue = positions[striker] if observation["on_table"][striker] else np.array(place)
+    target = positions[rng.choice(candidates)] if candidates else cue + 1
+    azimuth = math.atan2(target[1] - cue[1], target[0] - cue[0]) + rng.normal(0, 0.08)
+    return [rng.uniform(0.3, 7), azimuth, rng.uniform(-0.4, 0.4), rng.uniform(-0.4, 0.4)] + place
+
+
+def test_a_random_player_finishes_every_snooker_frame():
+    env = games.GameEnv("snooker", max_shots=5000, options=billiards.ShotOptions(check_invariants=True))
+    rng = np.random.default_rng(2026)
+    for g in range(1000):
+        observation, _ = env.reset(seed=g)
+        scored, black_respots = [0, 0], 0
+        for _ in range(5000):
+            before = env._state
+            observation, reward, terminated, truncated, info = env.step(_aimed(rng, observation, env))
+            state, verdict = env._state, info["verdict"]
+            shooter = info["shooter"]
+            # The scores follow the verdicts: points to the shooter, a foul's penalty to the opponent.
+            expected = list(before.scores)
+            expected[shooter] += verdict.points
+            expected[1 - shooter] += verdict.penalty
+            assert list(state.scores) == expected
+            assert reward == verdict.points - verdict.penalty
+            assert verdict.penalty in (0, 4, 5, 6, 7) and (verdict.penalty > 0) == (not verdict.legal)
+            scored[shooter] += verdict.points
+            black_respots += int(21 in verdict.respotted and before.on == "sequence" and not before.on_table[20])
+            # No ball both potted and on the table, in the rules and on the cloth alike.
+            assert list(observation["on_table"][1:]) == list(state.on_table[1:])
+            assert all(not state.on_table[b] for b in verdict.potted if b not in verdict.respotted)
+            if terminated or truncated:
+                break
+        assert terminated, f"frame {g} did not end in 5000 shots"
+        assert state.over and state.winner in (0, 1) and state.scores[state.winner] > state.scores[1 - state.winner]
+        # The 147 ceiling: the pots of both players together, and 7 for each re-spotted black.
+        assert sum(scored) <= 147 + 7 * black_respots
+
+
+def test_a_random_player_finishes_every_three_cushion_game():
+    env = games.GameEnv("3cushion", max_shots=3000, target=2, options=billiards.ShotOptions(check_invariants=True))
+    rng = np.random.default_rng(2026)
+    for g in range(1000):
+        observation, _ = env.reset(seed=g)
+        for _ in range(3000):
+            observation, reward, terminated, truncated, info = env.step(_aimed(rng, observation, env))
+            assert reward == info["verdict"].points and observation["on_table"].all()
+            assert observation["player"] == (info["shooter"] if reward else 1 - info["shooter"]) or terminated
+            if terminated or truncated:
+                break
+        assert terminated, f"game {g} did not end in 3000 shots"
+        assert env._state.scores[env._state.winner] == 2
+
+
+def test_the_snooker_and_carom_tables_and_their_starting_positions():
+    snooker = billiards.table_preset("snooker")
+    assert (snooker.length, snooker.width) == (3.569, 1.778) and snooker.has_pockets
+    assert snooker == billiards.snooker_table()
+    carom = billiards.carom_table()
+    assert (carom.length, carom.width, carom.has_pockets) == (2.84, 1.42, False)
+    assert billiards.physics_preset("carom").radius == pytest.approx(0.03075)
+    with pytest.raises(ValueError, match="expected 7ft, 8ft, 9ft, snooker or carom"):
+        billiards.table_preset("billiard")
+    layout = billiards.rack(snooker, kind="snooker")
+    assert len(layout) == 22
+    radius = billiards.physics_preset("snooker").radius
+    assert layout["position"][0, 0] <= 0.737 and np.allclose(layout["position"][21, :2], [3.569 - 0.324, 0.889])
+    opening = billiards.rack(carom, kind="3cushion")
+    assert np.allclose(opening["position"][:, :2], [[0.71, 0.71 + 0.182], [0.71, 0.71], [2.13, 0.71]])
+    # The white in hand in the D, wanted on the brown: placed at the nearest free point in the D.
+    games.place_cue_ball(layout, layout["position"][18, :2], "in_d", snooker, radius)
+    x, y = layout["position"][0, :2]
+    assert x <= 0.737 and math.hypot(x - 0.737, y - 0.889) <= 0.292
+    assert not games.place(layout, 0, (1.0, 0.9), snooker, radius, "in_d")
+    # The pink potted and its spot covered: respotted on the highest free spot (the black's is taken).
+    layout["pocketed"][[19, 20]] = True
+    assert games.place(layout, 0, layout["position"][20, :2] + [0, 1.5 * radius], snooker, radius)
+    games.respot(layout, 20, snooker, radius, "snooker")
+    assert np.allclose(layout["position"][20, :2], [3.569 / 2, 0.889]) and not layout["pocketed"][20]
+    with pytest.raises(ValueError, match="snooker colour"):
+        games.respot(layout, 3, snooker, radius, "snooker")
+
+
+def test_snooker_decided_on_the_engines_shots():
+    table, physics = billiards.snooker_table(), billiards.physics_preset("snooker")
+    layout = billiards.rack(table, physics, "snooker")
+    layout["pocketed"][2:16] = True
+    corner, diagonal = np.array([table.length, table.width]), np.array([1.0, 1.0]) / math.sqrt(2)
+    layout["position"][1, :2] = corner - 0.25 * diagonal
+    layout["position"][0, :2] = corner - 0.6 * diagonal
+    state = games.SnookerState(on_table=[True, True] + [False] * 14 + [True] * 6, ball_in_hand="none")
+
+    def stroke(cue):
+        shot = billiards.Shot(table, physics, layout)
+        shot.strike(0, cue)
+        shot.play()
+        return games.snooker(state, shot)
+
+    verdict, after = stroke(billiards.Cue(2.0, azimuth=math.pi / 4, up_offset=-0.3))
+    assert verdict.legal and verdict.points == 1 and after.on == "colour" and after.player == 0
+    verdict, after = stroke(billiards.Cue(2.5, azimuth=math.pi / 4, up_offset=0.6))
+    assert verdict.fouls == ["scratch"] and verdict.penalty == 4 and after.ball_in_hand == "in_d"
+    assert after.scores == (0, 4) and after.player == 1

@@ -144,7 +144,13 @@ def test_the_engine_refuses_bad_arguments():
     with pytest.raises(ValueError, match="7ft, 8ft or 9ft"):
         billiards.pool_table("10ft")
     with pytest.raises(ValueError, match="kind"):
-        billiards.rack(table, None, "snooker")
+        billiards.rack(table, None, "10ball")
+    with pytest.raises(ValueError, match="too short"):
+        billiards.rack(billiards.pool_table("7ft"), None, "snooker")
+    with pytest.raises(ValueError, match="expected 7ft, 8ft, 9ft, snooker or carom"):
+        billiards.table_preset("billiard")
+    with pytest.raises(TypeError, match="name"):
+        billiards.physics_preset(9)
     with pytest.raises(ValueError, match="jitter"):
         billiards.rack(table, None, "9ball", jitter=np.nan)
     with pytest.raises(ValueError, match="count"):

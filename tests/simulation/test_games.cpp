@@ -3,6 +3,8 @@
 #include <billiards/simulation/games.hpp>
 #include <billiards/simulation/shot.hpp>
 
+#include "game_events.hpp"
+
 #include <catch2/catch.hpp>
 
 #include <cmath>
@@ -16,30 +18,10 @@ using namespace billiards::simulation;
 using namespace billiards::simulation::games;
 using Kind = ShotEvent::Kind;
 
-struct Step {
-  Kind kind;
-  std::size_t first, second;
-};
-
-// A shot's events: the strike of ball 0, then `steps` 0.1 s apart.
-std::vector<ShotEvent> events_of(std::initializer_list<Step> steps) {
-  std::vector<ShotEvent> events(1);
-  events[0].kind = Kind::strike;
-  double t = 0;
-  for (const Step& s : steps) {
-    ShotEvent e;
-    e.time = t += 0.1;
-    e.kind = s.kind;
-    e.first = s.first;
-    e.second = s.second;
-    events.push_back(e);
-  }
-  return events;
-}
-
-Step hit(std::size_t a, std::size_t b) { return {Kind::ball, a, b}; }
-Step rail(std::size_t a, std::size_t cushion = 2) { return {Kind::cushion, a, cushion}; }
-Step drop(std::size_t a, std::size_t pocket = 1) { return {Kind::pocket, a, pocket}; }
+using game_events::drop;
+using game_events::events_of;
+using game_events::hit;
+using game_events::rail;
 
 NineBallState after_break() {
   NineBallState s;
@@ -337,8 +319,7 @@ TEST_CASE("three-cushion: a point is both object balls and three cushions before
   }
   SECTION("player 1 strikes the yellow, ball 1") {
     s.player = 1;
-    auto events = events_of({rail(1), rail(1), rail(1), hit(1, 0), hit(2, 1)});
-    events[0].first = events[0].second = 1;
+    const auto events = events_of({rail(1), rail(1), rail(1), hit(1, 0), hit(2, 1)}, 1);
     const auto d = decide(events);
     CHECK(d.verdict.points == 1);
     CHECK(d.next.scores[1] == 1);

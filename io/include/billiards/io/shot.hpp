@@ -6,7 +6,8 @@
 /// A shot setup file holds one directive per line; '#' starts a comment, blank lines are ignored:
 ///
 /// \verbatim
-///   table  7ft | 8ft | 9ft                  the table (default: the command line's --table)
+///   table  7ft | 8ft | 9ft | snooker | carom
+///                                           the table (default: the command line's --table)
 ///   ball   <x> <y> [<vx> <vy> [<wx> <wy> <wz>]]
 ///                                           one ball: centre (m), velocity (m/s) and spin (rad/s), at
 ///                                           rest and without spin where left out; ball i is the i-th
@@ -36,7 +37,7 @@ using billiards::simulation::ShotEvent;
 
 /// What a shot setup file holds: the table's preset, if named, and the balls.
 struct ShotSetup {
-  std::optional<std::string> table;  ///< "7ft", "8ft" or "9ft"
+  std::optional<std::string> table;  ///< "7ft", "8ft", "9ft", "snooker" or "carom"
   std::vector<PoolBall> balls;       ///< in the file's order
   std::vector<std::string> origins;  ///< each ball's "file:line: "
 };
@@ -52,8 +53,10 @@ inline ShotSetup read_shot_setup(std::istream& in, const std::string& source, do
   read_directives(in, source, [&](const std::string& where, const std::string& directive, std::istringstream& words) {
     if (directive == "table") {
       std::string name, extra;
-      if (!(words >> name) || (words >> extra) || (name != "7ft" && name != "8ft" && name != "9ft")) {
-        throw std::invalid_argument(where + "table: '" + excerpt(name) + "', expected one of 7ft, 8ft, 9ft");
+      if (!(words >> name) || (words >> extra) ||
+          (name != "7ft" && name != "8ft" && name != "9ft" && name != "snooker" && name != "carom")) {
+        throw std::invalid_argument(where + "table: '" + excerpt(name) +
+                                    "', expected one of 7ft, 8ft, 9ft, snooker, carom");
       }
       setup.table = name;
     } else if (directive == "ball") {

@@ -1,6 +1,7 @@
 /// \file
 /// The rules of the games on a shot's events: 9-ball and 8-ball after the WPA's World Standardized
-/// Rules (games/nine_ball.hpp, games/eight_ball.hpp), three-cushion after the UMB's
+/// Rules (games/nine_ball.hpp, games/eight_ball.hpp), snooker after the WPBSA's (games/snooker.hpp),
+/// three-cushion after the UMB's
 /// (games/three_cushion.hpp), what they read of a shot and what they decide (games/rules.hpp). Which rules
 /// are in: docs/games.md.
 #pragma once
@@ -8,4 +9,5 @@
 #include <billiards/simulation/games/eight_ball.hpp>
 #include <billiards/simulation/games/nine_ball.hpp>
 #include <billiards/simulation/games/rules.hpp>
+#include <billiards/simulation/games/snooker.hpp>
 #include <billiards/simulation/games/three_cushion.hpp>

@@ -6,5 +6,6 @@
 
 #include <billiards/simulation/core/errors.hpp>
 #include <billiards/simulation/shot/event.hpp>
+#include <billiards/simulation/shot/layouts.hpp>
 #include <billiards/simulation/shot/pool_table.hpp>
 #include <billiards/simulation/shot/shot.hpp>

@@ -2,7 +2,8 @@
 /// What the rules of every game read from a shot: its events summed up (the cue ball's first contact,
 /// the cushions met after it, the balls pocketed, the object balls driven to a cushion) and what a
 /// rule's decision says (legal or which foul, what was potted and must be respotted, who plays next and
-/// from where, whether the game is over). The games: nine_ball.hpp, eight_ball.hpp, three_cushion.hpp.
+/// from where, whether the game is over). The games: nine_ball.hpp, eight_ball.hpp, snooker.hpp,
+/// three_cushion.hpp.
 #pragma once
 
 #include <billiards/simulation/shot/event.hpp>
@@ -24,9 +25,11 @@ enum class Foul {
   wrong_ball_first,  ///< the cue ball met first a ball it may not meet first
   no_rail,           ///< after the first contact no ball was pocketed and none met a cushion
   illegal_break,     ///< a break that pocketed nothing and drove fewer than four object balls to a cushion
+  wrong_ball_potted,  ///< a ball that was not on was pocketed (snooker)
 };
 
-/// The name of a foul: "scratch", "no contact", "wrong ball first", "no rail", "illegal break".
+/// The name of a foul: "scratch", "no contact", "wrong ball first", "no rail", "illegal break", "wrong
+/// ball potted".
 inline const char* foul_name(Foul foul) noexcept {
   switch (foul) {
     case Foul::scratch: return "scratch";
@@ -34,6 +37,7 @@ inline const char* foul_name(Foul foul) noexcept {
     case Foul::wrong_ball_first: return "wrong ball first";
     case Foul::no_rail: return "no rail";
     case Foul::illegal_break: return "illegal break";
+    case Foul::wrong_ball_potted: return "wrong ball potted";
   }
   return "unknown";
 }
@@ -43,6 +47,7 @@ enum class BallInHand {
   none,                ///< nowhere: the cue ball stays where it stopped
   anywhere,            ///< anywhere on the cloth where it overlaps no ball
   behind_head_string,  ///< behind the head string (the quarter of the table nearest the head cushion)
+  in_d,                ///< in the snooker D (snooker_markings)
 };
 
 /// A shot's events as the rules read them. A jaw counts as a cushion (it is a cushion's end).
@@ -94,6 +99,7 @@ struct Verdict {
   std::vector<std::size_t> potted;             ///< the object balls pocketed, in the order they dropped
   std::vector<std::size_t> respotted;          ///< the balls to put back on their spot
   int points = 0;                              ///< the points the shot scored for its shooter
+  int penalty = 0;                             ///< the points a foul gave the shooter's opponent (snooker)
   std::size_t next_player = 0;                 ///< who shoots next (0 or 1)
   BallInHand ball_in_hand = BallInHand::none;  ///< where the next player may place the cue ball
   bool game_over = false;                      ///< the game has ended

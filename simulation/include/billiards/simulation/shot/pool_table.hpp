@@ -1,8 +1,9 @@
 /// \file
-/// A pool table for the shot engine: the playing surface between the cushions' noses, six pockets
-/// (capture circles), the straight cushions between them and the rounded jaws where the cushions end;
-/// presets after the WPA's dimensions; the balls' and the cloth's physical parameters with their
-/// sources; and the 8-ball and 9-ball racks.
+/// The tables of the shot engine: the playing surface between the cushions' noses, six pockets
+/// (capture circles), the straight cushions between them and the rounded jaws where the cushions end, or
+/// no pockets at all (carom); presets after the WPA's (pool), the WPBSA's (snooker) and the UMB's
+/// (carom) dimensions; the balls' and the cloth's physical parameters with their sources; and the 8-ball
+/// and 9-ball racks.
 ///
 /// Coordinates: x along the table's length, 0 at the head cushion's nose and `length` at the foot
 /// cushion's; y across, 0 and `width` at the side cushions' noses; z up, the cloth at z = 0.
@@ -47,7 +48,8 @@ struct Pocket {
   double radius;       ///< the capture circle's radius (metres)
 };
 
-/// A rectangular pool table with six pockets. Lengths in metres.
+/// A rectangular table for the shot engine: six pockets (pool, snooker) or none (carom, `has_pockets`
+/// false). Lengths in metres; the defaults are the 9-ft pool table's.
 struct PoolTable {
   double length = 2.54;   ///< x: between the head and foot cushions' noses
   double width = 1.27;    ///< y: between the side cushions' noses
@@ -60,10 +62,18 @@ struct PoolTable {
   double corner_pocket_depth = 0.0417;  ///< its centre behind the corner where the noses meet, diagonally
   double side_pocket_radius = 0.0645;   ///< a side pocket's capture circle
   double side_pocket_depth = 0.0685;    ///< its centre behind the side cushions' nose line
+  /// false: a carom table, four cushions meeting at the corners, no jaws and no pockets (the mouths,
+  /// jaws and capture circles above are then not used).
+  bool has_pockets = true;
 
-  /// The six straight cushions: the head (x = 0), the foot (x = length), and the two halves of each
-  /// side (y = 0, y = width), in that order.
+  /// The straight cushions. With pockets, six: the head (x = 0), the foot (x = length), and the two
+  /// halves of each side (y = 0, y = width), in that order; without, four: the head, the foot, the side
+  /// at y = 0 and the side at y = width, each the whole length of its side.
   [[nodiscard]] std::vector<CushionSegment> cushions() const {
+    if (!has_pockets) {
+      const double L = length, W = width;
+      return {{{0, 0}, {0, W}, {1, 0}}, {{L, 0}, {L, W}, {-1, 0}}, {{0, 0}, {L, 0}, {0, 1}}, {{0, W}, {L, W}, {0, -1}}};
+    }
     const double c = corner_mouth / std::sqrt(2.0), s = side_mouth / 2, L = length, W = width;
     return {{{0, c}, {0, W - c}, {1, 0}},
             {{L, c}, {L, W - c}, {-1, 0}},
@@ -74,9 +84,10 @@ struct PoolTable {
   }
 
   /// The twelve jaws, one at each end of each cushion, in the order of cushions(): each tangent to its
-  /// cushion's nose line at the end, behind it.
+  /// cushion's nose line at the end, behind it. None without pockets.
   [[nodiscard]] std::vector<Jaw> jaws() const {
     std::vector<Jaw> out;
+    if (!has_pockets) return out;
     const double side_x = length / 2;
     for (const CushionSegment& cushion : cushions()) {
       for (const TableVector& end : {cushion.start, cushion.end}) {
@@ -89,8 +100,9 @@ struct PoolTable {
   }
 
   /// The six pockets: the corners (0, 0), (length, 0), (0, width), (length, width), then the sides
-  /// (length/2, 0) and (length/2, width).
+  /// (length/2, 0) and (length/2, width). None without pockets.
   [[nodiscard]] std::vector<Pocket> pockets() const {
+    if (!has_pockets) return {};
     const double d = corner_pocket_depth / std::sqrt(2.0), L = length, W = width;
     return {{{-d, -d}, corner_pocket_radius},
             {{L + d, -d}, corner_pocket_radius},
@@ -99,6 +111,9 @@ struct PoolTable {
             {{L / 2, -side_pocket_depth}, side_pocket_radius},
             {{L / 2, W + side_pocket_depth}, side_pocket_radius}};
   }
+
+  /// Equal where every field is.
+  friend bool operator==(const PoolTable&, const PoolTable&) = default;
 
   /// The foot spot, where a rack's apex ball stands: a quarter of the length from the foot cushion.
   [[nodiscard]] TableVector foot_spot() const { return {0.75 * length, 0.5 * width}; }
@@ -128,6 +143,41 @@ inline PoolTable pool_table(std::string_view size) {
   return table;
 }
 
+/// The snooker table: the WPBSA's 12-ft match table, its playing area 3569 × 1778 mm between the
+/// cushions' faces, with pockets after pooltool's snooker table (the WPBSA's pocket templates are not
+/// published): curved facings at the mouths (jaws of 4 in at the corners and 2.5 in at the middle
+/// pockets) whose narrowest openings are 83 mm and 87 mm, the corner pockets' capture circles of 4 in
+/// 36 mm behind the corner, the middle pockets' of 1.68 in 0.95 in behind the nose line; the cushions'
+/// nose 28 mm above the cloth. A mouth (between the straight noses' ends) is its narrowest opening
+/// widened by the jaws' curve: the opening + (2 − √2) ρ at a corner, + 2ρ at a middle pocket.
+inline PoolTable snooker_table() {
+  constexpr double inch = 0.0254;
+  PoolTable table;
+  table.length = 3.569;
+  table.width = 1.778;
+  table.corner_jaw_radius = 4 * inch;
+  table.side_jaw_radius = 2.5 * inch;
+  table.corner_mouth = 0.083 + (2 - std::sqrt(2.0)) * table.corner_jaw_radius;
+  table.side_mouth = 0.087 + 2 * table.side_jaw_radius;
+  table.nose_height = 0.028;
+  table.corner_pocket_radius = 4 * inch;
+  table.corner_pocket_depth = 0.036;
+  table.side_pocket_radius = 1.68 * inch;
+  table.side_pocket_depth = 0.95 * inch;
+  return table;
+}
+
+/// The carom table: the UMB's match table for three-cushion, its playing area 2.84 × 1.42 m between the
+/// cushions' noses, no pockets, the cushions' nose 37 mm above the cloth (UMB: 37 ± 1 mm).
+inline PoolTable carom_table() {
+  PoolTable table;
+  table.length = 2.84;
+  table.width = 1.42;
+  table.nose_height = 0.037;
+  table.has_pockets = false;
+  return table;
+}
+
 /// The physical parameters of a shot: the balls (all alike), the cloth, ball–ball and ball–cushion
 /// contacts. The defaults and their sources are in docs/shot.md.
 struct PoolPhysics {
@@ -139,6 +189,46 @@ struct PoolPhysics {
   double cushion_restitution = 0.85;  ///< e_c at a cushion's nose (pooltool's)
   double cushion_friction = 0.2;      ///< μ_c at a cushion's nose (pooltool's)
 };
+
+/// The snooker balls: 52.5 mm (WPBSA) and 0.140 kg (pooltool's snooker ball; the WPBSA sets only a
+/// tolerance of 3 g within a set); the cloth and the contacts as on the pool table.
+inline PoolPhysics snooker_physics() {
+  PoolPhysics physics;
+  physics.radius = 0.02625;
+  physics.mass = 0.140;
+  return physics;
+}
+
+/// The carom balls and the heated cloth: 61.5 mm balls (UMB: 61–61.5 mm) of 0.210 kg (UMB: 205–220 g);
+/// the heated cloth rolls faster than the pool table's: μ_r = 0.005, half the pool cloth's (no published
+/// measurement: a choice); the cushions' friction 0.15 (pooltool's carom table); the rest as on the pool
+/// table.
+inline PoolPhysics carom_physics() {
+  PoolPhysics physics;
+  physics.radius = 0.03075;
+  physics.mass = 0.210;
+  physics.cloth.rolling_friction = 0.005;
+  physics.cushion_friction = 0.15;
+  return physics;
+}
+
+/// The tables by name: "7ft", "8ft", "9ft" (pool_table), "snooker" (snooker_table) and "carom"
+/// (carom_table). Throws std::invalid_argument naming the name and the ones there are.
+inline PoolTable table_preset(std::string_view name) {
+  if (name == "snooker") return snooker_table();
+  if (name == "carom") return carom_table();
+  if (name == "7ft" || name == "8ft" || name == "9ft") return pool_table(name);
+  throw std::invalid_argument("table is '" + std::string(name) + "', expected 7ft, 8ft, 9ft, snooker or carom");
+}
+
+/// The balls' and the cloth's physics that go with table_preset(name): the pool physics (PoolPhysics{})
+/// on the pool tables, snooker_physics() and carom_physics(). Throws as table_preset does.
+inline PoolPhysics physics_preset(std::string_view name) {
+  if (name == "snooker") return snooker_physics();
+  if (name == "carom") return carom_physics();
+  (void)table_preset(name);
+  return {};
+}
 
 /// A ball of a shot: its state on the cloth, and whether it is still in play.
 struct PoolBall {
@@ -216,7 +306,8 @@ inline std::vector<PoolBall> scatter(const PoolTable& table, const PoolPhysics& 
     throw std::invalid_argument("count is " + std::to_string(count) + ", expected 1 to 16 balls");
   const double R = physics.radius, L = table.length, W = table.width;
   // Clear of the mouths: a centre's along-rail coordinate beyond the jaws by a radius.
-  const double corner = table.corner_mouth / std::sqrt(2.0) + 2 * R, side = table.side_mouth / 2 + 2 * R;
+  const double corner = table.has_pockets ? table.corner_mouth / std::sqrt(2.0) + 2 * R : 0;
+  const double side = table.has_pockets ? table.side_mouth / 2 + 2 * R : 0;
   std::mt19937_64 random(seed);
   std::uniform_real_distribution<double> unit(0, 1);
   const auto clear_of_mouths = [&](const TableVector& r) {
