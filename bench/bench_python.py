@@ -9,7 +9,10 @@ peers, pinned to the same core) and bench/report.py: printed as JSON.
   of 0.1–12 m/s in any direction, elevation up to 0.3 rad, tip offsets within 0.7 R), drawn here from a
   seeded numpy generator, batched by table and ball count, on one thread and on every core;
 - the Dask batch: the same breaks on a local cluster of one worker process a core, against the local
-  batch on every core.
+  batch on every core;
+- the games: games.GameEnv's step for each game (a seeded random player: pool with any cue, snooker and
+  three-cushion aiming at a ball it may meet first), against the same shots replayed from Python (Shot,
+  strike, play from the layout each step struck), and the rules' decision alone on those shots.
 
   bench_python.py --build BUILD_DIR --part one-core|every-core [--shots 100000] [--repetitions 5]
                   [--dask-shots 20000]
@@ -104,6 +107,43 @@ def dask_batch(billiards, np, shots):
             "overhead_ms_per_task": 1e3 * max(0.0, (shots / remote - shots / local)) * cores / tasks}
 
 
+def game_steps(billiards, np, game, steps, repetitions):
+    """µs per GameEnv.step, per the same shot replayed from Python, and per rules' decision alone."""
+    import billiards.games as games
+    decide = {"9ball": games.nine_ball, "8ball": games.eight_ball, "snooker": games.snooker,
+              "3cushion": games.three_cushion}[game]
+    env_times, shot_times, rule_times = [], [], []
+    for _ in range(repetitions):
+        env = games.GameEnv(game, max_shots=10**9)
+        rng = np.random.default_rng(2026)
+        observation, _ = env.reset(seed=0)
+        played, spent = [], 0.0
+        for k in range(steps):
+            action = env.sample_action(rng, aim=game in ("snooker", "3cushion"))
+            state = env.state
+            begun = time.perf_counter()
+            observation, reward, terminated, truncated, info = env.step(action)
+            spent += time.perf_counter() - begun
+            cue = billiards.Cue(speed=action[0], azimuth=action[1], side_offset=action[2], up_offset=action[3])
+            shot = env.last_shot()
+            played.append((shot.placed, info["shooter"] if game == "3cushion" else 0, cue, state, shot))
+            if terminated or truncated:
+                observation, _ = env.reset(seed=k + 1)
+        env_times.append(spent / steps)
+        begun = time.perf_counter()
+        for layout, striker, cue, _, _ in played:
+            shot = billiards.Shot(env.table, env.physics, layout)
+            shot.strike(striker, cue)
+            shot.play()
+        shot_times.append((time.perf_counter() - begun) / steps)
+        begun = time.perf_counter()
+        for _, _, _, state, shot in played:
+            decide(state, shot)
+        rule_times.append((time.perf_counter() - begun) / steps)
+    return {"steps": steps, "us_per_step": 1e6 * statistics.median(env_times),
+            "us_per_shot": 1e6 * statistics.median(shot_times), "us_per_decision": 1e6 * statistics.median(rule_times)}
+
+
 def main():
     parser = argparse.ArgumentParser()
     parser.add_argument("--build", required=True, help="the build folder whose python/ holds the package")
@@ -124,6 +164,8 @@ def main():
         for kind in ("9ball", "8ball"):
             result[f"break_{kind}"] = breaks(billiards, kind, args.repetitions)
         result["random_one_thread"] = play_random(billiards, batches, 1, max(1, args.repetitions // 2))
+        for game in ("9ball", "8ball", "snooker", "3cushion"):
+            result[f"game_{game}"] = game_steps(billiards, np, game, 2000, max(1, args.repetitions // 2))
     else:
         result["random_every_core"] = play_random(billiards, batches, billiards.available_cores(),
                                                   max(1, args.repetitions // 2))

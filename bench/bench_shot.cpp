@@ -7,6 +7,11 @@
 // - shot/random and shot/random/threads:N: random shots (1–16 balls scattered, some frozen to a ball or
 //   a cushion; 0.1–12 m/s, any direction, tip offsets within 0.7 R, elevation up to 17°) on one core,
 //   and, where BILLIARDS_BENCH_THREADS is set, one shot per thread on every core: shots per second.
+// - games/play/<game> and games/rules/<game> (9ball, 8ball, snooker, 3cushion): 256 shots of games a
+//   seeded random player plays (games::Game; any cue in pool, a cue aimed with a random cut at a ball it
+//   may meet first in snooker and three-cushion), replayed from where each started, against the rules'
+//   decision alone on each shot's events: the rules' share of a game's time.
+#include <billiards/simulation/games.hpp>
 #include <billiards/simulation/shot.hpp>
 
 #include <benchmark/benchmark.h>
@@ -15,6 +20,10 @@
 #include <cstdint>
 #include <cstdlib>
 #include <random>
+#include <string>
+#include <tuple>
+#include <type_traits>
+#include <variant>
 #include <thread>
 #include <vector>
 
@@ -85,6 +94,98 @@ void random_shots(benchmark::State& state) {
   state.SetItemsProcessed(state.iterations());
   state.counters["events_per_shot"] = static_cast<double>(events) / static_cast<double>(state.iterations());
 }
+
+// A shot of a game: where it started, who struck with which cue, the state before it and its events.
+struct GameShot {
+  std::vector<PoolBall> balls;
+  std::size_t striker = 0;
+  billiards::Cue<double> cue;
+  games::Game::State before;
+  std::vector<ShotEvent> events;
+};
+
+// The direction from ball `from` to a ball the player may meet first (any ball in pool), cut at random.
+double aim(const games::Game& game, std::mt19937_64& random) {
+  std::uniform_real_distribution<double> unit(0, 1);
+  const auto& balls = game.balls();
+  const std::size_t from = game.kind() == games::GameKind::three_cushion ? game.player() : 0;
+  std::vector<std::size_t> candidates;
+  const auto* snooker = std::get_if<games::SnookerState>(&game.state());
+  for (std::size_t b = 0; b < balls.size(); ++b)
+    if (b != from && !balls[b].pocketed && (snooker == nullptr || snooker->is_on(b))) candidates.push_back(b);
+  if (candidates.empty() || balls[from].pocketed || game.kind() == games::GameKind::nine_ball ||
+      game.kind() == games::GameKind::eight_ball)
+    return 2 * M_PI * unit(random);
+  const Eigen::Vector3d d = balls[candidates[random() % candidates.size()]].position - balls[from].position;
+  return std::atan2(d.y(), d.x()) + 0.08 * (2 * unit(random) - 1);
+}
+
+std::vector<GameShot> game_shots(games::GameKind kind, const char* table_name) {
+  games::Game game(kind, table_preset(table_name), physics_preset(table_name), {}, 2);
+  std::mt19937_64 random(2026);
+  std::uniform_real_distribution<double> unit(0, 1);
+  std::vector<GameShot> shots;
+  while (shots.size() < 256) {
+    GameShot s;
+    s.before = game.state();
+    s.cue = {0.567, 0.3 + 6.7 * unit(random), aim(game, random), 0.0, 0.8 * unit(random) - 0.4,
+             0.8 * unit(random) - 0.4, 1.0};
+    s.striker = kind == games::GameKind::three_cushion ? game.player() : 0;
+    game.step(s.cue, TableVector(0.4 + 0.35 * unit(random), 0.6 + 0.6 * unit(random)));
+    s.balls = game.last_shot()->placed();
+    s.events = game.last_shot()->events();
+    shots.push_back(std::move(s));
+    if (game.over()) game.reset(1e-3, shots.size());
+  }
+  return shots;
+}
+
+void game_play(benchmark::State& state, games::GameKind kind, const char* table_name) {
+  const std::vector<GameShot> shots = game_shots(kind, table_name);
+  const PoolTable table = table_preset(table_name);
+  const PoolPhysics physics = physics_preset(table_name);
+  std::size_t next = 0;
+  for (auto _ : state) {
+    const GameShot& s = shots[next];
+    next = (next + 1) % shots.size();
+    Shot shot(table, physics, s.balls);
+    shot.strike(s.striker, s.cue);
+    shot.play();
+    benchmark::DoNotOptimize(shot.time());
+  }
+  state.SetItemsProcessed(state.iterations());
+}
+
+void game_rules(benchmark::State& state, games::GameKind kind, const char* table_name) {
+  const std::vector<GameShot> shots = game_shots(kind, table_name);
+  std::size_t next = 0;
+  for (auto _ : state) {
+    const GameShot& s = shots[next];
+    next = (next + 1) % shots.size();
+    const bool legal = std::visit(
+        [&](const auto& before) {
+          using State = std::decay_t<decltype(before)>;
+          if constexpr (std::is_same_v<State, games::NineBallState>) return games::nine_ball(before, s.events).verdict.legal();
+          if constexpr (std::is_same_v<State, games::EightBallState>) return games::eight_ball(before, s.events).verdict.legal();
+          if constexpr (std::is_same_v<State, games::SnookerState>) return games::snooker(before, s.events).verdict.legal();
+          if constexpr (std::is_same_v<State, games::ThreeCushionState>) return games::three_cushion(before, s.events).verdict.legal();
+        },
+        s.before);
+    benchmark::DoNotOptimize(legal);
+  }
+  state.SetItemsProcessed(state.iterations());
+}
+
+const bool games_registered = [] {
+  const std::tuple<const char*, games::GameKind, const char*> all[] = {
+      {"9ball", games::GameKind::nine_ball, "7ft"}, {"8ball", games::GameKind::eight_ball, "7ft"},
+      {"snooker", games::GameKind::snooker, "snooker"}, {"3cushion", games::GameKind::three_cushion, "carom"}};
+  for (const auto& [name, kind, table] : all) {
+    benchmark::RegisterBenchmark((std::string("games/play/") + name).c_str(), game_play, kind, table)->UseRealTime();
+    benchmark::RegisterBenchmark((std::string("games/rules/") + name).c_str(), game_rules, kind, table)->UseRealTime();
+  }
+  return true;
+}();
 
 const bool shot_registered = [] {
   benchmark::RegisterBenchmark("shot/break/9ball", breaks, Rack::nine_ball)->UseRealTime();

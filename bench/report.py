@@ -301,6 +301,29 @@ def shot_section(runs, pooltool, fastfiz=None):
     return "\n".join(lines)
 
 
+GAMES = (("9ball", "9-ball"), ("8ball", "8-ball"), ("snooker", "snooker"), ("3cushion", "three-cushion"))
+
+
+def games_section(runs, python):
+    """The rules' decision against the shot it decides (C++), and GameEnv's step against the same shot
+    played from Python, from the same run."""
+    lines = ["| game | a shot, C++ | the rules' decision, C++ | rules / shot | GameEnv.step, Python | "
+             "the shot from Python | step / shot | goal |", "|---|---:|---:|---:|---:|---:|---:|---:|"]
+    for game, name in GAMES:
+        play, rules = runs.get(f"games/play/{game}"), runs.get(f"games/rules/{game}")
+        if play is None or rules is None:
+            continue
+        play_us, rules_us = per_item_ns(play) / 1e3, per_item_ns(rules) / 1e3
+        step = (python or {}).get(f"game_{game}")
+        env = ("| | | |" if step is None else
+               f"| {step['us_per_step']:,.1f} µs | {step['us_per_shot']:,.1f} µs | "
+               f"{step['us_per_step'] / step['us_per_shot']:.2f}× | ≤ 1.2× |")
+        lines.append(f"| {name} | {play_us:,.2f} µs | {rules_us * 1e3:,.0f} ns | {100 * rules_us / play_us:.2f} % {env}")
+    if len(lines) == 2:
+        return "(not in this run)"
+    return "\n".join(lines)
+
+
 def python_section(runs, python, pooltool):
     """The Python package beside the C++ calls and pooltool, from bench_python.py's JSON of the same run."""
     if python is None:
@@ -689,6 +712,16 @@ called from Python (`Shot`, `strike`, `play`, pinned to the same core as the C++
 through `play_shots`, and pooltool's breaks of the same run against the Python ones.
 
 {python_section(runs, getattr(args, "python_runs", None), args.pooltool_runs)}
+
+## The games: the rules against the shot, the environment against the shot
+
+256 shots of each game a seeded random player plays (`games::Game`: any cue in pool; in snooker and
+three-cushion a cue aimed with a random cut at a ball it may meet first), replayed from where each
+started (`games/play/*`) against the rules' decision alone on the same events (`games/rules/*`); and,
+from Python, 2000 steps of `billiards.games.GameEnv` with the same kind of player against the same
+shots played from Python (`Shot`, `strike`, `play` from the layout each step struck; `bench_python.py`).
+
+{games_section(runs, getattr(args, "python_runs", None))}
 """
     return figure, text
 

@@ -297,6 +297,13 @@ class Shot:
         self._count = len(layout)
         self._table, self._physics = table, physics
 
+    @classmethod
+    def _played(cls, native, table: PoolTable, physics: PoolPhysics, count: int) -> "Shot":
+        """A Shot around the compiled module's shot ``native`` (a game's last shot)."""
+        shot = cls.__new__(cls)
+        shot._shot, shot._count, shot._table, shot._physics = native, count, table, physics
+        return shot
+
     def strike(self, ball: int, cue: Cue) -> None:
         """Strikes ball ``ball`` (its index) with ``cue`` now; the strike is the shot's next event."""
         if isinstance(ball, bool) or not isinstance(ball, (int, np.integer)):

@@ -2,7 +2,7 @@
 from a shot's events, placing balls by hand (the cue ball in hand, respotting), and a game environment
 with the ``reset()`` / ``step(action)`` conventions of Gymnasium (without depending on it).
 
-Which rules are in and which are left out: docs/games.md. Ball 0 is the cue ball, the object balls are
+Which rules are in and which are left out: a page per game, from docs/games.md. Ball 0 is the cue ball, the object balls are
 numbered as in the game (9-ball: 1 to 9; 8-ball: 1 to 15, the solids 1–7, the stripes 9–15; snooker: 1–15
 the reds, 16–21 yellow, green, brown, blue, pink, black; three-cushion: 0 the white, 1 the yellow, 2 the
 red).
@@ -10,13 +10,14 @@ red).
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field, replace
+import math
+
+from dataclasses import dataclass, field
 
 import numpy as np
 
 from . import _billiards
-from ._shot import (Cue, PoolPhysics, PoolTable, Shot, ShotOptions, _from_columns, physics_preset, rack,
-                    table_preset)
+from ._shot import PoolPhysics, PoolTable, Shot, ShotOptions, _from_columns, physics_preset, table_preset
 
 #: Where the next player may place the cue ball: "none", "anywhere", "behind_head_string", "in_d" (the
 #: snooker D).
@@ -229,7 +230,6 @@ def place_cue_ball(layout: np.ndarray, xy, region: str, table: PoolTable, radius
 
 GAMES = ("9ball", "8ball", "snooker", "3cushion")
 _DEFAULT_TABLES = {"9ball": "7ft", "8ball": "7ft", "snooker": "snooker", "3cushion": "carom"}
-_STARTING_HAND = {"9ball": "behind_head_string", "8ball": "behind_head_string", "snooker": "in_d"}
 
 
 class GameEnv:
@@ -269,7 +269,10 @@ class GameEnv:
 
     Reward, for the player who took the shot: pool: +1 when it wins the game, −1 when it loses it, 0
     otherwise; snooker: the points it scored less the points a foul gave away; three-cushion: the point
-    it scored (0 or 1). ``info``: the shot's ``verdict`` (Verdict), its ``shooter``, its ``events`` count.
+    it scored (0 or 1). ``info``: the shot's ``verdict`` (Verdict), its ``shooter``, its ``events`` count;
+    ``last_shot()`` gives the Shot itself (its events and trajectories). ``state`` is the game's state
+    (NineBallState, EightBallState, SnookerState or ThreeCushionState), ``layout`` the balls where they
+    lie (ball_dtype). The game is played in C++ (games::Game): a step costs little beyond its shot.
     """
 
     def __init__(self, game: str = "9ball", table=None, physics: PoolPhysics | None = None, jitter: float = 1e-3,
@@ -284,87 +287,114 @@ class GameEnv:
                             f"a PoolTable")
         if physics is None:
             physics = physics_preset(name) if isinstance(name, str) else PoolPhysics()
+        if not isinstance(physics, PoolPhysics):
+            raise TypeError(f"{type(self).__name__}: physics is {type(physics).__name__}, expected a PoolPhysics")
         self.physics = physics
-        if not (isinstance(max_shots, int) and max_shots >= 1):
+        if isinstance(max_shots, bool) or not (isinstance(max_shots, int) and max_shots >= 1):
             raise ValueError(f"{type(self).__name__}: max_shots is {max_shots!r}, expected a whole number >= 1")
-        if not (isinstance(target, int) and target >= 1):
+        if isinstance(target, bool) or not (isinstance(target, int) and target >= 1):
             raise ValueError(f"{type(self).__name__}: target is {target!r}, expected a whole number >= 1")
+        if not (0 <= jitter <= 1):
+            raise ValueError(f"{type(self).__name__}: jitter is {jitter!r}, expected a number in [0, 1]")
         self.jitter, self.max_shots, self.target = float(jitter), max_shots, target
-        self._options = ShotOptions() if options is None else options
+        options = ShotOptions() if options is None else options
+        self._game = _billiards.Game(game, self.table, self.physics, options, target)
         self._rng = np.random.default_rng()
-        self._layout = None
+        self._started = False
+
+    @property
+    def state(self):
+        """The game's state now (a NineBallState, EightBallState, SnookerState or ThreeCushionState)."""
+        return _state_from(self.game, self._game.state())
+
+    @property
+    def layout(self) -> np.ndarray:
+        """The balls where they lie (ball_dtype); the cue ball in hand is placed by the next step."""
+        return _from_columns(self._game.balls())
+
+    def last_shot(self):
+        """The last shot played (a billiards.Shot; None before the first step)."""
+        native = self._game.last_shot()
+        return None if native is None else Shot._played(native, self.table, self.physics, len(self.layout))
+
+    def sample_action(self, rng: np.random.Generator | None = None, aim: bool = True) -> list:
+        """A random player's action: a speed of 0.3 to 7 m/s, tip offsets within ±0.4 of the radius, the cue
+        ball's place drawn where it may be placed in hand, and, with ``aim``, the cue aimed at a ball it may
+        meet first (the lowest in 9-ball, its group's or the 8 in 8-ball, a ball on in snooker, either other
+        ball in three-cushion) with a random cut of about 0.08 rad; without, in any direction. ``rng``: a
+        numpy Generator (the environment's own, seeded by ``reset``, where omitted)."""
+        rng = self._rng if rng is None else rng
+        balls, state = self._game.balls(), self.state
+        position, pocketed = balls[0], balls[3]
+        length, width, radius = self.table.length, self.table.width, self.physics.radius
+        hand = getattr(state, "ball_in_hand", "none")
+        if hand == "in_d":
+            place = [rng.uniform(0.737 - 0.292, 0.737), rng.uniform(width / 2 - 0.292, width / 2 + 0.292)]
+        else:
+            place = [rng.uniform(radius, length / 4 if hand == "behind_head_string" else length - radius),
+                     rng.uniform(radius, width - radius)]
+        striker = state.player if self.game == "3cushion" else 0
+        cue = np.asarray(place) if hand != "none" else position[striker, :2]
+        targets = [b for b in range(len(pocketed)) if b != striker and not pocketed[b] and _may_meet_first(state, b)]
+        if aim and targets:
+            target = position[targets[rng.integers(len(targets))], :2]
+            azimuth = math.atan2(target[1] - cue[1], target[0] - cue[0]) + rng.normal(0, 0.08)
+        else:
+            azimuth = rng.uniform(-math.pi, math.pi)
+        return [rng.uniform(0.3, 7), azimuth, rng.uniform(-0.4, 0.4), rng.uniform(-0.4, 0.4)] + place
 
     def reset(self, seed: int | None = None, options: dict | None = None):
         """A new game: the game's starting position (the rack's jitter, or three-cushion's side, drawn from
         ``seed``), the break to play."""
         if seed is not None:
             self._rng = np.random.default_rng(seed)
-        self._layout = rack(self.table, self.physics, self.game, self.jitter, int(self._rng.integers(2**63)))
-        if self.game == "3cushion":
-            self._state = ThreeCushionState(target=self.target)
-        elif self.game == "snooker":
-            self._state = SnookerState()
-        else:
-            state = NineBallState() if self.game == "9ball" else EightBallState()
-            self._state = replace(state, ball_in_hand=_STARTING_HAND[self.game])
-        self._shots = 0
-        return self._observation(), {}
-
-    def _observation(self) -> dict:
-        positions = self._layout["position"][:, :2].copy()
-        on_table = ~self._layout["pocketed"]
-        positions[~on_table] = np.nan
-        obs = {"positions": positions, "on_table": on_table, "player": self._state.player,
-               "ball_in_hand": BALL_IN_HAND.index(getattr(self._state, "ball_in_hand", "none"))}
-        if self.game in ("9ball", "8ball"):
-            obs["breaking"] = self._state.breaking
-        if self.game == "8ball":
-            obs["groups"] = np.array([GROUPS.index(g) for g in self._state.groups])
-        if self.game in ("snooker", "3cushion"):
-            obs["scores"] = np.array(self._state.scores)
-        if self.game == "snooker":
-            obs["on"] = SNOOKER_ON.index(self._state.on)
-        return obs
-
-    def _action(self, action) -> np.ndarray:
-        numbers = np.asarray(action, dtype=np.float64).reshape(-1)
-        if numbers.size not in (4, 6) or not np.all(np.isfinite(numbers[:4])):
-            raise ValueError(f"{type(self).__name__}.step: action is {action!r}, expected 4 finite numbers (speed, "
-                             f"azimuth, side_offset, up_offset) and optionally the cue ball's place x, y")
-        return numbers
+        self._game.reset(self.jitter, int(self._rng.integers(2**63)))
+        self._shots, self._started = 0, True
+        return self._game.observation(), {}
 
     def step(self, action):
         """Plays one shot: returns (observation, reward, terminated, truncated, info)."""
-        name = type(self).__name__
-        if self._layout is None:
-            raise RuntimeError(f"{name}.step: call reset() first")
-        if self._state.over:
-            raise RuntimeError(f"{name}.step: the game is over; call reset()")
-        numbers = self._action(action)
-        hand = getattr(self._state, "ball_in_hand", "none")
-        if hand != "none":
-            where = numbers[4:6] if numbers.size == 6 else None
-            place_cue_ball(self._layout, where, hand, self.table, self.physics.radius)
-        shooter = self._state.player
-        shot = Shot(self.table, self.physics, self._layout, self._options)
-        striker = shooter if self.game == "3cushion" else 0
-        shot.strike(striker, Cue(speed=numbers[0], azimuth=numbers[1], side_offset=numbers[2], up_offset=numbers[3]))
-        shot.play()
-        decide = {"9ball": nine_ball, "8ball": eight_ball, "snooker": snooker, "3cushion": three_cushion}[self.game]
-        verdict, self._state = decide(self._state, shot)
-        self._layout = shot.balls
-        for ball in verdict.respotted:
-            respot(self._layout, ball, self.table, self.physics.radius, "snooker" if self.game == "snooker" else "pool")
+        if not self._started:
+            raise RuntimeError(f"{type(self).__name__}.step: call reset() first")
+        if self._game.over():
+            raise RuntimeError(f"{type(self).__name__}.step: the game is over; call reset()")
+        verdict, shooter, reward, events, observation = self._game.step(action, f"{type(self).__name__}.step")
+        verdict = Verdict(*verdict)
         self._shots += 1
-        if self.game == "snooker":
-            reward = float(verdict.points - verdict.penalty)
-        elif self.game == "3cushion":
-            reward = float(verdict.points)
-        else:
-            reward = 0.0 if not verdict.game_over else 1.0 if verdict.winner == shooter else -1.0
         truncated = not verdict.game_over and self._shots >= self.max_shots
-        info = {"verdict": verdict, "shooter": shooter, "events": shot.event_count}
-        return self._observation(), reward, verdict.game_over, truncated, info
+        return observation, reward, verdict.game_over, truncated, {"verdict": verdict, "shooter": shooter,
+                                                                     "events": events}
+
+
+def _may_meet_first(state, ball: int) -> bool:
+    """Whether the player to shoot may meet ``ball`` first."""
+    if isinstance(state, ThreeCushionState):
+        return True
+    if isinstance(state, SnookerState):
+        lowest = min((b for b in range(16, 22) if state.on_table[b]), default=21)
+        return (state.on == "red" and 1 <= ball <= 15 or state.on == "colour" and ball >= 16 or
+                state.on == "sequence" and ball == lowest)
+    if isinstance(state, NineBallState):
+        return ball == min((b for b in range(1, 10) if state.on_table[b]), default=9)
+    group = state.groups[state.player]
+    mine = [b for b in range(1, 16) if state.on_table[b] and b != 8 and
+            (group == "open" or (group == "solids") == (b < 8))]
+    return ball == 8 if group != "open" and not mine else ball != 8 and ball in mine
+
+
+def _state_from(game: str, d: dict):
+    """A game's state from the compiled module's dict."""
+    if game == "3cushion":
+        return ThreeCushionState(tuple(d["scores"]), d["player"], d["target"], d["over"], d["winner"])
+    hand = BALL_IN_HAND[d["ball_in_hand"]]
+    if game == "snooker":
+        return SnookerState(list(d["on_table"]), d["player"], tuple(d["scores"]), SNOOKER_ON[d["on"]], hand,
+                            d["over"], d["winner"])
+    if game == "9ball":
+        return NineBallState(list(d["on_table"]), d["player"], d["breaking"], tuple(d["fouls_in_a_row"]), hand,
+                             d["over"], d["winner"])
+    return EightBallState(list(d["on_table"]), d["player"], d["breaking"], tuple(GROUPS[g] for g in d["groups"]),
+                          hand, d["over"], d["winner"])
 
 
 class PoolEnv(GameEnv):

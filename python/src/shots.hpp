@@ -124,6 +124,8 @@ class PyShot {
   PyShot(const PoolTable& table, const PoolPhysics& physics, const py::array& balls,
          const ShotOptions& options)
       : shot_(table, physics, balls_from_records(balls), options) {}
+  // A copy of a shot played elsewhere (a game's last shot).
+  explicit PyShot(const simulation::Shot& shot) : shot_(shot) {}
 
   // Runs `run` without the GIL, this Shot locked.
   template <typename Run>

@@ -61,7 +61,7 @@ def test_a_random_player_finishes_every_game(game, count):
             action = [rng.uniform(0.3, 9), rng.uniform(-np.pi, np.pi), rng.uniform(-0.4, 0.4), rng.uniform(-0.4, 0.4),
                       rng.uniform(0, env.table.length), rng.uniform(0, env.table.width)]
             observation, reward, terminated, truncated, info = env.step(action)
-            state, verdict = env._state, info["verdict"]
+            state, verdict = env.state, info["verdict"]
             # Every object ball is either on the table or down, in the rules and on the cloth alike.
             assert observation["on_table"].shape == (balls,)
             assert list(observation["on_table"][1:]) == list(state.on_table[1:])
@@ -117,24 +117,6 @@ def test_three_cushion_scores_a_bank_into_both_balls():
         games.three_cushion(games.ThreeCushionState(player=1), played(layout, billiards.Cue(1.0)))
 
 
-def _aimed(rng, observation, env):
-    """A random player's action that aims, with a random cut, at a random ball it may meet first."""
-    state, positions = env._state, observation["positions"]
-    if env.game == "snooker":
-        lowest = min((b for b in range(16, 22) if state.on_table[b]), default=21)
-        candidates = [b for b in range(1, 22) if observation["on_table"][b] and
-                      (state.on == "red" and b <= 15 or state.on == "colour" and b >= 16 or b == lowest)]
-        striker = 0
-    else:
-        striker = observation["player"]
-        candidates = [b for b in range(3) if b != striker]
-    place = [rng.uniform(0.4, 0.75), rng.uniform(0.6, 1.2)]
-    cue = positions[striker] if observation["on_table"][striker] else np.array(place)
-    target = positions[rng.choice(candidates)] if candidates else cue + 1
-    azimuth = math.atan2(target[1] - cue[1], target[0] - cue[0]) + rng.normal(0, 0.08)
-    return [rng.uniform(0.3, 7), azimuth, rng.uniform(-0.4, 0.4), rng.uniform(-0.4, 0.4)] + place
-
-
 def test_a_random_player_finishes_every_snooker_frame():
     env = games.GameEnv("snooker", max_shots=5000, options=billiards.ShotOptions(check_invariants=True))
     rng = np.random.default_rng(2026)
@@ -142,9 +124,9 @@ def test_a_random_player_finishes_every_snooker_frame():
         observation, _ = env.reset(seed=g)
         scored, black_respots = [0, 0], 0
         for _ in range(5000):
-            before = env._state
-            observation, reward, terminated, truncated, info = env.step(_aimed(rng, observation, env))
-            state, verdict = env._state, info["verdict"]
+            before = env.state
+            observation, reward, terminated, truncated, info = env.step(env.sample_action(rng))
+            state, verdict = env.state, info["verdict"]
             shooter = info["shooter"]
             # The scores follow the verdicts: points to the shooter, a foul's penalty to the opponent.
             expected = list(before.scores)
@@ -172,13 +154,13 @@ def test_a_random_player_finishes_every_three_cushion_game():
     for g in range(1000):
         observation, _ = env.reset(seed=g)
         for _ in range(3000):
-            observation, reward, terminated, truncated, info = env.step(_aimed(rng, observation, env))
+            observation, reward, terminated, truncated, info = env.step(env.sample_action(rng))
             assert reward == info["verdict"].points and observation["on_table"].all()
             assert observation["player"] == (info["shooter"] if reward else 1 - info["shooter"]) or terminated
             if terminated or truncated:
                 break
         assert terminated, f"game {g} did not end in 3000 shots"
-        assert env._state.scores[env._state.winner] == 2
+        assert env.state.scores[env.state.winner] == 2
 
 
 def test_the_snooker_and_carom_tables_and_their_starting_positions():
@@ -230,3 +212,44 @@ def test_snooker_decided_on_the_engines_shots():
     verdict, after = stroke(billiards.Cue(2.5, azimuth=math.pi / 4, up_offset=0.6))
     assert verdict.fouls == ["scratch"] and verdict.penalty == 4 and after.ball_in_hand == "in_d"
     assert after.scores == (0, 4) and after.player == 1
+
+
+def test_the_environment_exposes_its_state_layout_and_last_shot():
+    env = games.GameEnv("snooker")
+    assert env.last_shot() is None
+    observation, _ = env.reset(seed=3)
+    assert observation["on"] == games.SNOOKER_ON.index("red") and list(observation["scores"]) == [0, 0]
+    assert env.state == games.SnookerState()
+    # Placed in the D where it is wanted there: the white starts the shot from that point.
+    observation, reward, terminated, truncated, info = env.step([3.0, 0.02, 0.0, 0.0, 0.6, 0.8])
+    shot = env.last_shot()
+    assert np.allclose(shot.placed["position"][0, :2], [0.6, 0.8])
+    assert info["events"] == shot.event_count
+    verdict, after = games.snooker(games.SnookerState(), shot)
+    assert verdict == info["verdict"] and after == env.state
+    layout = env.layout
+    assert np.array_equal(~layout["pocketed"], observation["on_table"])
+    with pytest.raises(ValueError, match="action is 'fast'"):
+        env.step("fast")
+    with pytest.raises(ValueError, match="target"):
+        games.GameEnv("3cushion", target=0)
+    with pytest.raises(ValueError, match="game is 'pool'"):
+        games.GameEnv("pool")
+
+
+def test_the_random_player_aims_at_a_ball_it_may_meet_first():
+    env = games.GameEnv("9ball")
+    env.reset(seed=5)
+    rng = np.random.default_rng(5)
+    for _ in range(50):
+        speed, azimuth, side, up, x, y = env.sample_action(rng)
+        assert 0.3 <= speed <= 7 and abs(side) <= 0.4 and abs(up) <= 0.4 and x <= env.table.length / 4
+        one = env.layout["position"][1, :2]
+        towards = math.atan2(one[1] - y, one[0] - x)
+        assert abs(math.remainder(azimuth - towards, 2 * math.pi)) < 0.5
+    state = games.EightBallState(groups=("stripes", "solids"), on_table=[True] * 9 + [False] * 7)
+    assert games._may_meet_first(state, 8) and not games._may_meet_first(state, 3)
+    state.on_table[15] = True
+    assert games._may_meet_first(state, 15) and not games._may_meet_first(state, 8)
+    state = games.SnookerState(on="colour")
+    assert games._may_meet_first(state, 21) and not games._may_meet_first(state, 3)

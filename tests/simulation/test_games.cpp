@@ -10,6 +10,10 @@
 #include <cmath>
 #include <cstddef>
 #include <initializer_list>
+#include <random>
+#include <tuple>
+#include <type_traits>
+#include <variant>
 #include <vector>
 
 namespace {
@@ -334,4 +338,67 @@ TEST_CASE("three-cushion: a point is both object balls and three cushions before
   SECTION("a pocket is not a carom table's") {
     CHECK_THROWS_WITH(decide(events_of({hit(0, 2), drop(2)})), Catch::Contains("carom table"));
   }
+}
+
+TEST_CASE("a game played shot by shot: each step the rules' verdict on its shot, the balls as they say",
+          "[simulation][games][game]") {
+  const std::tuple<games::GameKind, const char*> kinds[] = {{games::GameKind::nine_ball, "7ft"},
+                                                           {games::GameKind::eight_ball, "7ft"},
+                                                           {games::GameKind::snooker, "snooker"},
+                                                           {games::GameKind::three_cushion, "carom"}};
+  for (const auto& [kind, table_name] : kinds) {
+    ShotOptions options;
+    options.check_invariants = true;
+    games::Game game(kind, table_preset(table_name), physics_preset(table_name), options, 2);
+    std::mt19937_64 random(7);
+    std::uniform_real_distribution<double> unit(0, 1);
+    int finished = 0;
+    for (int k = 0; k < 1500; ++k) {
+      const games::Game::State before = game.state();
+      const std::size_t shooter = game.player();
+      const BallInHand hand = game.ball_in_hand();
+      const billiards::Cue<double> cue{0.567, 0.3 + 6 * unit(random), 2 * M_PI * unit(random), 0.0,
+                                       0.6 * unit(random) - 0.3, 0.6 * unit(random) - 0.3, 1.0};
+      const games::GameStep step = game.step(cue, TableVector(0.5, 0.5));
+      REQUIRE(game.last_shot());
+      const Shot& shot = *game.last_shot();
+      CHECK(step.shooter == shooter);
+      CHECK(step.events == shot.events().size());
+      // The cue ball in hand was placed where the rules allow it.
+      const Eigen::Vector3d white = shot.placed()[0].position;
+      INFO("step " << k << ": the white placed at (" << white.x() << ", " << white.y() << ")");
+      if (hand == BallInHand::in_d)
+        CHECK(snooker_markings(game.table()).in_d({white.x(), white.y()}, game.table().width));
+      if (hand == BallInHand::behind_head_string) CHECK(white.x() <= 0.25 * game.table().length);
+      // The verdict is the rules' on the shot's events from the state before it.
+      const Verdict expected = std::visit(
+          [&](const auto& s) -> Verdict {
+            using State = std::decay_t<decltype(s)>;
+            if constexpr (std::is_same_v<State, NineBallState>) return nine_ball(s, shot.events()).verdict;
+            if constexpr (std::is_same_v<State, EightBallState>) return eight_ball(s, shot.events()).verdict;
+            if constexpr (std::is_same_v<State, SnookerState>) return snooker(s, shot.events()).verdict;
+            if constexpr (std::is_same_v<State, ThreeCushionState>) return three_cushion(s, shot.events()).verdict;
+          },
+          before);
+      CHECK(step.verdict.reason == expected.reason);
+      CHECK(step.verdict.potted == expected.potted);
+      // Every object ball on the cloth exactly where the rules have it on the table.
+      std::visit(
+          [&](const auto& s) {
+            if constexpr (requires { s.on_table; }) {
+              for (std::size_t b = 1; b < game.balls().size(); ++b) CHECK(s.on_table[b] == !game.balls()[b].pocketed);
+            }
+          },
+          game.state());
+      if (game.over()) {
+        ++finished;
+        CHECK_THROWS_AS(game.step(cue), std::logic_error);
+        game.reset(1e-3, static_cast<std::uint64_t>(k));
+      }
+    }
+    CHECK(finished > 0);
+  }
+  CHECK_THROWS_WITH(games::game_kind("pool"), "game is 'pool', expected 9ball, 8ball, snooker or 3cushion");
+  CHECK_THROWS_WITH(games::Game(games::GameKind::three_cushion, carom_table(), carom_physics(), {}, 0),
+                    "target is 0, expected at least 1");
 }

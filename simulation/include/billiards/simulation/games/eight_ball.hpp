@@ -1,7 +1,7 @@
 /// \file
 /// 8-ball after the WPA's World Standardized Rules, decided from a shot's events: the break, the open
 /// table and the groups (solids 1–7, stripes 9–15), the player's own group first, the fouls and ball in
-/// hand, the 8 ending the game. Which rules are in and which are left out: docs/games.md.
+/// hand, the 8 ending the game. Which rules are in and which are left out: docs/eight_ball.md.
 #pragma once
 
 #include <billiards/simulation/games/nine_ball.hpp>

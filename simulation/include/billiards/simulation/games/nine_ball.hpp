@@ -1,7 +1,7 @@
 /// \file
 /// 9-ball after the WPA's World Standardized Rules, decided from a shot's events: the break, the lowest
 /// numbered ball first, the fouls and ball in hand, the 9 ending the game, three fouls in a row losing
-/// it. Which rules are in and which are left out: docs/games.md.
+/// it. Which rules are in and which are left out: docs/nine_ball.md.
 #pragma once
 
 #include <billiards/simulation/games/rules.hpp>

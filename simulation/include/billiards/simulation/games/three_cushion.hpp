@@ -1,7 +1,8 @@
 /// \file
 /// Three-cushion billiards after the UMB's rules, decided from a shot's events: a point when the
 /// shooter's cue ball meets both object balls and at least three cushions before it meets the second;
-/// the shooter continues after a point; the first to the target wins. Which rules are in: docs/games.md.
+/// the shooter continues after a point; the first to the target wins. Which rules are in:
+/// docs/three_cushion.md.
 #pragma once
 
 #include <billiards/simulation/games/nine_ball.hpp>
