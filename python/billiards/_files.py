@@ -10,7 +10,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from . import _billiards
-from ._shot import PoolPhysics, PoolTable, Shot, _from_columns, check_layout, pool_table
+from ._shot import TABLES, PoolPhysics, PoolTable, Shot, _from_columns, check_layout, table_preset
 from ._table_gas import Gas
 
 
@@ -30,9 +30,9 @@ def write_text(path, text: str) -> None:
 
 
 def table_name(table: PoolTable) -> str:
-    """The preset a table is ("9ft", "8ft", "7ft"), or "custom"."""
-    for name in ("9ft", "8ft", "7ft"):
-        if pool_table(name) == table:
+    """The preset a table is ("9ft", "8ft", "7ft", "snooker", "carom"), or "custom"."""
+    for name in ("9ft", "8ft", "7ft", "snooker", "carom"):
+        if table_preset(name) == table:
             return name
     return "custom"
 
@@ -69,17 +69,17 @@ def read_shot_setup(path, physics: PoolPhysics | None = None):
     line and what was expected."""
     physics = PoolPhysics() if physics is None else physics
     name, columns = _billiards.read_shot_setup(_path("read_shot_setup", path), physics.radius)
-    return (pool_table(name) if name else None), _from_columns(columns)
+    return (table_preset(name) if name else None), _from_columns(columns)
 
 
 def write_shot_setup(path, layout, table: str | None = None) -> None:
     """Writes a layout (ball_dtype, none pocketed) as a shot setup file that read_shot_setup reads back
-    exactly, with ``table`` ("7ft", "8ft", "9ft") where given."""
+    exactly, with ``table`` ("7ft", "8ft", "9ft", "snooker", "carom") where given."""
     layout = check_layout("write_shot_setup", layout)
     if layout.ndim != 1 or np.any(layout["pocketed"]):
         raise ValueError("write_shot_setup: layout must be one-dimensional with no ball pocketed")
-    if table not in (None, "7ft", "8ft", "9ft"):
-        raise ValueError(f"write_shot_setup: table is {table!r}, expected '7ft', '8ft' or '9ft'")
+    if table is not None and table not in TABLES:
+        raise ValueError(f"write_shot_setup: table is {table!r}, expected one of {TABLES}")
     lines = [f"table {table}"] if table else []
     for ball in layout:
         numbers = [*ball["position"][:2], *ball["velocity"][:2], *ball["angular_velocity"]]

@@ -1,6 +1,7 @@
 """The games from Python: the rules' verdicts on shots the engine plays, and the environment played to the
 end by a random player (every game ends, every state valid, every shot within the engine's invariants)."""
 
+import json
 import math
 
 import numpy as np
@@ -190,6 +191,26 @@ def test_the_snooker_and_carom_tables_and_their_starting_positions():
     assert np.allclose(layout["position"][20, :2], [3.569 / 2, 0.889]) and not layout["pocketed"][20]
     with pytest.raises(ValueError, match="snooker colour"):
         games.respot(layout, 3, snooker, radius, "snooker")
+
+
+def test_the_snooker_and_carom_tables_in_the_files(tmp_path):
+    for name, kind in (("snooker", "snooker"), ("carom", "3cushion")):
+        table, physics = billiards.table_preset(name), billiards.physics_preset(name)
+        layout = billiards.rack(table, physics, kind)
+        billiards.write_shot_setup(tmp_path / f"{name}.setup", layout, name)
+        named, read = billiards.read_shot_setup(tmp_path / f"{name}.setup", physics)
+        assert named == table and np.array_equal(read["position"], layout["position"])
+        shot = billiards.Shot(table, physics, read)
+        shot.strike(0, billiards.Cue(3.0, azimuth=0.1))
+        shot.play()
+        assert json.loads(billiards.shot_json(shot))["table"]["size"] == name
+        # The balls in their game's colours: 15 reds and the six colours; the carom's yellow and red.
+        svg = billiards.shot_svg(shot)
+        finals = [line for line in svg.splitlines() if 'stroke-width="1.5"' in line and "<circle" in line]
+        colours = [line.split('fill="')[1][:7] for line in finals]
+        assert colours == (["#ffffff"] + ["#d62828"] * 15 + ["#f4d03f", "#1e8449", "#7b4a1e", "#1f4fa3", "#f48fb1",
+                                                             "#111111"] if name == "snooker"
+                           else ["#ffffff", "#f4d03f", "#d62828"])
 
 
 def test_snooker_decided_on_the_engines_shots():

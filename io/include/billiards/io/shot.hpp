@@ -105,11 +105,18 @@ inline std::string state_json(std::size_t index, const PoolBall& b) {
          vector_json(b.angular_velocity, 3) + ", \"pocketed\": " + (b.pocketed ? "true" : "false") + "}";
 }
 
-/// The balls' colours: the cue ball white, then the pool balls' (1 yellow … 8 black, 9–15 their stripes).
-inline std::string colour(std::size_t i) {
-  static const char* const colours[] = {"#f4d03f", "#1f4fa3", "#d62828", "#6a2c91", "#f77f00",
-                                        "#1e8449", "#7b241c", "#111111"};
-  return i == 0 ? "#ffffff" : colours[(i - 1) % 8];
+/// The balls' colours: the cue ball white, then the pool balls' (1 yellow … 8 black, 9–15 their stripes);
+/// on a table without pockets the carom balls (1 yellow, 2 red); in a layout of 22 balls the snooker
+/// balls (snooker_ball::: 1–15 red, then yellow, green, brown, blue, pink, black).
+inline std::string colour(const Shot& shot, std::size_t i) {
+  static const char* const pool[] = {"#f4d03f", "#1f4fa3", "#d62828", "#6a2c91", "#f77f00",
+                                     "#1e8449", "#7b241c", "#111111"};
+  static const char* const snooker[] = {"#f4d03f", "#1e8449", "#7b4a1e", "#1f4fa3", "#f48fb1", "#111111"};
+  if (i == 0) return "#ffffff";
+  if (!shot.table().has_pockets) return i == 1 ? "#f4d03f" : "#d62828";
+  if (shot.placed().size() == billiards::simulation::snooker_ball::ball_count)
+    return billiards::simulation::snooker_ball::is_red(i) ? "#d62828" : snooker[(i - billiards::simulation::snooker_ball::yellow) % 6];
+  return pool[(i - 1) % 8];
 }
 
 }  // namespace shot_detail
@@ -252,10 +259,10 @@ inline std::string shot_svg(const Shot& shot, const std::string& title) {
     const PoolBall& start = samples.front()[i];
     if (start.pocketed) continue;
     out << "<circle cx=\"" << X(start.position.x()) << "\" cy=\"" << Y(start.position.y()) << "\" r=\"" << 1000 * R
-        << "\" fill=\"" << shot_detail::colour(i) << "\" fill-opacity=\"0.3\"/>\n";
+        << "\" fill=\"" << shot_detail::colour(shot, i) << "\" fill-opacity=\"0.3\"/>\n";
   }
   for (std::size_t i = 0; i < n; ++i) {
-    out << "<polyline fill=\"none\" stroke=\"" << shot_detail::colour(i) << "\" stroke-width=\"3\" points=\"";
+    out << "<polyline fill=\"none\" stroke=\"" << shot_detail::colour(shot, i) << "\" stroke-width=\"3\" points=\"";
     const Eigen::Vector3d* last = nullptr;
     bool first = true;
     for (const auto& balls : samples) {
@@ -272,7 +279,7 @@ inline std::string shot_svg(const Shot& shot, const std::string& title) {
   for (std::size_t i = 0; i < n; ++i) {
     if (rest[i].pocketed) continue;
     out << "<circle cx=\"" << X(rest[i].position.x()) << "\" cy=\"" << Y(rest[i].position.y()) << "\" r=\"" << 1000 * R
-        << "\" fill=\"" << shot_detail::colour(i) << "\" stroke=\"#000000\" stroke-width=\"1.5\"/>\n";
+        << "\" fill=\"" << shot_detail::colour(shot, i) << "\" stroke=\"#000000\" stroke-width=\"1.5\"/>\n";
     if (i > 0) {
       out << "<text x=\"" << X(rest[i].position.x()) << "\" y=\"" << Y(rest[i].position.y()) + 9
           << "\" font-family=\"sans-serif\" font-size=\"26\" text-anchor=\"middle\" fill=\""
@@ -325,7 +332,7 @@ inline std::string shot_html(const Shot& shot, const std::string& title, double 
       << height / 2.5 << "\" viewBox=\"0 0 " << width << " " << height << "\">\n"
       << table_svg(shot, margin);
   for (std::size_t i = 0; i < n; ++i) {
-    out << "<circle id=\"ball-" << i << "\" r=\"" << 1000 * R << "\" fill=\"" << shot_detail::colour(i)
+    out << "<circle id=\"ball-" << i << "\" r=\"" << 1000 * R << "\" fill=\"" << shot_detail::colour(shot, i)
         << "\" stroke=\"#000000\" stroke-width=\"1.5\"/>\n";
   }
   out << "</svg>\n<script id=\"shot-data\" type=\"application/json\">" << data.str() << "</script>\n"

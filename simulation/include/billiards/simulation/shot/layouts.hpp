@@ -22,11 +22,16 @@ namespace billiards::simulation {
 
 /// The snooker balls of snooker_setup() by index, and their values.
 namespace snooker_ball {
-inline constexpr std::size_t cue_ball = 0;   ///< the white
-inline constexpr std::size_t first_red = 1;  ///< the reds are 1 to 15
-inline constexpr std::size_t last_red = 15;
-inline constexpr std::size_t yellow = 16, green = 17, brown = 18, blue = 19, pink = 20, black = 21;
-inline constexpr std::size_t ball_count = 22;
+inline constexpr std::size_t cue_ball = 0;     ///< the white
+inline constexpr std::size_t first_red = 1;    ///< the first of the reds, 1 to 15
+inline constexpr std::size_t last_red = 15;    ///< the last of the reds
+inline constexpr std::size_t yellow = 16;      ///< the yellow, worth 2
+inline constexpr std::size_t green = 17;       ///< the green, worth 3
+inline constexpr std::size_t brown = 18;       ///< the brown, worth 4
+inline constexpr std::size_t blue = 19;        ///< the blue, worth 5
+inline constexpr std::size_t pink = 20;        ///< the pink, worth 6
+inline constexpr std::size_t black = 21;       ///< the black, worth 7
+inline constexpr std::size_t ball_count = 22;  ///< the balls of the set-up: the white, 15 reds, 6 colours
 
 /// Whether `ball` is a red.
 [[nodiscard]] constexpr bool is_red(std::size_t ball) noexcept { return ball >= first_red && ball <= last_red; }
