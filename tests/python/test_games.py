@@ -256,6 +256,16 @@ def test_the_environment_exposes_its_state_layout_and_last_shot():
         games.GameEnv("3cushion", target=0)
     with pytest.raises(ValueError, match="game is 'pool'"):
         games.GameEnv("pool")
+    with pytest.raises(ValueError, match="expected a carom table"):
+        games.GameEnv("3cushion", table="9ft")
+    with pytest.raises(ValueError, match="too short"):
+        games.GameEnv("snooker", table="7ft")
+    with pytest.raises(TypeError, match="table"):
+        games.GameEnv("snooker", table=3)
+    with pytest.raises(IndexError, match="ball is 99"):
+        games.place(layout, 99, (1.0, 1.0), billiards.snooker_table(), 0.02625)
+    with pytest.raises(ValueError, match="region"):
+        games.place(layout, 0, (1.0, 1.0), billiards.snooker_table(), 0.02625, "the D")
 
 
 def test_the_random_player_aims_at_a_ball_it_may_meet_first():

@@ -401,4 +401,8 @@ TEST_CASE("a game played shot by shot: each step the rules' verdict on its shot,
   CHECK_THROWS_WITH(games::game_kind("pool"), "game is 'pool', expected 9ball, 8ball, snooker or 3cushion");
   CHECK_THROWS_WITH(games::Game(games::GameKind::three_cushion, carom_table(), carom_physics(), {}, 0),
                     "target is 0, expected at least 1");
+  CHECK_THROWS_WITH(games::Game(games::GameKind::three_cushion, pool_table("9ft"), carom_physics()),
+                    Catch::Contains("expected a carom table"));
+  CHECK_THROWS_WITH(games::Game(games::GameKind::snooker, pool_table("7ft"), snooker_physics()),
+                    Catch::Contains("too short"));
 }

@@ -2,7 +2,8 @@
 // hand: the WPBSA's and the UMB's sizes, the snooker pockets' narrowest openings between the curved
 // facings, a carom table of four cushions and no pockets, the snooker set-up on its spots, the
 // three-cushion opening position, the cue ball in hand and the respotted colours; and strokes of
-// snooker played through the engine and decided by its rules.
+// snooker and three-cushion played through the engine and decided by their rules (three-cushion's
+// against the cushions counted by hand).
 #include <billiards/simulation/games.hpp>
 #include <billiards/simulation/shot.hpp>
 
@@ -225,4 +226,36 @@ TEST_CASE("snooker through the engine: a red potted, then an in-off", "[simulati
   CHECK(d.verdict.fouls == std::vector<games::Foul>{games::Foul::scratch});
   CHECK(d.verdict.penalty == 4);
   CHECK(d.next.ball_in_hand == games::BallInHand::in_d);
+}
+
+TEST_CASE("three-cushion through the engine: shots from the opening position decided as counted by hand",
+          "[simulation][games][three_cushion]") {
+  const PoolTable table = carom_table();
+  const PoolPhysics physics = carom_physics();
+  const std::vector<PoolBall> opening = three_cushion_setup(table, physics);
+  int points = 0, misses = 0;
+  for (int k = 0; k < 360; ++k) {
+    Shot shot(table, physics, opening);
+    shot.strike(0, {0.567, 3.0 + 3.0 * (k % 3), 2 * M_PI * k / 360.0, 0.0, 0.0, 0.2, 1.0});
+    shot.play();
+    // By hand: the white's cushions until it has met both other balls.
+    int cushions = 0;
+    bool met[3] = {false, false, false}, scored = false;
+    for (const ShotEvent& e : shot.events()) {
+      if (e.kind == ShotEvent::Kind::cushion && e.first == 0) ++cushions;
+      if (e.kind != ShotEvent::Kind::ball || (e.first != 0 && e.second != 0)) continue;
+      met[e.first == 0 ? e.second : e.first] = true;
+      if (met[1] && met[2]) {
+        scored = cushions >= 3;
+        break;
+      }
+    }
+    const auto d = games::three_cushion(games::ThreeCushionState{}, shot.events());
+    CHECK(d.verdict.points == (scored ? 1 : 0));
+    CHECK(d.next.player == (scored ? 0u : 1u));
+    (scored ? points : misses) += 1;
+  }
+  // The fan of shots holds both outcomes.
+  CHECK(points > 0);
+  CHECK(misses > 0);
 }

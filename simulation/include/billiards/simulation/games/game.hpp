@@ -63,12 +63,15 @@ class Game {
   using State = std::variant<NineBallState, EightBallState, SnookerState, ThreeCushionState>;
 
   /// A game of `kind` on `table` with `physics`, its shots played with `options`; `target` the points
-  /// that win three-cushion. Starts at reset(0, 0). Throws std::invalid_argument for a target below 1
-  /// and as the starting position does (a table too short for the snooker set-up).
+  /// that win three-cushion. Starts at reset(0, 0). Throws std::invalid_argument for a target below 1, a
+  /// table with pockets for three-cushion, and as the starting position does (a table too short for the
+  /// snooker set-up).
   Game(GameKind kind, PoolTable table, PoolPhysics physics, ShotOptions options = {}, int target = 40)
       : kind_(kind), table_(std::move(table)), physics_(std::move(physics)), options_(options), target_(target) {
     if (target < 1)
       throw std::invalid_argument("target is " + std::to_string(target) + ", expected at least 1");
+    if (kind == GameKind::three_cushion && table_.has_pockets)
+      throw std::invalid_argument("table has pockets, expected a carom table (has_pockets false) for three-cushion");
     reset(0, 0);
   }
 
