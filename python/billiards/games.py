@@ -19,6 +19,10 @@ import numpy as np
 from . import _billiards
 from ._shot import PoolPhysics, PoolTable, Shot, ShotOptions, _from_columns, physics_preset, table_preset
 
+__all__ = ["BALL_IN_HAND", "GROUPS", "SNOOKER_ON", "SNOOKER_VALUES", "GAMES", "Verdict", "NineBallState",
+           "EightBallState", "SnookerState", "ThreeCushionState", "nine_ball", "eight_ball", "snooker",
+           "three_cushion", "place", "place_cue_ball", "respot", "GameEnv", "PoolEnv"]
+
 #: Where the next player may place the cue ball: "none", "anywhere", "behind_head_string", "in_d" (the
 #: snooker D).
 BALL_IN_HAND = ("none", "anywhere", "behind_head_string", "in_d")

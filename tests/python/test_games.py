@@ -284,3 +284,11 @@ def test_the_random_player_aims_at_a_ball_it_may_meet_first():
     assert games._may_meet_first(state, 15) and not games._may_meet_first(state, 8)
     state = games.SnookerState(on="colour")
     assert games._may_meet_first(state, 21) and not games._may_meet_first(state, 3)
+
+
+def test_every_public_name_of_the_games_is_documented():
+    for name in games.__all__:
+        value = getattr(games, name)
+        assert name.isupper() or value.__doc__, name
+    assert {n for n in dir(games) if not n.startswith("_") and callable(getattr(games, n))
+            and getattr(getattr(games, n), "__module__", "") == "billiards.games"} <= set(games.__all__)
