@@ -104,15 +104,15 @@ struct GameShot {
   std::vector<ShotEvent> events;
 };
 
-// The direction from ball `from` to a ball the player may meet first (any ball in pool), cut at random.
+// The direction from the struck ball to a ball the player may meet first (pool: any direction), cut at
+// random.
 double aim(const games::Game& game, std::mt19937_64& random) {
   std::uniform_real_distribution<double> unit(0, 1);
   const auto& balls = game.balls();
-  const std::size_t from = game.kind() == games::GameKind::three_cushion ? game.player() : 0;
+  const std::size_t from = game.striker();
   std::vector<std::size_t> candidates;
-  const auto* snooker = std::get_if<games::SnookerState>(&game.state());
   for (std::size_t b = 0; b < balls.size(); ++b)
-    if (b != from && !balls[b].pocketed && (snooker == nullptr || snooker->is_on(b))) candidates.push_back(b);
+    if (!balls[b].pocketed && game.may_meet_first(b)) candidates.push_back(b);
   if (candidates.empty() || balls[from].pocketed || game.kind() == games::GameKind::nine_ball ||
       game.kind() == games::GameKind::eight_ball)
     return 2 * M_PI * unit(random);
@@ -130,7 +130,7 @@ std::vector<GameShot> game_shots(games::GameKind kind, const char* table_name) {
     s.before = game.state();
     s.cue = {0.567, 0.3 + 6.7 * unit(random), aim(game, random), 0.0, 0.8 * unit(random) - 0.4,
              0.8 * unit(random) - 0.4, 1.0};
-    s.striker = kind == games::GameKind::three_cushion ? game.player() : 0;
+    s.striker = game.striker();
     game.step(s.cue, TableVector(0.4 + 0.35 * unit(random), 0.6 + 0.6 * unit(random)));
     s.balls = game.last_shot()->placed();
     s.events = game.last_shot()->events();

@@ -2,16 +2,15 @@
 from a shot's events, placing balls by hand (the cue ball in hand, respotting), and a game environment
 with the ``reset()`` / ``step(action)`` conventions of Gymnasium (without depending on it).
 
-Which rules are in and which are left out: a page per game, from docs/games.md. Ball 0 is the cue ball, the object balls are
-numbered as in the game (9-ball: 1 to 9; 8-ball: 1 to 15, the solids 1–7, the stripes 9–15; snooker: 1–15
-the reds, 16–21 yellow, green, brown, blue, pink, black; three-cushion: 0 the white, 1 the yellow, 2 the
-red).
+Which rules are in and which are left out: a page per game, from docs/games.md. Ball 0 is the cue ball,
+the object balls are numbered as in the game (9-ball: 1 to 9; 8-ball: 1 to 15, the solids 1–7, the
+stripes 9–15; snooker: 1–15 the reds, 16–21 yellow, green, brown, blue, pink, black; three-cushion: 0
+the white, 1 the yellow, 2 the red).
 """
 
 from __future__ import annotations
 
 import math
-
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -19,7 +18,7 @@ import numpy as np
 from . import _billiards
 from ._shot import PoolPhysics, PoolTable, Shot, ShotOptions, _from_columns, physics_preset, table_preset
 
-__all__ = ["BALL_IN_HAND", "GROUPS", "SNOOKER_ON", "SNOOKER_VALUES", "GAMES", "Verdict", "NineBallState",
+__all__ = ["BALL_IN_HAND", "GROUPS", "SNOOKER_ON", "GAMES", "Verdict", "NineBallState",
            "EightBallState", "SnookerState", "ThreeCushionState", "nine_ball", "eight_ball", "snooker",
            "three_cushion", "place", "place_cue_ball", "respot", "GameEnv", "PoolEnv"]
 
@@ -28,8 +27,6 @@ __all__ = ["BALL_IN_HAND", "GROUPS", "SNOOKER_ON", "SNOOKER_VALUES", "GAMES", "V
 BALL_IN_HAND = ("none", "anywhere", "behind_head_string", "in_d")
 #: What a snooker player is on: "red", "colour" (any, after a red), "sequence" (the lowest colour left).
 SNOOKER_ON = ("red", "colour", "sequence")
-#: The snooker balls' values by index: the white 0, the reds 1, yellow 2 … black 7.
-SNOOKER_VALUES = (0,) + (1,) * 15 + (2, 3, 4, 5, 6, 7)
 #: An 8-ball player's group: "open" (not chosen yet), "solids" (1–7), "stripes" (9–15).
 GROUPS = ("open", "solids", "stripes")
 
@@ -111,12 +108,6 @@ class ThreeCushionState:
     winner: int | None = None
 
 
-def _verdict(d: dict) -> Verdict:
-    return Verdict(list(d["fouls"]), list(d["potted"]), list(d["respotted"]), d["next_player"],
-                   BALL_IN_HAND[d["ball_in_hand"]], d["game_over"], d["winner"], d["reason"], d["points"],
-                   d["penalty"])
-
-
 def _check(function: str, state, kind, shot):
     if not isinstance(state, kind):
         raise TypeError(f"{function}: state is {type(state).__name__}, expected a billiards.games.{kind.__name__}")
@@ -136,9 +127,7 @@ def nine_ball(state: NineBallState, shot: Shot):
     verdict, after = _billiards.nine_ball([bool(b) for b in state.on_table], int(state.player), bool(state.breaking),
                                           list(state.fouls_in_a_row), BALL_IN_HAND.index(state.ball_in_hand),
                                           shot._shot)
-    return _verdict(verdict), NineBallState(list(after["on_table"]), after["player"], after["breaking"],
-                                            tuple(after["fouls_in_a_row"]), BALL_IN_HAND[after["ball_in_hand"]],
-                                            after["over"], after["winner"])
+    return Verdict(*verdict), _state_from("9ball", after)
 
 
 def eight_ball(state: EightBallState, shot: Shot):
@@ -150,9 +139,7 @@ def eight_ball(state: EightBallState, shot: Shot):
     groups = [GROUPS.index(g) for g in state.groups]
     verdict, after = _billiards.eight_ball([bool(b) for b in state.on_table], int(state.player), bool(state.breaking),
                                            groups, BALL_IN_HAND.index(state.ball_in_hand), shot._shot)
-    return _verdict(verdict), EightBallState(list(after["on_table"]), after["player"], after["breaking"],
-                                             tuple(GROUPS[g] for g in after["groups"]),
-                                             BALL_IN_HAND[after["ball_in_hand"]], after["over"], after["winner"])
+    return Verdict(*verdict), _state_from("8ball", after)
 
 
 def snooker(state: SnookerState, shot: Shot):
@@ -168,9 +155,7 @@ def snooker(state: SnookerState, shot: Shot):
     verdict, after = _billiards.snooker([bool(b) for b in state.on_table], int(state.player), list(state.scores),
                                         SNOOKER_ON.index(state.on), BALL_IN_HAND.index(state.ball_in_hand),
                                         shot._shot)
-    return _verdict(verdict), SnookerState(list(after["on_table"]), after["player"], tuple(after["scores"]),
-                                           SNOOKER_ON[after["on"]], BALL_IN_HAND[after["ball_in_hand"]],
-                                           after["over"], after["winner"])
+    return Verdict(*verdict), _state_from("snooker", after)
 
 
 def three_cushion(state: ThreeCushionState, shot: Shot):
@@ -181,8 +166,7 @@ def three_cushion(state: ThreeCushionState, shot: Shot):
     if state.over:
         _over("three_cushion")
     verdict, after = _billiards.three_cushion(list(state.scores), int(state.player), int(state.target), shot._shot)
-    return _verdict(verdict), ThreeCushionState(tuple(after["scores"]), after["player"], after["target"],
-                                                after["over"], after["winner"])
+    return Verdict(*verdict), _state_from("3cushion", after)
 
 
 def _over(function: str):
@@ -216,11 +200,10 @@ def respot(layout: np.ndarray, ball: int, table: PoolTable, radius: float, game:
     is covered, on the long string behind it as near the spot as it fits (then in front of it), as the
     WPA's rules spot a ball. Snooker (``game`` "snooker", ``ball`` a colour 16–21): on its own spot, else
     the highest valued free spot, else as near its own spot as it fits towards the top cushion (then
-    towards the baulk cushion). RuntimeError where no place is free."""
+    towards the baulk cushion; ValueError for a ball that is not a colour). RuntimeError where no place is
+    free."""
     if game not in ("pool", "snooker"):
         raise ValueError(f"respot: game is {game!r}, expected 'pool' or 'snooker'")
-    if game == "snooker" and not 16 <= ball <= 21:
-        raise ValueError(f"respot: ball is {ball!r}, expected a snooker colour (16 to 21)")
     layout[:] = _from_columns(_billiards.respot(table, _physics(radius), layout, int(ball), game == "snooker"))
 
 
@@ -339,7 +322,7 @@ class GameEnv:
                      rng.uniform(radius, width - radius)]
         striker = state.player if self.game == "3cushion" else 0
         cue = np.asarray(place) if hand != "none" else position[striker, :2]
-        targets = [b for b in range(len(pocketed)) if b != striker and not pocketed[b] and _may_meet_first(state, b)]
+        targets = [b for b in range(len(pocketed)) if not pocketed[b] and self._game.may_meet_first(b)]
         if aim and targets:
             target = position[targets[rng.integers(len(targets))], :2]
             azimuth = math.atan2(target[1] - cue[1], target[0] - cue[0]) + rng.normal(0, 0.08)
@@ -368,22 +351,6 @@ class GameEnv:
         truncated = not verdict.game_over and self._shots >= self.max_shots
         return observation, reward, verdict.game_over, truncated, {"verdict": verdict, "shooter": shooter,
                                                                      "events": events}
-
-
-def _may_meet_first(state, ball: int) -> bool:
-    """Whether the player to shoot may meet ``ball`` first."""
-    if isinstance(state, ThreeCushionState):
-        return True
-    if isinstance(state, SnookerState):
-        lowest = min((b for b in range(16, 22) if state.on_table[b]), default=21)
-        return (state.on == "red" and 1 <= ball <= 15 or state.on == "colour" and ball >= 16 or
-                state.on == "sequence" and ball == lowest)
-    if isinstance(state, NineBallState):
-        return ball == min((b for b in range(1, 10) if state.on_table[b]), default=9)
-    group = state.groups[state.player]
-    mine = [b for b in range(1, 16) if state.on_table[b] and b != 8 and
-            (group == "open" or (group == "solids") == (b < 8))]
-    return ball == 8 if group != "open" and not mine else ball != 8 and ball in mine
 
 
 def _state_from(game: str, d: dict):

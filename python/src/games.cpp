@@ -23,23 +23,6 @@ namespace {
 
 namespace games = simulation::games;
 
-py::dict verdict_dict(const games::Verdict& v) {
-  py::dict d;
-  py::list fouls;
-  for (const games::Foul f : v.fouls) fouls.append(games::foul_name(f));
-  d["fouls"] = fouls;
-  d["potted"] = v.potted;
-  d["respotted"] = v.respotted;
-  d["next_player"] = v.next_player;
-  d["ball_in_hand"] = static_cast<int>(v.ball_in_hand);
-  d["game_over"] = v.game_over;
-  d["winner"] = v.winner ? py::cast(*v.winner) : py::none();
-  d["reason"] = v.reason;
-  d["points"] = v.points;
-  d["penalty"] = v.penalty;
-  return d;
-}
-
 // The balls on the table, whose turn and the cue ball in hand into a game's state.
 template <typename State>
 void table_from(State& s, const std::vector<bool>& on_table, std::size_t player, int ball_in_hand) {
@@ -58,84 +41,6 @@ void common_from(State& s, const std::vector<bool>& on_table, std::size_t player
   s.breaking = breaking;
 }
 
-// The balls on the table and the cue ball in hand (and pool's break) of a state as a dict.
-template <typename State>
-py::dict common_like(const State& s) {
-  py::dict d;
-  d["on_table"] = std::vector<bool>(s.on_table.begin(), s.on_table.end());
-  d["ball_in_hand"] = static_cast<int>(s.ball_in_hand);
-  if constexpr (requires { s.breaking; }) d["breaking"] = s.breaking;
-  return d;
-}
-
-template <typename State>
-py::dict common_to(const State& s) {
-  py::dict d;
-  d["on_table"] = std::vector<bool>(s.on_table.begin(), s.on_table.end());
-  d["player"] = s.player;
-  d["breaking"] = s.breaking;
-  d["ball_in_hand"] = static_cast<int>(s.ball_in_hand);
-  d["over"] = s.over;
-  d["winner"] = s.winner ? py::cast(*s.winner) : py::none();
-  return d;
-}
-
-py::tuple nine_ball(const std::vector<bool>& on_table, std::size_t player, bool breaking,
-                    const std::array<int, 2>& fouls, int ball_in_hand, const PyShot& shot) {
-  games::NineBallState s;
-  common_from(s, on_table, player, breaking, ball_in_hand);
-  s.fouls_in_a_row = fouls;
-  const auto d = games::nine_ball(s, shot.shot().events());
-  py::dict next = common_to(d.next);
-  next["fouls_in_a_row"] = d.next.fouls_in_a_row;
-  return py::make_tuple(verdict_dict(d.verdict), next);
-}
-
-py::tuple eight_ball(const std::vector<bool>& on_table, std::size_t player, bool breaking,
-                     const std::array<int, 2>& groups, int ball_in_hand, const PyShot& shot) {
-  games::EightBallState s;
-  common_from(s, on_table, player, breaking, ball_in_hand);
-  s.groups = {static_cast<games::Group>(groups[0]), static_cast<games::Group>(groups[1])};
-  const auto d = games::eight_ball(s, shot.shot().events());
-  py::dict next = common_to(d.next);
-  next["groups"] = std::array<int, 2>{static_cast<int>(d.next.groups[0]), static_cast<int>(d.next.groups[1])};
-  return py::make_tuple(verdict_dict(d.verdict), next);
-}
-
-py::tuple three_cushion(const std::array<int, 2>& scores, std::size_t player, int target,
-                        const PyShot& shot) {
-  games::ThreeCushionState s;
-  s.scores = scores;
-  s.player = player;
-  s.target = target;
-  const auto d = games::three_cushion(s, shot.shot().events());
-  py::dict next;
-  next["scores"] = d.next.scores;
-  next["player"] = d.next.player;
-  next["target"] = d.next.target;
-  next["over"] = d.next.over;
-  next["winner"] = d.next.winner ? py::cast(*d.next.winner) : py::none();
-  return py::make_tuple(verdict_dict(d.verdict), next);
-}
-
-py::tuple snooker(const std::vector<bool>& on_table, std::size_t player, const std::array<int, 2>& scores, int on,
-                  int ball_in_hand, const PyShot& shot) {
-  games::SnookerState s;
-  table_from(s, on_table, player, ball_in_hand);
-  s.scores = scores;
-  s.on = static_cast<games::SnookerOn>(on);
-  const auto d = games::snooker(s, shot.shot().events());
-  py::dict next;
-  next["on_table"] = std::vector<bool>(d.next.on_table.begin(), d.next.on_table.end());
-  next["player"] = d.next.player;
-  next["scores"] = d.next.scores;
-  next["on"] = static_cast<int>(d.next.on);
-  next["ball_in_hand"] = static_cast<int>(d.next.ball_in_hand);
-  next["over"] = d.next.over;
-  next["winner"] = d.next.winner ? py::cast(*d.next.winner) : py::none();
-  return py::make_tuple(verdict_dict(d.verdict), next);
-}
-
 // A verdict as a tuple in the order of billiards.games.Verdict's fields.
 py::tuple verdict_tuple(const games::Verdict& v) {
   py::list fouls;
@@ -146,31 +51,66 @@ py::tuple verdict_tuple(const games::Verdict& v) {
                         v.winner ? py::cast(*v.winner) : py::none(), v.reason, v.points, v.penalty);
 }
 
-// A game's state as the dict billiards/games.py turns into its dataclass.
-py::dict state_dict(const games::Game::State& state) {
-  return std::visit(
-      [](const auto& s) {
-        using State = std::decay_t<decltype(s)>;
-        py::dict d;
-        if constexpr (std::is_same_v<State, games::ThreeCushionState>) {
-          d["scores"] = s.scores;
-          d["target"] = s.target;
-        } else {
-          d = common_like(s);
-        }
-        if constexpr (std::is_same_v<State, games::NineBallState>) d["fouls_in_a_row"] = s.fouls_in_a_row;
-        if constexpr (std::is_same_v<State, games::EightBallState>)
-          d["groups"] = std::array<int, 2>{static_cast<int>(s.groups[0]), static_cast<int>(s.groups[1])};
-        if constexpr (std::is_same_v<State, games::SnookerState>) {
-          d["scores"] = s.scores;
-          d["on"] = static_cast<int>(s.on);
-        }
-        d["player"] = s.player;
-        d["over"] = s.over;
-        d["winner"] = s.winner ? py::cast(*s.winner) : py::none();
-        return d;
-      },
-      state);
+// A game's state as the dict billiards/games.py turns into its dataclass (_state_from).
+template <typename State>
+py::dict state_dict(const State& s) {
+  py::dict d;
+  if constexpr (requires { s.on_table; }) {
+    d["on_table"] = std::vector<bool>(s.on_table.begin(), s.on_table.end());
+    d["ball_in_hand"] = static_cast<int>(s.ball_in_hand);
+  }
+  if constexpr (requires { s.breaking; }) d["breaking"] = s.breaking;
+  if constexpr (requires { s.scores; }) d["scores"] = s.scores;
+  if constexpr (std::is_same_v<State, games::NineBallState>) d["fouls_in_a_row"] = s.fouls_in_a_row;
+  if constexpr (std::is_same_v<State, games::EightBallState>)
+    d["groups"] = std::array<int, 2>{static_cast<int>(s.groups[0]), static_cast<int>(s.groups[1])};
+  if constexpr (std::is_same_v<State, games::SnookerState>) d["on"] = static_cast<int>(s.on);
+  if constexpr (std::is_same_v<State, games::ThreeCushionState>) d["target"] = s.target;
+  d["player"] = s.player;
+  d["over"] = s.over;
+  d["winner"] = s.winner ? py::cast(*s.winner) : py::none();
+  return d;
+}
+
+// The rules' decision as the tuple (verdict, state after) billiards/games.py reads.
+template <typename State>
+py::tuple decision_tuple(const games::Decision<State>& d) {
+  return py::make_tuple(verdict_tuple(d.verdict), state_dict(d.next));
+}
+
+
+py::tuple nine_ball(const std::vector<bool>& on_table, std::size_t player, bool breaking,
+                    const std::array<int, 2>& fouls, int ball_in_hand, const PyShot& shot) {
+  games::NineBallState s;
+  common_from(s, on_table, player, breaking, ball_in_hand);
+  s.fouls_in_a_row = fouls;
+  return decision_tuple(games::nine_ball(s, shot.shot().events()));
+}
+
+py::tuple eight_ball(const std::vector<bool>& on_table, std::size_t player, bool breaking,
+                     const std::array<int, 2>& groups, int ball_in_hand, const PyShot& shot) {
+  games::EightBallState s;
+  common_from(s, on_table, player, breaking, ball_in_hand);
+  s.groups = {static_cast<games::Group>(groups[0]), static_cast<games::Group>(groups[1])};
+  return decision_tuple(games::eight_ball(s, shot.shot().events()));
+}
+
+py::tuple three_cushion(const std::array<int, 2>& scores, std::size_t player, int target,
+                        const PyShot& shot) {
+  games::ThreeCushionState s;
+  s.scores = scores;
+  s.player = player;
+  s.target = target;
+  return decision_tuple(games::three_cushion(s, shot.shot().events()));
+}
+
+py::tuple snooker(const std::vector<bool>& on_table, std::size_t player, const std::array<int, 2>& scores, int on,
+                  int ball_in_hand, const PyShot& shot) {
+  games::SnookerState s;
+  table_from(s, on_table, player, ball_in_hand);
+  s.scores = scores;
+  s.on = static_cast<games::SnookerOn>(on);
+  return decision_tuple(games::snooker(s, shot.shot().events()));
 }
 
 // The observation as billiards.games.GameEnv returns it: the centres (NaN off the table), the balls on
@@ -258,7 +198,11 @@ void bind_game(py::module_& m) {
            })
       .def("observation", &observation)
       .def("over", &games::Game::over)
-      .def("state", [](const games::Game& game) { return state_dict(game.state()); })
+      .def("state",
+           [](const games::Game& game) {
+             return std::visit([](const auto& s) { return state_dict(s); }, game.state());
+           })
+      .def("may_meet_first", &games::Game::may_meet_first)
       .def("balls", [](const games::Game& game) { return ball_columns(game.balls()); })
       .def("last_shot", [](const games::Game& game) -> py::object {
         if (!game.last_shot()) return py::none();

@@ -189,7 +189,7 @@ def test_the_snooker_and_carom_tables_and_their_starting_positions():
     assert games.place(layout, 0, layout["position"][20, :2] + [0, 1.5 * radius], snooker, radius)
     games.respot(layout, 20, snooker, radius, "snooker")
     assert np.allclose(layout["position"][20, :2], [3.569 / 2, 0.889]) and not layout["pocketed"][20]
-    with pytest.raises(ValueError, match="snooker colour"):
+    with pytest.raises(ValueError, match="ball 3 is not a colour, expected 16 to 21"):
         games.respot(layout, 3, snooker, radius, "snooker")
 
 
@@ -278,12 +278,15 @@ def test_the_random_player_aims_at_a_ball_it_may_meet_first():
         one = env.layout["position"][1, :2]
         towards = math.atan2(one[1] - y, one[0] - x)
         assert abs(math.remainder(azimuth - towards, 2 * math.pi)) < 0.5
-    state = games.EightBallState(groups=("stripes", "solids"), on_table=[True] * 9 + [False] * 7)
-    assert games._may_meet_first(state, 8) and not games._may_meet_first(state, 3)
-    state.on_table[15] = True
-    assert games._may_meet_first(state, 15) and not games._may_meet_first(state, 8)
-    state = games.SnookerState(on="colour")
-    assert games._may_meet_first(state, 21) and not games._may_meet_first(state, 3)
+    # Snooker's opening stroke: at a red, from the D.
+    env = games.GameEnv("snooker")
+    env.reset(seed=5)
+    for _ in range(50):
+        speed, azimuth, side, up, x, y = env.sample_action(rng)
+        assert 0.737 - 0.292 <= x <= 0.737
+        reds = env.layout["position"][1:16, :2]
+        towards = np.arctan2(reds[:, 1] - y, reds[:, 0] - x)
+        assert np.min(np.abs(np.remainder(azimuth - towards + np.pi, 2 * np.pi) - np.pi)) < 0.5
 
 
 def test_every_public_name_of_the_games_is_documented():

@@ -406,3 +406,38 @@ TEST_CASE("a game played shot by shot: each step the rules' verdict on its shot,
   CHECK_THROWS_WITH(games::Game(games::GameKind::snooker, pool_table("7ft"), snooker_physics()),
                     Catch::Contains("too short"));
 }
+
+TEST_CASE("which ball a player may meet first: the lowest, the group or the 8, a ball on, either other ball",
+          "[simulation][games][game]") {
+  EightBallState eight;
+  eight.breaking = false;
+  eight.groups = {Group::stripes, Group::solids};
+  for (std::size_t b = 9; b <= 15; ++b) eight.on_table[b] = false;  // player 0's stripes cleared
+  CHECK(eight.may_hit_first(8));
+  CHECK_FALSE(eight.may_hit_first(3));
+  eight.on_table[15] = true;
+  CHECK(eight.may_hit_first(15));
+  CHECK_FALSE(eight.may_hit_first(8));
+  SnookerState colour;
+  colour.on = SnookerOn::colour;
+  CHECK(colour.is_on(snooker_ball::black));
+  CHECK_FALSE(colour.is_on(3));
+  // A game asks its state, and never names the struck ball.
+  games::Game nine(games::GameKind::nine_ball, pool_table("7ft"), PoolPhysics{});
+  CHECK(nine.may_meet_first(1));
+  CHECK_FALSE(nine.may_meet_first(2));
+  CHECK_FALSE(nine.may_meet_first(0));
+  CHECK_FALSE(nine.may_meet_first(10));
+  games::Game open(games::GameKind::eight_ball, pool_table("7ft"), PoolPhysics{});
+  CHECK(open.may_meet_first(3));
+  CHECK_FALSE(open.may_meet_first(8));
+  CHECK_FALSE(open.may_meet_first(0));
+  games::Game frame(games::GameKind::snooker, snooker_table(), snooker_physics());
+  CHECK(frame.may_meet_first(snooker_ball::first_red));
+  CHECK_FALSE(frame.may_meet_first(snooker_ball::pink));
+  games::Game carom(games::GameKind::three_cushion, carom_table(), carom_physics());
+  CHECK(carom.striker() == 0);
+  CHECK(carom.may_meet_first(1));
+  CHECK(carom.may_meet_first(2));
+  CHECK_FALSE(carom.may_meet_first(0));
+}

@@ -22,6 +22,7 @@
 #include <stdexcept>
 #include <string>
 #include <string_view>
+#include <type_traits>
 #include <variant>
 #include <vector>
 
@@ -128,20 +129,22 @@ class Game {
     }
     GameStep out;
     out.shooter = player();
-    const std::size_t striker = kind_ == GameKind::three_cushion ? out.shooter : 0;
     Shot shot(table_, physics_, balls, options_);
-    shot.strike(striker, cue);
+    shot.strike(striker(), cue);
     shot.play();
     out.events = shot.events().size();
-    out.verdict = decide(shot);
-    balls_ = shot.balls();
-    shot_ = std::move(shot);
+    State next = state_;
+    out.verdict = decide(shot, next);
+    std::vector<PoolBall> after = shot.balls();
     for (const std::size_t b : out.verdict.respotted) {
       if (kind_ == GameKind::snooker)
-        respot_colour(table_, physics_, balls_, b);
+        respot_colour(table_, physics_, after, b);
       else
-        respot_on_long_string(table_, physics_, balls_, b);
+        respot_on_long_string(table_, physics_, after, b);
     }
+    state_ = std::move(next);
+    balls_ = std::move(after);
+    shot_ = std::move(shot);
     out.reward = reward(out);
     return out;
   }
@@ -174,14 +177,31 @@ class Game {
         },
         state_);
   }
+  /// The ball the player to shoot strikes: 0, the cue ball (three-cushion: the shooter's own ball).
+  [[nodiscard]] std::size_t striker() const { return kind_ == GameKind::three_cushion ? player() : 0; }
+  /// Whether the player to shoot may meet `ball` first with the ball they strike, by the rules: the
+  /// lowest-numbered ball (9-ball), a ball of their group or the 8 (8-ball), a ball on (snooker),
+  /// either other ball (three-cushion); never the struck ball itself or a ball that is not there.
+  [[nodiscard]] bool may_meet_first(std::size_t ball) const {
+    if (ball >= balls_.size() || ball == striker()) return false;
+    return std::visit(
+        [ball](const auto& s) {
+          using S = std::decay_t<decltype(s)>;
+          if constexpr (std::is_same_v<S, NineBallState>) return ball == s.lowest();
+          if constexpr (std::is_same_v<S, EightBallState>) return s.may_hit_first(ball);
+          if constexpr (std::is_same_v<S, SnookerState>) return s.is_on(ball);
+          if constexpr (std::is_same_v<S, ThreeCushionState>) return true;
+        },
+        state_);
+  }
   /// Whether the game has ended.
   [[nodiscard]] bool over() const {
     return std::visit([](const auto& s) { return s.over; }, state_);
   }
 
  private:
-  // The rules on `shot`, the state moved on.
-  Verdict decide(const Shot& shot) {
+  // The rules on `shot` from the state `next`, moved on to the state after it.
+  static Verdict decide(const Shot& shot, State& next) {
     const std::span<const ShotEvent> events = shot.events();
     return std::visit(
         [&](auto& s) {
@@ -189,7 +209,7 @@ class Game {
           s = d.next;
           return d.verdict;
         },
-        state_);
+        next);
   }
   static Decision<NineBallState> decide_by_rules(const NineBallState& s, std::span<const ShotEvent> e) {
     return nine_ball(s, e);
