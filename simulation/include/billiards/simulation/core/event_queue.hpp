@@ -1,8 +1,11 @@
 /// \file
-/// The engines' event queue: the earliest predicted event first. Two implementations behind the same
+/// The engines' event queue: the earliest predicted event first. Three implementations behind the same
 /// idea:
-/// - EventHeap, a binary heap of predicted events (the table and the shot): O(log E) a push or a pop,
-///   stale predictions dropped when they reach the top;
+/// - EventHeap, a binary heap of predicted events (the table): O(log E) a push or a pop, stale
+///   predictions dropped when they reach the top;
+/// - OwnedEvents, a small heap of predicted events per ball and a scan of their earliest (the shot):
+///   a ball's predictions, stale together once it changes, dropped at once, so that the heaps hold few
+///   stale ones and stay shallow; the scan is O(N) a pop, as each event's predictions are;
 /// - EventCalendar (event_calendar.hpp), a calendar queue holding one next event per ball (the gas):
 ///   O(1) a step on average, for the 10^3 to 10^6 balls of a gas, where a heap's O(log N) and its
 ///   scattered memory cost more than the calendar's buckets.
@@ -48,6 +51,57 @@ class EventHeap {
 
  private:
   std::vector<Event> heap_;
+};
+
+/// Predicted events kept by owner (a ball: its own events and the pairs it predicted), each owner's in a
+/// small min-heap ordered by `Later`, the earliest of all found by a scan of the owners' earliest.
+/// clear() drops an owner's events at once; other stale events are the caller's to skip, as with
+/// EventHeap.
+template <class Event, class Later = std::greater<>>
+class OwnedEvents {
+ public:
+  /// A queue for owners 0 … owners − 1.
+  explicit OwnedEvents(std::size_t owners = 0) : heaps_(owners) {}
+  /// Whether no event is queued.
+  [[nodiscard]] bool empty() const noexcept { return size_ == 0; }
+  /// How many events are queued, stale ones included.
+  [[nodiscard]] std::size_t size() const noexcept { return size_; }
+  /// The owner of the earliest event (the queue must not be empty).
+  [[nodiscard]] std::size_t earliest() const {
+    std::size_t best = heaps_.size();
+    for (std::size_t k = 0; k < heaps_.size(); ++k) {
+      if (!heaps_[k].empty() && (best == heaps_.size() || Later{}(heaps_[best].front(), heaps_[k].front())))
+        best = k;
+    }
+    return best;
+  }
+  /// The earliest event of `owner` (which must have one).
+  [[nodiscard]] const Event& top(std::size_t owner) const { return heaps_[owner].front(); }
+  /// Queues `event` as `owner`'s.
+  void push(std::size_t owner, const Event& event) {
+    std::vector<Event>& heap = heaps_[owner];
+    heap.push_back(event);
+    std::push_heap(heap.begin(), heap.end(), Later{});
+    ++size_;
+  }
+  /// Takes `owner`'s earliest event out and returns it (`owner` must have one).
+  Event pop(std::size_t owner) {
+    std::vector<Event>& heap = heaps_[owner];
+    std::pop_heap(heap.begin(), heap.end(), Later{});
+    Event event = heap.back();
+    heap.pop_back();
+    --size_;
+    return event;
+  }
+  /// Drops every event of `owner`.
+  void clear(std::size_t owner) noexcept {
+    size_ -= heaps_[owner].size();
+    heaps_[owner].clear();
+  }
+
+ private:
+  std::vector<std::vector<Event>> heaps_;
+  std::size_t size_ = 0;
 };
 
 }  // namespace billiards::simulation::detail

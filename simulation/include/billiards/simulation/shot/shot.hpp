@@ -27,6 +27,7 @@
 #include <Eigen/Core>
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -57,13 +58,20 @@ struct ShotBall {
   BallOnCloth<double> state;                                   ///< at time `since`
   double since = 0;                                            ///< the reference time (s)
   shot::Phase phase;                                           ///< of `state`
-  double reach_end = std::numeric_limits<double>::infinity();  ///< its predictions' end (absolute time)
-  shot::Box box;              ///< the range of its centre from its last prediction to reach_end
   bool pocketed = false;      ///< out of play
   std::uint64_t version = 0;  ///< how often it changed: a prediction of an older version is stale
   shot::PressedPiece piece;                   ///< where phase.pressed: the pressed piece's rest
   std::optional<shot::PressedStart> next;     ///< the pressed piece it begins at its next change
   std::optional<Motion> unrecorded_from;      ///< a change of motion at its partner's event, to be recorded
+};
+
+/// What a ball's predictions covered, kept apart from its state so that the pairs' first test reads
+/// these alone, a few bytes a ball.
+struct ShotReach {
+  shot::Box box;                                         ///< the range of its centre from its last prediction to end
+  double end = std::numeric_limits<double>::infinity();  ///< its predictions' end (absolute time)
+  bool candidate = false;  ///< in play, and moving (a ball at rest meets only moving ones)
+  bool moving = false;     ///< moving
 };
 
 /// A predicted event of a shot, stale where a ball's version has moved on since.
@@ -131,6 +139,9 @@ class Shot {
       }
       balls_.push_back(e);
     }
+    queue_ = detail::OwnedEvents<Predicted>(balls_.size());
+    events_.reserve(4 * balls_.size() + 16);  // a break's events in one allocation, most random shots
+    reach_.resize(balls_.size());
     for (std::size_t i = 0; i < balls_.size(); ++i) {
       begin_phase(i);
       keyframe(i);
@@ -252,18 +263,19 @@ class Shot {
   // left before `until`.
   bool advance(double until) {
     while (!queue_.empty()) {
-      if (!current(queue_.top())) {
-        queue_.pop();
+      const std::size_t owner = queue_.earliest();
+      if (!current(queue_.top(owner))) {
+        queue_.pop(owner);
         continue;
       }
-      if (queue_.top().time > until) return false;
+      if (queue_.top(owner).time > until) return false;
       if (events_.size() >= options_.event_limit)
         throw EventLimitReached("billiards::simulation::Shot: the shot took more than " +
                                 std::to_string(options_.event_limit) +
                                 " events (ShotOptions::event_limit) at t = " + detail::shortest(now_) +
                                 " s without coming to rest");
       const std::size_t before = events_.size();
-      resolve(queue_.pop());
+      resolve(queue_.pop(owner));
       if (events_.size() > before) return true;
     }
     return false;
@@ -321,7 +333,7 @@ class Shot {
   }
   void push(double t, ShotEvent::Kind kind, std::size_t i, std::size_t other) {
     const std::uint64_t other_version = kind == ShotEvent::Kind::ball ? balls_[other].version : 0;
-    queue_.push({t, kind, i, other, balls_[i].version, other_version});
+    queue_.push(i, {t, kind, i, other, balls_[i].version, other_version});
   }
 
   // The time left in ball j's phase from now, finite (the largest double for a phase without end).
@@ -345,22 +357,34 @@ class Shot {
     const Eigen::Vector2d r(e.state.position.x(), e.state.position.y()),
         v(e.state.velocity.x(), e.state.velocity.y());
     const std::size_t partner = e.phase.pressed == shot::Pressed::ball ? e.piece.partner : i;  // moving as one
-    const shot::Box reach = e.box.widened(2 * R);
-    for (std::size_t j = first_other; j < balls_.size(); ++j) {
-      const Entry& o = balls_[j];
-      const double end = std::min(e.reach_end, o.reach_end);
-      // One branch for the tests, most of which fail: the boxes, then the other ball in play, moving
-      // where this one is not, predicted until now at least (else it changes at once), not this one,
-      // the one skipped or the one it moves with.
-      if (!(reach.overlaps(o.box) & !o.pocketed & (e.phase.moving | o.phase.moving) & (end >= now_) & (j != i) &
-            (j != skip) & (j != partner)))
-        continue;
-      const auto [position, velocity] = shot::centre_and_velocity(o.state, o.phase, now_ - o.since);
-      const shot::Path relative{position - r, velocity - v, o.phase.acceleration - e.phase.acceleration};
-      const double pair_horizon = std::isfinite(end) ? end - now_ : std::numeric_limits<double>::max();
-      const double t = shot::ball_contact(relative, R, pair_horizon);
-      if (t != std::numeric_limits<double>::infinity() && !excluded(ShotEvent::Kind::ball, j, t))
-        push(now_ + t, ShotEvent::Kind::ball, i, j);
+    const shot::Box reach = reach_[i].box.widened(2 * R);
+    const double reach_end = reach_[i].end;
+    const bool moving = e.phase.moving;
+    // 64 balls at a time: a mask of those whose boxes come within reach, in play, moving where this
+    // one is not, predicted until now at least (else they change at once), computed without a branch;
+    // then this one, the one skipped and the one it moves with taken out.
+    for (std::size_t base = first_other; base < balls_.size(); base += 64) {
+      const std::size_t count = std::min<std::size_t>(64, balls_.size() - base);
+      std::uint64_t near = 0;
+      for (std::size_t k = 0; k < count; ++k) {
+        const detail::ShotReach& o = reach_[base + k];
+        near |= static_cast<std::uint64_t>(reach.overlaps(o.box) & o.candidate & (moving | o.moving) & (o.end >= now_))
+                << k;
+      }
+      for (const std::size_t out : {i, skip, partner}) {
+        if (out >= base && out - base < count) near &= ~(std::uint64_t{1} << (out - base));
+      }
+      for (; near != 0; near &= near - 1) {
+        const std::size_t j = base + static_cast<std::size_t>(std::countr_zero(near));
+        const Entry& o = balls_[j];
+        const double end = std::min(reach_end, reach_[j].end);
+        const auto [position, velocity] = shot::centre_and_velocity(o.state, o.phase, now_ - o.since);
+        const shot::Path relative{position - r, velocity - v, o.phase.acceleration - e.phase.acceleration};
+        const double pair_horizon = std::isfinite(end) ? end - now_ : std::numeric_limits<double>::max();
+        const double t = shot::ball_contact(relative, R, pair_horizon);
+        if (t != std::numeric_limits<double>::infinity() && !excluded(ShotEvent::Kind::ball, j, t))
+          push(now_ + t, ShotEvent::Kind::ball, i, j);
+      }
     }
   }
 
@@ -368,6 +392,7 @@ class Shot {
   // everything but `skip` (the other ball of a ball–ball event, predicted with it already).
   void changed(std::size_t i, std::size_t skip, detail::ExcludedContact excluded = {}) {
     ++balls_[i].version;
+    queue_.clear(i);  // every prediction of i's is stale now
     begin_phase(i);
     keyframe(i);
     predict(i, 0, skip, excluded);
@@ -472,9 +497,10 @@ class Shot {
   std::vector<Jaw> jaws_;
   std::vector<Pocket> pockets_;
   std::vector<Entry> balls_;
+  std::vector<detail::ShotReach> reach_;  // balls_[i]'s in reach_[i]
   shot::History history_;
   std::vector<ShotEvent> events_;
-  detail::EventHeap<Predicted> queue_;
+  detail::OwnedEvents<Predicted> queue_;
   double now_ = 0;
   double energy_scale_ = 0;
   double last_energy_ = 0;
@@ -491,7 +517,11 @@ class Shot {
 inline void Shot::predict(std::size_t i, std::size_t first_other, std::size_t skip,
                         detail::ExcludedContact excluded) {
   Entry& e = balls_[i];
-  if (e.pocketed) return;
+  detail::ShotReach& covered = reach_[i];
+  if (e.pocketed) {
+    covered = {};  // no longer a candidate for any pair
+    return;
+  }
   double horizon = remaining(i);
   double first_own = std::numeric_limits<double>::infinity();  // its earliest cushion, jaw or pocket
   const double R = physics_.radius;
@@ -506,27 +536,27 @@ inline void Shot::predict(std::size_t i, std::size_t first_other, std::size_t sk
     first_own = std::min(first_own, now_ + t);
   };
   // The box of the centre's path up to the horizon, made again where a contact brings the horizon in.
-  e.box = shot::path_box(me, horizon, e.phase.moving, R);
+  covered.box = shot::path_box(me, horizon, e.phase.moving, R);
   double boxed = horizon;
   const auto box_to_horizon = [&] {
-    if (horizon != boxed) e.box = shot::path_box(me, horizon, e.phase.moving, R);
+    if (horizon != boxed) covered.box = shot::path_box(me, horizon, e.phase.moving, R);
     boxed = horizon;
   };
   if (e.phase.moving) {
     // A cushion whose line the centre's box over the whole horizon keeps farther than R from is passed
     // over: its polynomial stays above 0 there.
-    const shot::Box reach = e.box;
+    const shot::Box reach = covered.box;
     for (std::size_t k = 0; k < cushions_.size(); ++k) {
       if (shot::beyond_reach(reach, cushions_[k], R)) continue;
       found(shot::cushion_contact(me, cushions_[k], R, horizon), ShotEvent::Kind::cushion, k);
     }
     box_to_horizon();
     for (std::size_t k = 0; k < jaws_.size(); ++k) {
-      if (!e.box.near(jaws_[k].centre, R + jaws_[k].radius)) continue;
+      if (!covered.box.near(jaws_[k].centre, R + jaws_[k].radius)) continue;
       found(shot::jaw_contact(me, jaws_[k], R, horizon), ShotEvent::Kind::jaw, k);
     }
     for (std::size_t k = 0; k < pockets_.size(); ++k) {
-      if (!e.box.near(pockets_[k].centre, pockets_[k].radius)) continue;
+      if (!covered.box.near(pockets_[k].centre, pockets_[k].radius)) continue;
       found(shot::pocket_entry(me, pockets_[k], horizon), ShotEvent::Kind::pocket, k);
     }
   }
@@ -535,7 +565,9 @@ inline void Shot::predict(std::size_t i, std::size_t first_other, std::size_t sk
   if (std::isfinite(e.phase.duration) && !(first_own <= now_ + e.phase.duration))
     push(now_ + e.phase.duration, ShotEvent::Kind::transition, i, i);
   box_to_horizon();
-  e.reach_end = e.phase.moving ? now_ + horizon : std::numeric_limits<double>::infinity();
+  covered.end = e.phase.moving ? now_ + horizon : std::numeric_limits<double>::infinity();
+  covered.candidate = true;
+  covered.moving = e.phase.moving;
   predict_pairs(i, first_other, skip, excluded);
 }
 
