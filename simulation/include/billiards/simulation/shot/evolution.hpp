@@ -84,21 +84,33 @@ struct PressedPiece {
   return -size * (direction / billiards::detail::horizontal_length(direction.x(), direction.y()));
 }
 
-/// The phase a ball in state `s` is in: its motion, duration and acceleration (the contact's slip
-/// computed once for all three).
-[[nodiscard]] inline Phase phase_of(const BallOnCloth<double>& s, const Cloth<double>& cloth) {
+/// phase_of given the contact's slip of `s` (billiards::detail::slip_of), computed once for the motion,
+/// the duration and the acceleration; a rolling ball's speed likewise once for its duration and its
+/// direction.
+[[nodiscard]] inline Phase phase_of(const BallOnCloth<double>& s, const Cloth<double>& cloth,
+                                    const billiards::detail::Slip<double>& slip) {
   Phase p;
-  const billiards::detail::Slip<double> slip = billiards::detail::slip_of(s);
   p.motion = billiards::detail::motion_with(s, slip);
-  p.duration = billiards::detail::phase_duration(s, cloth, p.motion, slip);
   p.moving = p.motion == Motion::sliding || p.motion == Motion::rolling;
   if (p.motion == Motion::sliding) {
+    p.duration = billiards::detail::phase_duration(s, cloth, p.motion, slip);
     const double k = cloth.sliding_friction * cloth.gravity / slip.speed;
     p.acceleration = {-k * slip.vector.x(), -k * slip.vector.y()};
   } else if (p.motion == Motion::rolling) {
-    p.acceleration = acceleration(s, p.motion, cloth);
+    // phase_duration's and acceleration()'s expressions, with the one speed
+    const Eigen::Vector2d v(s.velocity.x(), s.velocity.y());
+    const double speed = billiards::detail::horizontal_length(v.x(), v.y());
+    p.duration = kernels::spin::roll_time(speed, cloth.rolling_friction, cloth.gravity);
+    p.acceleration = -(cloth.rolling_friction * cloth.gravity) * (v / speed);
+  } else {
+    p.duration = billiards::detail::phase_duration(s, cloth, p.motion, slip);
   }
   return p;
+}
+
+/// The phase a ball in state `s` is in: its motion, duration and acceleration.
+[[nodiscard]] inline Phase phase_of(const BallOnCloth<double>& s, const Cloth<double>& cloth) {
+  return phase_of(s, cloth, billiards::detail::slip_of(s));
 }
 
 /// The centre and velocity of a ball `tau` seconds into phase `p` begun in state `s` (within the phase):
@@ -136,12 +148,24 @@ struct PressedPiece {
 }
 
 /// The state at the end of a phase of `duration` begun in state `s`: evolved by its duration, then set
-/// to the next phase exactly (finish) should rounding have left it short.
+/// to the next phase exactly (finish) should rounding have left it short. `next` receives the phase
+/// that state begins (phase_of, with the slip computed once for that test and the phase).
+[[nodiscard]] inline BallOnCloth<double> end_of_phase(const BallOnCloth<double>& s, Motion phase, double duration,
+                                                      const Cloth<double>& cloth, Phase& next) {
+  BallOnCloth<double> end = evolve(s, cloth, duration);
+  billiards::detail::Slip<double> slip = billiards::detail::slip_of(end);
+  if (billiards::detail::motion_with(end, slip) == phase) {
+    end = finish(end, phase);
+    slip = billiards::detail::slip_of(end);
+  }
+  next = phase_of(end, cloth, slip);
+  return end;
+}
+/// The state at the end of a phase; see the overload that gives the next phase too.
 [[nodiscard]] inline BallOnCloth<double> end_of_phase(const BallOnCloth<double>& s, Motion phase,
                                                       double duration, const Cloth<double>& cloth) {
-  BallOnCloth<double> end = evolve(s, cloth, duration);
-  if (motion(end, cloth) == phase) end = finish(end, phase);
-  return end;
+  Phase next;
+  return end_of_phase(s, phase, duration, cloth, next);
 }
 
 /// The kinetic energy of a ball of mass `mass` (J): ½ m v² + ⅕ m R² ω² (a solid sphere).

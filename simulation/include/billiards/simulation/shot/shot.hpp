@@ -298,15 +298,17 @@ class Shot {
     return sum;
   }
 
-  // The phase of ball i's reference state.
-  void begin_phase(std::size_t i) {
+  // The phase of ball i's reference state (`known`, where given, is phase_of's for it).
+  void begin_phase(std::size_t i, const shot::Phase* known = nullptr) {
     Entry& e = balls_[i];
     if (e.next) {
       e.phase = e.next->phase;
       e.piece = e.next->piece;
       e.next.reset();
+    } else if (e.pocketed) {
+      e.phase = shot::Phase{};
     } else {
-      e.phase = e.pocketed ? shot::Phase{} : shot::phase_of(e.state, physics_.cloth);
+      e.phase = known ? *known : shot::phase_of(e.state, physics_.cloth);
     }
     e.unrecorded_from.reset();
   }
@@ -348,52 +350,16 @@ class Shot {
                std::size_t skip = std::numeric_limits<std::size_t>::max(),
                detail::ExcludedContact excluded = {});
 
-  // Ball i's contacts with the balls from `first_other` on but `skip`, until the earlier of the two's
-  // reach_end (see predict).
-  void predict_pairs(std::size_t i, std::size_t first_other, std::size_t skip,
-                     detail::ExcludedContact excluded) {
-    const Entry& e = balls_[i];
-    const double R = physics_.radius;
-    const Eigen::Vector2d r(e.state.position.x(), e.state.position.y()),
-        v(e.state.velocity.x(), e.state.velocity.y());
-    const std::size_t partner = e.phase.pressed == shot::Pressed::ball ? e.piece.partner : i;  // moving as one
-    const shot::Box reach = reach_[i].box.widened(2 * R);
-    const double reach_end = reach_[i].end;
-    const bool moving = e.phase.moving;
-    // 64 balls at a time: a mask of those whose boxes come within reach, in play, moving where this
-    // one is not, predicted until now at least (else they change at once), computed without a branch;
-    // then this one, the one skipped and the one it moves with taken out.
-    for (std::size_t base = first_other; base < balls_.size(); base += 64) {
-      const std::size_t count = std::min<std::size_t>(64, balls_.size() - base);
-      std::uint64_t near = 0;
-      for (std::size_t k = 0; k < count; ++k) {
-        const detail::ShotReach& o = reach_[base + k];
-        near |= static_cast<std::uint64_t>(reach.overlaps(o.box) & o.candidate & (moving | o.moving) & (o.end >= now_))
-                << k;
-      }
-      for (const std::size_t out : {i, skip, partner}) {
-        if (out >= base && out - base < count) near &= ~(std::uint64_t{1} << (out - base));
-      }
-      for (; near != 0; near &= near - 1) {
-        const std::size_t j = base + static_cast<std::size_t>(std::countr_zero(near));
-        const Entry& o = balls_[j];
-        const double end = std::min(reach_end, reach_[j].end);
-        const auto [position, velocity] = shot::centre_and_velocity(o.state, o.phase, now_ - o.since);
-        const shot::Path relative{position - r, velocity - v, o.phase.acceleration - e.phase.acceleration};
-        const double pair_horizon = std::isfinite(end) ? end - now_ : std::numeric_limits<double>::max();
-        const double t = shot::ball_contact(relative, R, pair_horizon);
-        if (t != std::numeric_limits<double>::infinity() && !excluded(ShotEvent::Kind::ball, j, t))
-          push(now_ + t, ShotEvent::Kind::ball, i, j);
-      }
-    }
-  }
+  // Ball i's contacts with the balls from `first_other` on but `skip`: see the definition below the class.
+  void predict_pairs(std::size_t i, std::size_t first_other, std::size_t skip, detail::ExcludedContact excluded);
 
   // Ball i changed now: its old predictions are stale; its phase begins again and it is predicted against
   // everything but `skip` (the other ball of a ball–ball event, predicted with it already).
-  void changed(std::size_t i, std::size_t skip, detail::ExcludedContact excluded = {}) {
+  void changed(std::size_t i, std::size_t skip, detail::ExcludedContact excluded = {},
+               const shot::Phase* known = nullptr) {
     ++balls_[i].version;
     queue_.clear(i);  // every prediction of i's is stale now
-    begin_phase(i);
+    begin_phase(i, known);
     keyframe(i);
     predict(i, 0, skip, excluded);
   }
@@ -425,10 +391,11 @@ class Shot {
     release_partner(i, p.kind == ShotEvent::Kind::ball ? p.other : i);
     if (p.kind == ShotEvent::Kind::ball) release_partner(p.other, i);
     std::size_t skip = balls_.size();
+    shot::Phase next;  // a transition's next phase
     switch (p.kind) {
       case ShotEvent::Kind::transition:
         // Evolved by the phase's predicted duration from its start (now − since may round a sliver short).
-        e.state = shot::end_of_phase(e.state, from, e.phase.duration, physics_.cloth);
+        e.state = shot::end_of_phase(e.state, from, e.phase.duration, physics_.cloth, next);
         e.since = now_;
         break;
       case ShotEvent::Kind::ball: {
@@ -476,7 +443,7 @@ class Shot {
         break;
       case ShotEvent::Kind::strike: break;
     }
-    changed(i, skip);
+    changed(i, skip, {}, p.kind == ShotEvent::Kind::transition ? &next : nullptr);
     if (p.kind == ShotEvent::Kind::ball) changed(p.other, balls_.size());
     record(p.kind, i, p.other, from);
     if (options_.check_invariants) check(energy_before_event);
@@ -569,6 +536,46 @@ inline void Shot::predict(std::size_t i, std::size_t first_other, std::size_t sk
   covered.candidate = true;
   covered.moving = e.phase.moving;
   predict_pairs(i, first_other, skip, excluded);
+}
+
+// Ball i's contacts with the balls from `first_other` on but `skip`, until the earlier of the two's
+// predictions' ends (ShotReach::end, see predict).
+inline void Shot::predict_pairs(std::size_t i, std::size_t first_other, std::size_t skip,
+                                detail::ExcludedContact excluded) {
+  const Entry& e = balls_[i];
+  const double R = physics_.radius;
+  const Eigen::Vector2d r(e.state.position.x(), e.state.position.y()),
+      v(e.state.velocity.x(), e.state.velocity.y());
+  const std::size_t partner = e.phase.pressed == shot::Pressed::ball ? e.piece.partner : i;  // moving as one
+  const shot::Box reach = reach_[i].box.widened(2 * R);
+  const double reach_end = reach_[i].end;
+  const bool moving = e.phase.moving;
+  // 64 balls at a time: a mask of those whose boxes come within reach, in play, moving where this
+  // one is not, predicted until now at least (else they change at once), computed without a branch;
+  // then this one, the one skipped and the one it moves with taken out.
+  for (std::size_t base = first_other; base < balls_.size(); base += 64) {
+    const std::size_t count = std::min<std::size_t>(64, balls_.size() - base);
+    std::uint64_t near = 0;
+    for (std::size_t k = 0; k < count; ++k) {
+      const detail::ShotReach& o = reach_[base + k];
+      near |= static_cast<std::uint64_t>(reach.overlaps(o.box) & o.candidate & (moving | o.moving) & (o.end >= now_))
+              << k;
+    }
+    for (const std::size_t out : {i, skip, partner}) {
+      if (out >= base && out - base < count) near &= ~(std::uint64_t{1} << (out - base));
+    }
+    for (; near != 0; near &= near - 1) {
+      const std::size_t j = base + static_cast<std::size_t>(std::countr_zero(near));
+      const Entry& o = balls_[j];
+      const double end = std::min(reach_end, reach_[j].end);
+      const auto [position, velocity] = shot::centre_and_velocity(o.state, o.phase, now_ - o.since);
+      const shot::Path relative{position - r, velocity - v, o.phase.acceleration - e.phase.acceleration};
+      const double pair_horizon = std::isfinite(end) ? end - now_ : std::numeric_limits<double>::max();
+      const double t = shot::ball_contact(relative, R, pair_horizon);
+      if (t != std::numeric_limits<double>::infinity() && !excluded(ShotEvent::Kind::ball, j, t))
+        push(now_ + t, ShotEvent::Kind::ball, i, j);
+    }
+  }
 }
 
 // Balls i and j, that have just met along n (from i to j): pressed together from now on (their next
