@@ -2,12 +2,15 @@
 """Turns the JSON of one billiards_bench run into bench/RESULTS.md and bench/throughput.svg.
 
 Usage: bench/report.py RESULTS_JSON [--command "how the JSON was made"] [--derive BIN] [--out-dir DIR]
-                       [--pooltool POOLTOOL_JSON] [--fastfiz FASTFIZ_JSON] [--edmd EDMD_TEXT]
+                       [--pooltool POOLTOOL_JSON] [--fastfiz FASTFIZ_JSON [--breaks BREAKS_JSON]]...
+                       [--edmd EDMD_TEXT]
                        [--python PYTHON_JSON]
 
 POOLTOOL_JSON is what ../shared/peers/pooltool/bench_breaks.py printed in the same run (bench/run.sh runs
 both): pooltool's breaks beside ours. FASTFIZ_JSON is what ../shared/peers/fastfiz's bench_break printed
-in the same run: FastFiz's breaks beside ours. EDMD_TEXT is what ../shared/peers/edmd/run.py printed in the same
+in the same run: FastFiz's breaks beside ours. --fastfiz may be given once a round, each with --breaks
+BREAKS_JSON, the billiards_bench run of our breaks just before it (rounds alternating on one core): the
+ratio is then the median of the rounds'. EDMD_TEXT is what ../shared/peers/edmd/run.py printed in the same
 run: the gas against Smallenburg's SingleEvent code.
 
 Both files are written atomically (tools/atomic_write.py), into bench/ unless --out-dir names another
@@ -38,22 +41,22 @@ def fail(argument, value, expected):
 TIME_UNITS = {"ns": 1, "us": 1e3, "ms": 1e6, "s": 1e9}
 
 
-def load(path):
+def load(path, argument="RESULTS_JSON"):
     expected = "the JSON of a billiards_bench run (--benchmark_format=json)"
     try:
         with open(path, encoding="utf-8") as f:
             data = json.load(f)
     except OSError as error:
-        fail("RESULTS_JSON", path, f"a readable file ({error.strerror})")
+        fail(argument, path, f"a readable file ({error.strerror})")
     except (UnicodeDecodeError, ValueError) as error:
-        fail("RESULTS_JSON", path, f"{expected}; not JSON ({error})")
+        fail(argument, path, f"{expected}; not JSON ({error})")
     if not isinstance(data, dict) or not isinstance(data.get("context"), dict) or \
             not isinstance(data.get("benchmarks"), list):
-        fail("RESULTS_JSON", path, f"{expected}: an object with \"context\" and a \"benchmarks\" list")
+        fail(argument, path, f"{expected}: an object with \"context\" and a \"benchmarks\" list")
     for b in data["benchmarks"]:
         if not isinstance(b, dict) or not isinstance(b.get("name"), str) or \
                 not isinstance(b.get("real_time"), (int, float)) or b.get("time_unit") not in TIME_UNITS:
-            fail("RESULTS_JSON", path, f"{expected}: each benchmark with a name, a real_time and a time_unit "
+            fail(argument, path, f"{expected}: each benchmark with a name, a real_time and a time_unit "
                  f"({', '.join(TIME_UNITS)}); found {str(b)[:80]}")
     # One figure per benchmark: the median of its repetitions where the run repeated them
     # (--benchmark_repetitions), else its one measurement.
@@ -245,6 +248,22 @@ def table_events(runs):
     return "\n".join(lines)
 
 
+def median(values):
+    ordered = sorted(values)
+    middle = len(ordered) // 2
+    return ordered[middle] if len(ordered) % 2 else (ordered[middle - 1] + ordered[middle]) / 2
+
+
+def fastfiz_ratios(fastfiz, game, us):
+    """FastFiz's median CPU time per break over ours, a round at a time: ours from the round's own run of
+    our breaks where it has one, else `us` (the main run's)."""
+    ratios = []
+    for peer, breaks in fastfiz:
+        ours = per_item_ns(breaks[f"shot/break/{game}"]) / 1e3 if breaks is not None else us
+        ratios.append(peer[game]["cpu_time_per_shot_us"]["median"] / ours)
+    return ratios
+
+
 def shot_section(runs, pooltool, fastfiz=None):
     """Shots played to rest (billiards::simulation::Shot): breaks against pooltool's and FastFiz's, random shots."""
     lines = ["| break (7-ft table, 8 m/s at the apex, b = 0.25 R, 1e-3 R jitter) | ours: µs per break | events | µs per event | pooltool: ms per break (median, seeds 1–20) | events | pooltool / ours | goal | FastFiz: µs per break (median CPU time) | events | µs per event | FastFiz / ours |",
@@ -264,11 +283,11 @@ def shot_section(runs, pooltool, fastfiz=None):
             row = f"{ours} {ms:,.1f} | {peer['events']['median']:.0f} | {1e3 * ms / us:,.0f}× | ≥ 300× |"
         else:
             row = f"{ours} (pooltool not set up) | | | ≥ 300× |"
-        if fastfiz is not None and game in fastfiz:
-            peer = fastfiz[game]
-            peer_us = peer["cpu_time_per_shot_us"]["median"]
-            peer_events = peer["events_per_shot"]["median"]
-            row += f" {peer_us:,.0f} | {peer_events:.0f} | {peer_us / peer_events:.2f} | {peer_us / us:.2f}× |"
+        if fastfiz:
+            peer_us = median([peer[game]["cpu_time_per_shot_us"]["median"] for peer, _ in fastfiz])
+            peer_events = median([peer[game]["events_per_shot"]["median"] for peer, _ in fastfiz])
+            ratio = median(fastfiz_ratios(fastfiz, game, us))
+            row += f" {peer_us:,.0f} | {peer_events:.0f} | {peer_us / peer_events:.2f} | {ratio:.2f}× |"
         else:
             row += " (FastFiz not set up) | | | |"
         lines.append(row)
@@ -292,12 +311,20 @@ def shot_section(runs, pooltool, fastfiz=None):
                      f"20 times: {1e3 * pooltool['9ball_fixed_seed0']['time_s']['median']:.1f} ms (9-ball), "
                      f"{1e3 * pooltool['8ball_fixed_seed0']['time_s']['median']:.1f} ms (8-ball); other processes' "
                      f"load meanwhile {pooltool['9ball_seeds1to20'].get('other_processes_cpu_cores', float('nan')):.2f} cores.")
-    if fastfiz is not None:
-        reps = fastfiz.get("settings", {}).get("reps", "?")
-        lines.append(f"- FastFiz on the same core in the same run: {fastfiz.get('engine', 'FastFiz')}, {reps} "
+    if fastfiz:
+        first = fastfiz[0][0]
+        reps = first.get("settings", {}).get("reps", "?")
+        lines.append(f"- FastFiz on the same core in the same run: {first.get('engine', 'FastFiz')}, {reps} "
                      f"breaks a game after a warm-up, its thread's CPU time per break (executeShot and its "
                      f"deletion); its events count its cue strike, ball–ball, ball–rail, pocket and state-change "
                      f"events.")
+        if fastfiz[0][1] is not None:
+            rounds = "; ".join(
+                f"{name}: " + ", ".join(f"{r:.2f}×" for r in fastfiz_ratios(fastfiz, game, None))
+                for game, name in (("9ball", "9-ball"), ("8ball", "8-ball")))
+            lines.append(f"- FastFiz / ours is the median of {len(fastfiz)} rounds on that core, each our break "
+                         f"benchmark (the median of 3 repetitions) then FastFiz's, back to back, so that both meet "
+                         f"the machine as it was within seconds: {rounds}.")
     return "\n".join(lines)
 
 
@@ -487,12 +514,17 @@ def main():
     parser.add_argument("--clean-build", help="what a clean build cost, measured by the caller (text)")
     parser.add_argument("--pooltool", help="the JSON pooltool's bench_breaks.py printed in the same run")
     parser.add_argument("--edmd", help="what ../shared/peers/edmd/run.py printed in the same run")
-    parser.add_argument("--fastfiz", help="the JSON ../shared/peers/fastfiz's bench_break printed in the same run")
+    parser.add_argument("--fastfiz", action="append", default=[],
+                        help="the JSON ../shared/peers/fastfiz's bench_break printed in the same run (once a round)")
+    parser.add_argument("--breaks", action="append", default=[],
+                        help="the billiards_bench JSON of our breaks run just before each --fastfiz")
     parser.add_argument("--python", help="the JSON bench/bench_python.py printed in the same run")
     parser.add_argument("--out-dir", default=HERE, help="where RESULTS.md and throughput.svg go (default: bench/)")
     args = parser.parse_args()
     if not os.path.isdir(args.out_dir):
         fail("--out-dir", args.out_dir, "an existing folder")
+    if args.breaks and len(args.breaks) != len(args.fastfiz):
+        fail("--breaks", args.breaks, f"one for each --fastfiz ({len(args.fastfiz)}), or none")
     context, runs = load(args.json)
     pooltool = None
     if args.pooltool:
@@ -506,17 +538,23 @@ def main():
         except (UnicodeDecodeError, ValueError, KeyError, TypeError) as error:
             fail("--pooltool", args.pooltool, f"the JSON of pooltool's bench_breaks.py ({error!r})")
     args.pooltool_runs = pooltool
-    fastfiz = None
-    if args.fastfiz:
+    fastfiz = []
+    for k, path in enumerate(args.fastfiz):
         try:
-            with open(args.fastfiz, encoding="utf-8") as f:
-                fastfiz = json.load(f)
+            with open(path, encoding="utf-8") as f:
+                peer = json.load(f)
             for game in ("9ball", "8ball"):
-                float(fastfiz[game]["cpu_time_per_shot_us"]["median"]) / float(fastfiz[game]["events_per_shot"]["median"])
+                float(peer[game]["cpu_time_per_shot_us"]["median"]) / float(peer[game]["events_per_shot"]["median"])
         except OSError as error:
-            fail("--fastfiz", args.fastfiz, f"a readable file ({error.strerror})")
+            fail("--fastfiz", path, f"a readable file ({error.strerror})")
         except (UnicodeDecodeError, ValueError, KeyError, TypeError, ZeroDivisionError) as error:
-            fail("--fastfiz", args.fastfiz, f"the JSON of FastFiz's bench_break ({error!r})")
+            fail("--fastfiz", path, f"the JSON of FastFiz's bench_break ({error!r})")
+        breaks = None
+        if args.breaks:
+            breaks = load(args.breaks[k], "--breaks")[1]
+            if not all(f"shot/break/{game}" in breaks for game in ("9ball", "8ball")):
+                fail("--breaks", args.breaks[k], "a billiards_bench run of shot/break/9ball and shot/break/8ball")
+        fastfiz.append((peer, breaks))
     args.fastfiz_runs = fastfiz
     python = None
     if args.python:
@@ -700,7 +738,8 @@ default 7-ft table and physics, the cue ball struck at 8 m/s at the apex with b 
 jitter; its own racks and cue ball spot) on the same machine in the same run of `bench/run.sh`; its
 time is the median over seeds 1–20 after its JIT is warm. FastFiz, the C++ engine of the computational
 pool tournaments, plays it too (`../shared/peers/fastfiz/bench_break`: its own default table, the cue
-stick at 8 m/s at the apex with b = 0.25 R, racks with 1e-3 R jitter) on the same core in the same run.
+stick at 8 m/s at the apex with b = 0.25 R, racks with 1e-3 R jitter) on the same core in the same run,
+in rounds alternating with ours.
 The models differ (docs/shot.md), so the event counts differ too.
 
 {shot_section(runs, args.pooltool_runs, getattr(args, "fastfiz_runs", None))}
