@@ -1,8 +1,10 @@
 // The event calendar of billiards/simulation/event_calendar.hpp against a reference it does not share code
 // with: a std::set of (time, item) pairs. Random moves of random items, times drawn near now, far beyond the
 // year, equal, and +∞; each step the earliest must be an item with the reference's earliest time, and what
-// the look ahead reports must be the pending items of a span of times after it, nearer first.
+// the look ahead reports must be the pending items of a span of times after it, nearer first. The shot's
+// queue (core/event_queue.hpp, OwnedEvents) against a std::multiset of its events likewise.
 #include <billiards/simulation/core/event_calendar.hpp>
+#include <billiards/simulation/core/event_queue.hpp>
 
 #include <catch2/catch.hpp>
 
@@ -146,4 +148,57 @@ TEST_CASE("the event calendar rejects a NaN time or one before now") {
   CHECK_THROWS_AS(calendar.reset({1.0, 0.5}, 0.75), std::invalid_argument);
   calendar.reset({}, 0);
   CHECK(calendar.earliest() == EventCalendar::none);
+}
+
+// The shot's queue, billiards::simulation::detail::OwnedEvents, against a std::multiset of every event
+// queued: random pushes by random owners (times drawn from few values, so that ties are common and the
+// order between them is the events' own), pops of the earliest and clears of an owner's events. Each
+// step the owner named earliest must hold the reference's first event.
+TEST_CASE("OwnedEvents pops the earliest of all owners' events, and clear drops one owner's", "[queue]") {
+  struct Event {
+    double time;
+    int key;  // breaks ties, as a prediction's kind and balls do
+    std::size_t owner;
+    bool operator>(const Event& o) const { return time > o.time || (time == o.time && key > o.key); }
+    bool operator<(const Event& o) const { return o > *this; }
+  };
+  constexpr std::size_t owners = 7;
+  billiards::simulation::detail::OwnedEvents<Event> queue(owners);
+  std::multiset<Event> reference;
+  std::mt19937_64 random(11);
+  std::uniform_int_distribution<int> action(0, 9), value(0, 20);
+  std::uniform_int_distribution<std::size_t> who(0, owners - 1);
+  int pops = 0, clears = 0;
+  for (int step = 0; step < 20000; ++step) {
+    const int a = action(random);
+    if (a < 5 || reference.empty()) {
+      const Event e{static_cast<double>(value(random)) / 4, value(random), who(random)};
+      queue.push(e.owner, e);
+      reference.insert(e);
+    } else if (a < 9) {
+      const std::size_t owner = queue.earliest();
+      REQUIRE(owner < owners);
+      const Event& top = queue.top(owner);
+      const Event first = *reference.begin();
+      REQUIRE(top.time == first.time);
+      REQUIRE(top.key == first.key);
+      const Event popped = queue.pop(owner);
+      // the reference's equal events are interchangeable only where they are equal in every field
+      const auto it = std::find_if(reference.begin(), reference.end(), [&](const Event& e) {
+        return e.time == popped.time && e.key == popped.key && e.owner == popped.owner;
+      });
+      REQUIRE(it != reference.end());
+      reference.erase(it);
+      ++pops;
+    } else {
+      const std::size_t owner = who(random);
+      queue.clear(owner);
+      std::erase_if(reference, [&](const Event& e) { return e.owner == owner; });
+      ++clears;
+    }
+    REQUIRE(queue.size() == reference.size());
+    REQUIRE(queue.empty() == reference.empty());
+  }
+  CHECK(pops > 5000);
+  CHECK(clears > 1000);
 }
