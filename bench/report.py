@@ -25,6 +25,7 @@ import re
 import json
 import math
 import os
+import statistics
 import sys
 
 HERE = os.path.dirname(os.path.abspath(__file__))
@@ -248,12 +249,6 @@ def table_events(runs):
     return "\n".join(lines)
 
 
-def median(values):
-    ordered = sorted(values)
-    middle = len(ordered) // 2
-    return ordered[middle] if len(ordered) % 2 else (ordered[middle - 1] + ordered[middle]) / 2
-
-
 def fastfiz_ratios(fastfiz, game, us):
     """FastFiz's median CPU time per break over ours, a round at a time: ours from the round's own run of
     our breaks where it has one, else `us` (the main run's)."""
@@ -284,9 +279,9 @@ def shot_section(runs, pooltool, fastfiz=None):
         else:
             row = f"{ours} (pooltool not set up) | | | ≥ 300× |"
         if fastfiz:
-            peer_us = median([peer[game]["cpu_time_per_shot_us"]["median"] for peer, _ in fastfiz])
-            peer_events = median([peer[game]["events_per_shot"]["median"] for peer, _ in fastfiz])
-            ratio = median(fastfiz_ratios(fastfiz, game, us))
+            peer_us = statistics.median([peer[game]["cpu_time_per_shot_us"]["median"] for peer, _ in fastfiz])
+            peer_events = statistics.median([peer[game]["events_per_shot"]["median"] for peer, _ in fastfiz])
+            ratio = statistics.median(fastfiz_ratios(fastfiz, game, us))
             row += f" {peer_us:,.0f} | {peer_events:.0f} | {peer_us / peer_events:.2f} | {ratio:.2f}× |"
         else:
             row += " (FastFiz not set up) | | | |"

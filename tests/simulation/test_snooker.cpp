@@ -7,7 +7,9 @@
 
 #include <catch2/catch.hpp>
 
+#include <array>
 #include <cstddef>
+#include <initializer_list>
 #include <vector>
 
 namespace {
@@ -27,6 +29,13 @@ SnookerState colours_from(std::size_t from) {
   s.on = SnookerOn::sequence;
   s.ball_in_hand = BallInHand::none;
   return s;
+}
+
+// The rules' decision on a shot at the last black, the scores `scores` before it.
+Decision<SnookerState> on_last_black(std::array<int, 2> scores, std::initializer_list<game_events::Step> steps) {
+  SnookerState s = colours_from(ball::black);
+  s.scores = scores;
+  return snooker(s, events_of(steps));
 }
 
 }  // namespace
@@ -151,31 +160,24 @@ TEST_CASE("snooker: the colours in order and the frame's end", "[simulation][gam
     CHECK(d.next.player == 0);
   }
   SECTION("the last black potted ends the frame: the higher score wins") {
-    SnookerState s = colours_from(ball::black);
-    s.scores = {60, 62};
-    const auto d = snooker(s, events_of({hit(0, ball::black), drop(ball::black, 0)}));
+    const auto d = on_last_black({60, 62}, {hit(0, ball::black), drop(ball::black, 0)});
     CHECK(d.verdict.game_over);
     CHECK(d.verdict.winner == 0u);
     CHECK(d.next.scores == std::array<int, 2>{67, 62});
   }
   SECTION("a foul on the last black ends the frame, its 7 to the opponent") {
-    SnookerState s = colours_from(ball::black);
-    s.scores = {60, 55};
-    const auto d = snooker(s, events_of({hit(0, ball::black), drop(0, 4)}));
+    const auto d = on_last_black({60, 55}, {hit(0, ball::black), drop(0, 4)});
     CHECK(d.verdict.game_over);
     CHECK(d.verdict.penalty == 7);
     CHECK(d.verdict.winner == 1u);
   }
   SECTION("a miss on the last black without a foul does not end it") {
-    SnookerState s = colours_from(ball::black);
-    const auto d = snooker(s, events_of({hit(0, ball::black), rail(ball::black)}));
+    const auto d = on_last_black({0, 0}, {hit(0, ball::black), rail(ball::black)});
     CHECK_FALSE(d.verdict.game_over);
     CHECK(d.next.player == 1);
   }
   SECTION("a tie on the last black: the black re-spotted, the opponent plays from the D") {
-    SnookerState s = colours_from(ball::black);
-    s.scores = {50, 57};
-    const auto d = snooker(s, events_of({hit(0, ball::black), drop(ball::black, 0)}));
+    const auto d = on_last_black({50, 57}, {hit(0, ball::black), drop(ball::black, 0)});
     CHECK_FALSE(d.verdict.game_over);
     CHECK(d.next.on_table[ball::black]);
     CHECK(d.verdict.respotted == std::vector<std::size_t>{ball::black});

@@ -140,7 +140,7 @@ class Shot {
       balls_.push_back(e);
     }
     queue_ = detail::OwnedEvents<Predicted>(balls_.size());
-    events_.reserve(4 * balls_.size() + 16);  // a break's events in one allocation, most random shots
+    events_.reserve(4 * balls_.size() + 16);  // most random shots' events (a few a ball) in one allocation
     reach_.resize(balls_.size());
     for (std::size_t i = 0; i < balls_.size(); ++i) {
       begin_phase(i);
