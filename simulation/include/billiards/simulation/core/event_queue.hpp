@@ -14,6 +14,7 @@
 #include <algorithm>
 #include <cstddef>
 #include <functional>
+#include <limits>
 #include <vector>
 
 namespace billiards::simulation::detail {
@@ -54,23 +55,29 @@ class EventHeap {
 };
 
 /// Predicted events kept by owner (a ball: its own events and the pairs it predicted), each owner's in a
-/// small min-heap ordered by `Later`, the earliest of all found by a scan of the owners' earliest.
-/// clear() drops an owner's events at once; other stale events are the caller's to skip, as with
-/// EventHeap.
+/// small min-heap ordered by `Later`, the earliest of all found by a scan of the owners' earliest times
+/// (kept in one array beside the heaps). `Later` must order by the events' `time` (a double) first and
+/// break ties as it likes. clear() drops an owner's events at once; other stale events are the caller's
+/// to skip, as with EventHeap.
 template <class Event, class Later = std::greater<>>
 class OwnedEvents {
  public:
   /// A queue for owners 0 … owners − 1.
-  explicit OwnedEvents(std::size_t owners = 0) : heaps_(owners) {}
+  explicit OwnedEvents(std::size_t owners = 0)
+      : heaps_(owners), times_(owners, std::numeric_limits<double>::infinity()) {}
   /// Whether no event is queued.
   [[nodiscard]] bool empty() const noexcept { return size_ == 0; }
   /// How many events are queued, stale ones included.
   [[nodiscard]] std::size_t size() const noexcept { return size_; }
-  /// The owner of the earliest event (the queue must not be empty).
+  /// The owner of the earliest event (the queue must not be empty): the least of the owners' earliest
+  /// times, read from one array; owners whose earliest events share that time compared in full.
   [[nodiscard]] std::size_t earliest() const {
+    double least = std::numeric_limits<double>::infinity();
+    for (const double t : times_) least = std::min(least, t);
     std::size_t best = heaps_.size();
     for (std::size_t k = 0; k < heaps_.size(); ++k) {
-      if (!heaps_[k].empty() && (best == heaps_.size() || Later{}(heaps_[best].front(), heaps_[k].front())))
+      if (times_[k] == least && !heaps_[k].empty() &&
+          (best == heaps_.size() || Later{}(heaps_[best].front(), heaps_[k].front())))
         best = k;
     }
     return best;
@@ -82,6 +89,7 @@ class OwnedEvents {
     std::vector<Event>& heap = heaps_[owner];
     heap.push_back(event);
     std::push_heap(heap.begin(), heap.end(), Later{});
+    times_[owner] = heap.front().time;
     ++size_;
   }
   /// Takes `owner`'s earliest event out and returns it (`owner` must have one).
@@ -90,6 +98,7 @@ class OwnedEvents {
     std::pop_heap(heap.begin(), heap.end(), Later{});
     Event event = heap.back();
     heap.pop_back();
+    times_[owner] = heap.empty() ? std::numeric_limits<double>::infinity() : heap.front().time;
     --size_;
     return event;
   }
@@ -97,10 +106,12 @@ class OwnedEvents {
   void clear(std::size_t owner) noexcept {
     size_ -= heaps_[owner].size();
     heaps_[owner].clear();
+    times_[owner] = std::numeric_limits<double>::infinity();
   }
 
  private:
   std::vector<std::vector<Event>> heaps_;
+  std::vector<double> times_;  // each owner's earliest event's time, +∞ for none
   std::size_t size_ = 0;
 };
 

@@ -63,6 +63,8 @@ struct ShotBall {
   shot::PressedPiece piece;                   ///< where phase.pressed: the pressed piece's rest
   std::optional<shot::PressedStart> next;     ///< the pressed piece it begins at its next change
   std::optional<Motion> unrecorded_from;      ///< a change of motion at its partner's event, to be recorded
+  billiards::detail::Slip<double> slip{Eigen::Vector3d::Zero(), 0};  ///< of `state` (a free phase's)
+  double spin_end = std::numeric_limits<double>::infinity();  ///< when the spin about ẑ of `state` stops
 };
 
 /// What a ball's predictions covered, kept apart from its state so that the pairs' first test reads
@@ -82,7 +84,8 @@ struct ShotPrediction {
   std::uint64_t version, other_version;  ///< the ball's (and the other ball's) version when predicted
   /// The earliest first; at the same time by kind, then by balls: a deterministic order.
   bool operator>(const ShotPrediction& o) const {
-    return std::tie(time, kind, ball, other) > std::tie(o.time, o.kind, o.ball, o.other);
+    if (time != o.time) return time > o.time;
+    return std::tie(kind, ball, other) > std::tie(o.kind, o.ball, o.other);
   }
 };
 
@@ -285,9 +288,13 @@ class Shot {
   [[nodiscard]] BallOnCloth<double> at(std::size_t i, double t) const {
     const Entry& e = balls_[i];
     if (e.pocketed || !(t > e.since)) return e.state;
+    const double tau = t - e.since;
     if (e.phase.pressed != shot::Pressed::none)
-      return shot::pressed_state(e.state, e.phase.acceleration, e.piece.spin_acceleration, t - e.since);
-    return evolve(e.state, physics_.cloth, t - e.since);
+      return shot::pressed_state(e.state, e.phase.acceleration, e.piece.spin_acceleration, tau);
+    // Within the phase and before the spin about ẑ stops: evolve's one step, from what the phase keeps.
+    if (tau < e.phase.duration && tau < e.spin_end)
+      return billiards::detail::advance(e.state, physics_.cloth, e.phase.motion, e.slip, tau, false, false);
+    return evolve(e.state, physics_.cloth, tau);
   }
   [[nodiscard]] double energy_at(double t) const {
     double sum = 0;
@@ -308,7 +315,12 @@ class Shot {
     } else if (e.pocketed) {
       e.phase = shot::Phase{};
     } else {
-      e.phase = known ? *known : shot::phase_of(e.state, physics_.cloth);
+      e.slip = billiards::detail::slip_of(e.state);
+      e.phase = known ? *known : shot::phase_of(e.state, physics_.cloth, e.slip);
+      const double spin = std::fabs(e.state.angular_velocity.z());
+      e.spin_end = spin > 0 ? kernels::spin::spin_time(spin, e.state.radius, physics_.cloth.spinning_friction,
+                                                       physics_.cloth.gravity)
+                            : std::numeric_limits<double>::infinity();
     }
     e.unrecorded_from.reset();
   }
