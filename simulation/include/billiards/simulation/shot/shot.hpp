@@ -407,7 +407,7 @@ class Shot {
     switch (p.kind) {
       case ShotEvent::Kind::transition:
         // Evolved by the phase's predicted duration from its start (now − since may round a sliver short).
-        e.state = shot::end_of_phase(e.state, from, e.phase.duration, physics_.cloth, next);
+        e.state = shot::end_of_phase(e.state, from, e.phase.duration, physics_.cloth, next, e.slip, e.spin_end);
         e.since = now_;
         break;
       case ShotEvent::Kind::ball: {
