@@ -317,10 +317,10 @@ class Shot {
     } else {
       e.slip = billiards::detail::slip_of(e.state);
       e.phase = known ? *known : shot::phase_of(e.state, physics_.cloth, e.slip);
-      const double spin = std::fabs(e.state.angular_velocity.z());
-      e.spin_end = spin > 0 ? kernels::spin::spin_time(spin, e.state.radius, physics_.cloth.spinning_friction,
-                                                       physics_.cloth.gravity)
-                            : std::numeric_limits<double>::infinity();
+      // evolve's end of the spin: the spinning phase's duration, where there is a spin
+      e.spin_end = e.state.angular_velocity.z() != 0
+                       ? billiards::detail::phase_duration(e.state, physics_.cloth, Motion::spinning, e.slip)
+                       : std::numeric_limits<double>::infinity();
     }
     e.unrecorded_from.reset();
   }
