@@ -323,27 +323,46 @@ int sign_changes(const EventPolynomial<Scalar>& p, Scalar lo, Scalar hi, Scalar*
 /// fused multiply-adds and Knuth's two-sum, summed beside it), as accurate as Horner's rule in twice the
 /// precision: its error is at most ε |p(t)| + γ_2d² Σ |c_k| t^k (γ_2d ≤ 2 d ε (1 + ε) for d ≤ 4).
 /// `sure` is set where that bound, with room for products that underflow, leaves the sign p's: the
-/// result exceeds twice the bound's last term. t ≥ 0 finite.
-template <typename Scalar>
-[[nodiscard]] Scalar compensated_value(const EventPolynomial<Scalar>& p, Scalar t, bool& sure) noexcept {
+/// result exceeds twice the bound's last term. t ≥ 0 finite. At several points at once (`Lanes`), each
+/// the same arithmetic as at one, their chains independent, so that they run side by side.
+template <typename Scalar, std::size_t Lanes>
+void compensated_values(const EventPolynomial<Scalar>& p, const std::array<Scalar, Lanes>& t,
+                        std::array<Scalar, Lanes>& result, std::array<bool, Lanes>& sure) noexcept {
   using std::fabs;
-  Scalar value = p.c[4], correction = 0, size = fabs(p.c[4]);
+  std::array<Scalar, Lanes> value, correction, size;
+  value.fill(p.c[4]);
+  correction.fill(Scalar(0));
+  size.fill(fabs(p.c[4]));
   for (int k = 3; k >= 0; --k) {
     const Scalar coefficient = p.c[static_cast<std::size_t>(k)];
-    const Scalar product = value * t, product_error = std::fma(value, t, -product);
-    const Scalar sum = product + coefficient, back = sum - product;
-    const Scalar sum_error = (product - (sum - back)) + (coefficient - back);
-    correction = correction * t + (product_error + sum_error);
-    value = sum;
-    size = size * t + fabs(coefficient);
+    for (std::size_t i = 0; i < Lanes; ++i) {
+      const Scalar product = value[i] * t[i], product_error = std::fma(value[i], t[i], -product);
+      const Scalar sum = product + coefficient, back = sum - product;
+      const Scalar sum_error = (product - (sum - back)) + (coefficient - back);
+      correction[i] = correction[i] * t[i] + (product_error + sum_error);
+      value[i] = sum;
+      size[i] = size[i] * t[i] + fabs(coefficient);
+    }
   }
-  const Scalar result = value + correction;
   constexpr Scalar unit = std::numeric_limits<Scalar>::epsilon() / 2;  // the unit roundoff
   constexpr Scalar gamma = Scalar(2 * 4) * unit * Scalar(1.001);
-  const Scalar power = std::max(Scalar(1), t * t * t * t);
-  const Scalar bound = 2 * gamma * gamma * size + Scalar(64) * std::numeric_limits<Scalar>::denorm_min() * power;
-  sure = std::isfinite(bound) && std::isfinite(result) && fabs(result) > bound;
-  return result;
+  for (std::size_t i = 0; i < Lanes; ++i) {
+    result[i] = value[i] + correction[i];
+    const Scalar power = std::max(Scalar(1), t[i] * t[i] * t[i] * t[i]);
+    const Scalar bound =
+        2 * gamma * gamma * size[i] + Scalar(64) * std::numeric_limits<Scalar>::denorm_min() * power;
+    sure[i] = std::isfinite(bound) && std::isfinite(result[i]) && fabs(result[i]) > bound;
+  }
+}
+
+/// compensated_values at one point.
+template <typename Scalar>
+[[nodiscard]] Scalar compensated_value(const EventPolynomial<Scalar>& p, Scalar t, bool& sure) noexcept {
+  std::array<Scalar, 1> result;
+  std::array<bool, 1> sure_of;
+  compensated_values<Scalar, 1>(p, {t}, result, sure_of);
+  sure = sure_of[0];
+  return result[0];
 }
 
 /// The sign of p(t) (−1, 0, +1) for the coefficients exactly as given: compensated_value's where it is
@@ -364,8 +383,9 @@ template <typename Scalar>
 /// steps from the guess with p's compensated value (as accurate as in twice the precision, so that they
 /// settle within a value or two of the root), kept inside the bracket of certified signs: a compensated
 /// value sure of its sign moves the bracket's end, and a step that would leave the bracket splits it
-/// instead. Then steps of 1, 2, 4, … values from the last towards the root until the sign turns, then
-/// bisection: every sign certified. 0 ≤ a < b; `slope` is p' up to a positive factor (derivative()).
+/// instead. Then the signs at the last step and its two neighbours, evaluated together; then steps of
+/// 1, 2, 4, … values from the last towards the root until the sign turns, then bisection: every sign
+/// certified, so that the result depends on p and the bracket's root alone, not on the guess. 0 ≤ a < b; `slope` is p' up to a positive factor (derivative()).
 template <typename Scalar>
 [[nodiscard]] Scalar placed_root(const EventPolynomial<Scalar>& p, const EventPolynomial<Scalar>& slope, Scalar a,
                                  Scalar b, Scalar guess) {
@@ -396,11 +416,26 @@ template <typename Scalar>
     if (sure && x > lo && x < hi) take(x, value > 0 ? 1 : -1);
     const Scalar gradient = evaluate(slope, x);
     const Scalar next = gradient != 0 ? x - value / gradient : split(lo, hi);
-    if (gradient != 0 && std::fabs(next - x) <= 2 * (next_up(x) - x)) {
-      x = next;  // settled
+    // A step below the square root of the type's precision (relative to x), or within two values of it,
+    // lands within rounding of the root (Newton's steps square the error): settled.
+    constexpr Scalar settled = std::numeric_limits<Scalar>::digits > 24 ? Scalar(0x1p-26) : Scalar(0x1p-12);
+    if (gradient != 0 && (std::fabs(next - x) <= settled * x || std::fabs(next - x) <= 2 * (next_up(x) - x))) {
+      x = next;
       break;
     }
     x = next > lo && next < hi ? next : split(lo, hi);
+  }
+  // Settled within a value or two of the root, as a rule: p's compensated values at the last step and at
+  // its two neighbours, together, move the ends where they are sure (at most one sign change lies in the
+  // bracket, so that those above 0 lie before those below), often onto two neighbours at once.
+  if (bits(hi) - bits(lo) > 2 && x > lo && x < hi) {
+    const std::array<Scalar, 3> points{value_of(bits(x) - 1), x, value_of(bits(x) + 1)};
+    std::array<Scalar, 3> values;
+    std::array<bool, 3> sure;
+    compensated_values(p, points, values, sure);
+    for (std::size_t i = 0; i < 3; ++i) {
+      if (sure[i] && points[i] > lo && points[i] < hi) take(points[i], values[i] > 0 ? 1 : -1);
+    }
   }
   // From the last step (an end where it settled at or beyond one), steps towards the root.
   const bool above = x <= lo || (x < hi && probe(x));
@@ -445,16 +480,18 @@ template <typename Scalar>
   return 0;
 }
 
-/// A bracket of a root: p above 0 at `low`, below 0 at `high`.
+/// A bracket of a root: p above 0 at `low`, below 0 at `high`; `estimate`, in [low, high], the search's
+/// nearest point to the root.
 template <typename Scalar>
 struct Bracket {
-  Scalar low, high, at_low, at_high;
+  Scalar low, high, at_low, at_high, estimate;
 };
 
 /// A bracket of the first root of p in (0, horizon), p convex there and falling at 0 (p(0) > 0, p'(0)
 /// < 0): Newton's steps from 0, which on a convex falling p stay below the first root and rise to it,
-/// until p is within its rounding of 0; the last step above that is the bracket's lower end, and a probe
-/// past the root (twice the rounding's reach, doubled while p is not below its rounding) its upper end.
+/// until p is within its rounding of 0; the last step above that is the bracket's lower end, a probe
+/// past the root (twice the rounding's reach, doubled while p is not below its rounding) its upper end,
+/// and the step that came within rounding of 0 its estimate.
 /// Between them p crosses 0 once. Empty where the steps pass p's minimum or the horizon, stall, or the
 /// probe finds no certain sign: the general search decides.
 template <typename Scalar>
@@ -470,7 +507,7 @@ template <typename Scalar>
     const Scalar guess = 2 * p.c[0] / (-p.c[1] + std::sqrt(discriminant));
     if (guess > 0 && guess < horizon) {
       const Scalar at_guess = evaluate(p, guess), error = evaluation_error(p, guess);
-      if (at_guess < -2 * error) return Bracket<Scalar>{Scalar(0), guess, p.c[0], at_guess};
+      if (at_guess < -2 * error) return Bracket<Scalar>{Scalar(0), guess, p.c[0], at_guess, guess};
       if (at_guess > 2 * error && evaluate(slope, guess) < 0) {
         t = guess;
         value = at_guess;
@@ -498,7 +535,7 @@ template <typename Scalar>
       at_high = evaluate(p, high);
     }
     if (!(at_high < -2 * evaluation_error(p, high))) return std::nullopt;
-    return Bracket<Scalar>{t, high, value, at_high};
+    return Bracket<Scalar>{t, high, value, at_high, next};
   }
   return std::nullopt;
 }
@@ -620,7 +657,7 @@ template <typename Scalar, std::size_t N>
         const Scalar high = bracket->high;
         if (detail::evaluation_error(p, high) >
             8 * (detail::next_up(high) - high) * std::fabs(detail::evaluate(slope, high))) {
-          const Scalar t = detail::placed_root(p, slope, bracket->low, high, bracket->low > 0 ? bracket->low : high);
+          const Scalar t = detail::placed_root(p, slope, bracket->low, high, bracket->estimate);
           return t > 0 ? t : std::numeric_limits<Scalar>::denorm_min();
         }
         return root_between(bracket->low, high, bracket->at_low, bracket->at_high);

@@ -27,6 +27,7 @@
 #include <Eigen/Core>
 
 #include <algorithm>
+#include <array>
 #include <bit>
 #include <cmath>
 #include <cstdint>
@@ -67,13 +68,59 @@ struct ShotBall {
   double spin_end = std::numeric_limits<double>::infinity();  ///< when the spin about ẑ of `state` stops
 };
 
-/// What a ball's predictions covered, kept apart from its state so that the pairs' first test reads
-/// these alone, a few bytes a ball.
-struct ShotReach {
-  shot::Box box;                                         ///< the range of its centre from its last prediction to end
-  double end = std::numeric_limits<double>::infinity();  ///< its predictions' end (absolute time)
-  bool candidate = false;  ///< in play, and moving (a ball at rest meets only moving ones)
-  bool moving = false;     ///< moving
+/// What each ball's predictions covered, kept apart from the balls' states, a field at a time (one
+/// array each), so that the pairs' first test reads these alone and runs over many balls at once: the
+/// range of its centre from its last prediction to their end (a shot::Box), their end (absolute time),
+/// whether it is a candidate for a pair (in play) and whether it moves (a ball at rest meets only
+/// moving ones).
+class ShotReaches {
+ public:
+  // Eight entries at a time from any first one: the arrays end with seven entries that are no
+  // candidates.
+  explicit ShotReaches(std::size_t balls = 0)
+      : x_low_(padded(balls), 0), x_high_(padded(balls), 0), y_low_(padded(balls), 0), y_high_(padded(balls), 0),
+        end_(padded(balls), std::numeric_limits<double>::infinity()), candidate_(padded(balls), 0),
+        moving_(padded(balls), 0) {}
+  void assign(std::size_t i, const shot::Box& box, double end, bool candidate, bool moving) {
+    x_low_[i] = box.x_low;
+    x_high_[i] = box.x_high;
+    y_low_[i] = box.y_low;
+    y_high_[i] = box.y_high;
+    end_[i] = end;
+    candidate_[i] = candidate;
+    moving_[i] = moving;
+  }
+  [[nodiscard]] shot::Box box(std::size_t i) const { return {x_low_[i], x_high_[i], y_low_[i], y_high_[i]}; }
+  [[nodiscard]] double end(std::size_t i) const { return end_[i]; }
+  /// A bit for each ball from `base` on, `count` (at most 64, to the last ball) of them: whether its box overlaps
+  /// `reach`, it is a candidate, it moves or `moving` does, and its predictions reach `now` —
+  /// shot::Box::overlaps and the rest, without a branch, eight balls at a time.
+  [[nodiscard]] std::uint64_t near(const shot::Box& reach, bool moving, double now, std::size_t base,
+                                   std::size_t count) const {
+    const std::uint8_t any = moving ? 1 : 0;
+    std::uint64_t bits = 0;
+    for (std::size_t w = 0; 8 * w < count; ++w) {
+      std::array<std::uint8_t, 8> flags;
+      for (std::size_t b = 0; b < 8; ++b) {
+        const std::size_t j = base + 8 * w + b;
+        const double x_low = x_low_[j], x_high = x_high_[j], y_low = y_low_[j], y_high = y_high_[j], end = end_[j];
+        const std::uint8_t candidate = candidate_[j], moves = moving_[j];
+        flags[b] = static_cast<std::uint8_t>((x_low <= reach.x_high) & (reach.x_low <= x_high) &
+                                             (y_low <= reach.y_high) & (reach.y_low <= y_high) & (end >= now) &
+                                             candidate & (any | moves));
+      }
+      // The eight flags (0 or 1, a byte each) as one word, little end first; the multiply gathers their
+      // low bits into its top byte (no carries: each of its bits is the sum of one term).
+      const std::uint64_t eight = std::bit_cast<std::uint64_t>(flags);
+      bits |= ((eight * 0x0102040810204080ull) >> 56) << (8 * w);
+    }
+    return bits;
+  }
+
+ private:
+  static std::size_t padded(std::size_t balls) { return balls + 7; }
+  std::vector<double> x_low_, x_high_, y_low_, y_high_, end_;
+  std::vector<std::uint8_t> candidate_, moving_;
 };
 
 /// A predicted event of a shot, stale where a ball's version has moved on since.
@@ -144,7 +191,7 @@ class Shot {
     }
     queue_ = detail::OwnedEvents<Predicted>(balls_.size());
     events_.reserve(4 * balls_.size() + 16);  // most random shots' events (a few a ball) in one allocation
-    reach_.resize(balls_.size());
+    reach_ = detail::ShotReaches(balls_.size());
     for (std::size_t i = 0; i < balls_.size(); ++i) {
       begin_phase(i);
       keyframe(i);
@@ -476,7 +523,7 @@ class Shot {
   std::vector<Jaw> jaws_;
   std::vector<Pocket> pockets_;
   std::vector<Entry> balls_;
-  std::vector<detail::ShotReach> reach_;  // balls_[i]'s in reach_[i]
+  detail::ShotReaches reach_;
   shot::History history_;
   std::vector<ShotEvent> events_;
   detail::OwnedEvents<Predicted> queue_;
@@ -496,9 +543,8 @@ class Shot {
 inline void Shot::predict(std::size_t i, std::size_t first_other, std::size_t skip,
                         detail::ExcludedContact excluded) {
   Entry& e = balls_[i];
-  detail::ShotReach& covered = reach_[i];
   if (e.pocketed) {
-    covered = {};  // no longer a candidate for any pair
+    reach_.assign(i, {}, std::numeric_limits<double>::infinity(), false, false);  // no longer a candidate
     return;
   }
   double horizon = remaining(i);
@@ -515,27 +561,27 @@ inline void Shot::predict(std::size_t i, std::size_t first_other, std::size_t sk
     first_own = std::min(first_own, now_ + t);
   };
   // The box of the centre's path up to the horizon, made again where a contact brings the horizon in.
-  covered.box = shot::path_box(me, horizon, e.phase.moving, R);
+  shot::Box box = shot::path_box(me, horizon, e.phase.moving, R);
   double boxed = horizon;
   const auto box_to_horizon = [&] {
-    if (horizon != boxed) covered.box = shot::path_box(me, horizon, e.phase.moving, R);
+    if (horizon != boxed) box = shot::path_box(me, horizon, e.phase.moving, R);
     boxed = horizon;
   };
   if (e.phase.moving) {
     // A cushion whose line the centre's box over the whole horizon keeps farther than R from is passed
     // over: its polynomial stays above 0 there.
-    const shot::Box reach = covered.box;
+    const shot::Box reach = box;
     for (std::size_t k = 0; k < cushions_.size(); ++k) {
       if (shot::beyond_reach(reach, cushions_[k], R)) continue;
       found(shot::cushion_contact(me, cushions_[k], R, horizon), ShotEvent::Kind::cushion, k);
     }
     box_to_horizon();
     for (std::size_t k = 0; k < jaws_.size(); ++k) {
-      if (!covered.box.near(jaws_[k].centre, R + jaws_[k].radius)) continue;
+      if (!box.near(jaws_[k].centre, R + jaws_[k].radius)) continue;
       found(shot::jaw_contact(me, jaws_[k], R, horizon), ShotEvent::Kind::jaw, k);
     }
     for (std::size_t k = 0; k < pockets_.size(); ++k) {
-      if (!covered.box.near(pockets_[k].centre, pockets_[k].radius)) continue;
+      if (!box.near(pockets_[k].centre, pockets_[k].radius)) continue;
       found(shot::pocket_entry(me, pockets_[k], horizon), ShotEvent::Kind::pocket, k);
     }
   }
@@ -544,14 +590,13 @@ inline void Shot::predict(std::size_t i, std::size_t first_other, std::size_t sk
   if (std::isfinite(e.phase.duration) && !(first_own <= now_ + e.phase.duration))
     push(now_ + e.phase.duration, ShotEvent::Kind::transition, i, i);
   box_to_horizon();
-  covered.end = e.phase.moving ? now_ + horizon : std::numeric_limits<double>::infinity();
-  covered.candidate = true;
-  covered.moving = e.phase.moving;
+  reach_.assign(i, box, e.phase.moving ? now_ + horizon : std::numeric_limits<double>::infinity(), true,
+                e.phase.moving);
   predict_pairs(i, first_other, skip, excluded);
 }
 
 // Ball i's contacts with the balls from `first_other` on but `skip`, until the earlier of the two's
-// predictions' ends (ShotReach::end, see predict).
+// predictions' ends (ShotReaches::end, see predict).
 inline void Shot::predict_pairs(std::size_t i, std::size_t first_other, std::size_t skip,
                                 detail::ExcludedContact excluded) {
   const Entry& e = balls_[i];
@@ -559,27 +604,22 @@ inline void Shot::predict_pairs(std::size_t i, std::size_t first_other, std::siz
   const Eigen::Vector2d r(e.state.position.x(), e.state.position.y()),
       v(e.state.velocity.x(), e.state.velocity.y());
   const std::size_t partner = e.phase.pressed == shot::Pressed::ball ? e.piece.partner : i;  // moving as one
-  const shot::Box reach = reach_[i].box.widened(2 * R);
-  const double reach_end = reach_[i].end;
+  const shot::Box reach = reach_.box(i).widened(2 * R);
+  const double reach_end = reach_.end(i);
   const bool moving = e.phase.moving;
   // 64 balls at a time: a mask of those whose boxes come within reach, in play, moving where this
   // one is not, predicted until now at least (else they change at once), computed without a branch;
   // then this one, the one skipped and the one it moves with taken out.
   for (std::size_t base = first_other; base < balls_.size(); base += 64) {
     const std::size_t count = std::min<std::size_t>(64, balls_.size() - base);
-    std::uint64_t near = 0;
-    for (std::size_t k = 0; k < count; ++k) {
-      const detail::ShotReach& o = reach_[base + k];
-      near |= static_cast<std::uint64_t>(reach.overlaps(o.box) & o.candidate & (moving | o.moving) & (o.end >= now_))
-              << k;
-    }
+    std::uint64_t near = reach_.near(reach, moving, now_, base, count);
     for (const std::size_t out : {i, skip, partner}) {
       if (out >= base && out - base < count) near &= ~(std::uint64_t{1} << (out - base));
     }
     for (; near != 0; near &= near - 1) {
       const std::size_t j = base + static_cast<std::size_t>(std::countr_zero(near));
       const Entry& o = balls_[j];
-      const double end = std::min(reach_end, reach_[j].end);
+      const double end = std::min(reach_end, reach_.end(j));
       const auto [position, velocity] = shot::centre_and_velocity(o.state, o.phase, now_ - o.since);
       const shot::Path relative{position - r, velocity - v, o.phase.acceleration - e.phase.acceleration};
       const double pair_horizon = std::isfinite(end) ? end - now_ : std::numeric_limits<double>::max();
