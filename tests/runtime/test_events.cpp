@@ -260,6 +260,40 @@ TEMPLATE_TEST_CASE("sign_change: a quadratic's root closed on in closed form kee
   CHECK(checked > 1500);
 }
 
+TEMPLATE_TEST_CASE("earliest_contact: a ball approaching a cushion has its root placed exactly from the closed form",
+                   "[events]", float, double) {
+  using S = TestType;
+  // Balls decelerating toward a cushion, or pushed towards it, from 0.05 to 2 m away at 0.5 to 6 m/s:
+  // where the closed form lands within a value of the root, earliest_contact returns the root placed
+  // exactly — the last value of the type before the root of the coefficients exactly as given, as exact
+  // arithmetic (dyadic rationals) finds it — and it does so for almost every such ball.
+  std::mt19937_64 random(11);
+  std::uniform_real_distribution<double> unit(0, 1);
+  int contacts = 0, placed = 0;
+  for (int k = 0; k < 4000; ++k) {
+    const S radius = S(0.028575), gap = S(0.05 + 2 * unit(random)), speed = S(-0.5 - 5.5 * unit(random));
+    const S acceleration = S(k % 4 == 0 ? -0.5 * unit(random) : 0.1 + 2 * unit(random));
+    const S horizon = S(0.1 + 4 * unit(random));
+    const std::array<S, 3> c = billiards::cushion_polynomial(gap, speed, acceleration, radius);
+    const std::optional<S> t = billiards::earliest_contact(c, horizon);
+    const billiards::detail::EventPolynomial<S> p{{c[0], c[1], c[2], 0, 0}, 2};
+    const S fast = billiards::detail::placed_quadratic_root(p, horizon);
+    if (!t) {
+      CHECK(std::isnan(fast));
+      continue;
+    }
+    ++contacts;
+    if (std::isnan(fast)) continue;
+    ++placed;
+    CHECK(*t == fast);
+    const std::array<S, 5> exact{c[0], c[1], c[2], 0, 0};
+    CHECK(billiards::detail::exact::sign_of_polynomial(exact, *t) > 0);
+    CHECK(billiards::detail::exact::sign_of_polynomial(exact, std::nextafter(*t, horizon)) < 0);
+  }
+  CHECK(contacts > 1000);
+  CHECK(placed > contacts * 9 / 10);
+}
+
 TEST_CASE("earliest_contact: a quadratic whose rounding band spans many values of the type ends at once",
           "[events]") {
   // p = 2 d − 1.35e5 t² with d the smallest subnormal (found by the fuzzer): its root, near 2^-546, lies

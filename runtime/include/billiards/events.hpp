@@ -448,6 +448,35 @@ template <typename Scalar>
   return at_hi == 0 ? hi : lo;
 }
 
+/// The first root of a quadratic p falling at 0 (p(0) > 0, p'(0) < 0: a ball approaching a cushion) placed
+/// exactly where its closed form, 2 c0/(√(c1² − 4 c0 c2) − c1) (without cancellation: −c1 > 0), lands
+/// within a value of the type of it: the value x in (0, horizon) beside it where p's compensated values
+/// at x and at the next value up are sure of their signs, above 0 and below it. A quadratic falling at 0
+/// changes so between two neighbours only at its first root, so that x is what placed_root returns. NaN
+/// where that is not shown (no real root as rounded, a root at or beyond the horizon, signs not sure,
+/// the closed form more than a value off): the general search decides.
+template <typename Scalar>
+[[nodiscard]] Scalar placed_quadratic_root(const EventPolynomial<Scalar>& p, Scalar horizon) noexcept {
+  constexpr Scalar unknown = std::numeric_limits<Scalar>::quiet_NaN();
+  const Scalar c0 = p.c[0], c1 = p.c[1], c2 = p.c[2];
+  const Scalar discriminant = c1 * c1 - 4 * c0 * c2;
+  if (!(discriminant > 0 && discriminant <= std::numeric_limits<Scalar>::max())) return unknown;
+  const Scalar root = 2 * c0 / (std::sqrt(discriminant) - c1);
+  if (!(root > 0 && root < horizon)) return unknown;
+  using Bits = kernels::BitsOf<Scalar>;
+  const Bits bits = std::bit_cast<Bits>(root);
+  const std::array<Scalar, 3> points{std::bit_cast<Scalar>(static_cast<Bits>(bits - 1)), root,
+                                     std::bit_cast<Scalar>(static_cast<Bits>(bits + 1))};
+  std::array<Scalar, 3> values;
+  std::array<bool, 3> sure;
+  compensated_values(p, points, values, sure);
+  for (std::size_t i = 0; i < 2; ++i) {
+    if (sure[i] && sure[i + 1] && values[i] > 0 && values[i + 1] < 0 && points[i] > 0 && points[i + 1] <= horizon)
+      return points[i];
+  }
+  return unknown;
+}
+
 /// Whether the Bernstein coefficients `b` (degree 4) of a polynomial on an interval all exceed `margin`,
 /// or those of its halves (de Casteljau's subdivision), `depth` times over, do: each bounds the polynomial
 /// from below on its interval. An end at or below the margin fails at once.
@@ -580,8 +609,9 @@ template <typename Scalar>
 ///   horizon farther from 0 than twice its rounding error, 2 d ε Σ |c_k| t^k, detail::evaluation_error),
 ///   the search runs in the type; where rounding leaves it open, it is decided in exact arithmetic
 ///   (detail::exact: Sturm's sequence with integer-mantissa coefficients), which returns the largest
-///   value of the type at or before the exact root. The time returned is where the polynomial is still
-///   ≥ 0 as evaluated: never after the bodies start to overlap by more than rounding can tell.
+///   value of the type at or before the exact root. A quadratic falling at 0 whose root in closed form
+///   lands within a value of the type of the exact one has it placed exactly (detail::placed_quadratic_root).
+///   The time returned is never after the bodies start to overlap by more than rounding can tell.
 /// - The polynomial's degree is what its coefficients make it: a zero leading coefficient lowers it, and
 ///   nothing divides by one.
 ///
@@ -619,6 +649,11 @@ template <typename Scalar, std::size_t N>
     if (lowest > Scalar(4 * p.degree + 4) * std::numeric_limits<Scalar>::epsilon() * size) return std::nullopt;
   }
   if (!(horizon > 0)) return std::nullopt;
+  if (p.degree == 2 && p.c[0] > 0 && p.c[1] < 0) {
+    // A quadratic falling at 0: its first root from the closed form, placed exactly where that is shown
+    // at once.
+    if (const Scalar t = detail::placed_quadratic_root(p, horizon); !std::isnan(t)) return t;
+  }
   const detail::EventPolynomial<Scalar> slope = detail::derivative(p);
   // The root of p in (a, b) where p falls from left > 0 to right < 0, found by the type's search; one the
   // type places only to more than 16 ulps (the rounding of p over its slope there, as at a near graze
@@ -632,6 +667,8 @@ template <typename Scalar, std::size_t N>
     return t > 0 ? t : std::numeric_limits<Scalar>::denorm_min();
   };
   if (p.c[0] > 0 && p.degree >= 3) {
+    // Apart now and, by its Bernstein coefficients, all the way to the horizon: no contact to search for.
+    if (detail::stays_above(p, horizon)) return std::nullopt;
     // Convex and falling at 0 (up to the horizon, or up to a point past the first root): Newton's steps
     // from 0 bracket the first root without the turning points. Concave and not rising at 0, below 0 at the horizon beyond rounding: it falls throughout, and its
     // one root lies in (0, horizon).
@@ -667,8 +704,6 @@ template <typename Scalar, std::size_t N>
       if (at_horizon < -2 * detail::evaluation_error(p, horizon))
         return root_between(Scalar(0), horizon, p.c[0], at_horizon);
     }
-    // Apart now and, by its Bernstein coefficients, all the way to the horizon: no contact to search for.
-    if (detail::stays_above(p, horizon)) return std::nullopt;
   }
   // The turning points of p in (0, horizon) split it into monotone pieces; walk them in order.
   std::array<Scalar, 6> breaks{};
