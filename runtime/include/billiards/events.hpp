@@ -385,7 +385,8 @@ template <typename Scalar>
 /// value sure of its sign moves the bracket's end, and a step that would leave the bracket splits it
 /// instead. Then the signs at the last step and its two neighbours, evaluated together; then steps of
 /// 1, 2, 4, … values from the last towards the root until the sign turns, then bisection: every sign
-/// certified, so that the result depends on p and the bracket's root alone, not on the guess. 0 ≤ a < b; `slope` is p' up to a positive factor (derivative()).
+/// certified, so that the result depends on p and the bracket's root alone, not on the guess. 0 ≤ a < b;
+/// `slope` is p' up to a positive factor (derivative()).
 template <typename Scalar>
 [[nodiscard]] Scalar placed_root(const EventPolynomial<Scalar>& p, const EventPolynomial<Scalar>& slope, Scalar a,
                                  Scalar b, Scalar guess) {

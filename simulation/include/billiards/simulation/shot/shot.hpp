@@ -92,8 +92,8 @@ class ShotReaches {
   }
   [[nodiscard]] shot::Box box(std::size_t i) const { return {x_low_[i], x_high_[i], y_low_[i], y_high_[i]}; }
   [[nodiscard]] double end(std::size_t i) const { return end_[i]; }
-  /// A bit for each ball from `base` on, `count` (at most 64, to the last ball) of them: whether its box overlaps
-  /// `reach`, it is a candidate, it moves or `moving` does, and its predictions reach `now` —
+  /// A bit for each ball from `base` on, `count` (at most 64, to the last ball) of them: whether its box
+  /// overlaps `reach`, it is a candidate, it moves or `moving` does, and its predictions reach `now` —
   /// shot::Box::overlaps and the rest, without a branch, eight balls at a time.
   [[nodiscard]] std::uint64_t near(const shot::Box& reach, bool moving, double now, std::size_t base,
                                    std::size_t count) const {
