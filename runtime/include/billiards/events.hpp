@@ -449,21 +449,27 @@ template <typename Scalar>
   return at_hi == 0 ? hi : lo;
 }
 
+/// The first positive root of c0 + c1 t + c2 t² falling at 0 (c0 > 0, c1 < 0) in closed form,
+/// 2 c0/(√(c1² − 4 c0 c2) − c1), without cancellation (−c1 > 0); NaN where the discriminant, as rounded,
+/// is negative (or not a number).
+template <typename Scalar>
+[[nodiscard]] Scalar falling_quadratic_root(Scalar c0, Scalar c1, Scalar c2) noexcept {
+  const Scalar discriminant = c1 * c1 - 4 * c0 * c2;
+  return discriminant >= 0 ? 2 * c0 / (std::sqrt(discriminant) - c1) : std::numeric_limits<Scalar>::quiet_NaN();
+}
+
 /// The first root of a quadratic p falling at 0 (p(0) > 0, p'(0) < 0: a ball approaching a cushion) placed
-/// exactly where its closed form, 2 c0/(√(c1² − 4 c0 c2) − c1) (without cancellation: −c1 > 0), lands
-/// within a value of the type of it: the value x in (0, horizon) beside it where p's compensated values
-/// at x and at the next value up are sure of their signs, above 0 and below it. A quadratic falling at 0
+/// exactly where its closed form (falling_quadratic_root) lands within a value of the type of it: the
+/// value x in (0, horizon) beside it where p's compensated values at x and at the next value up are sure
+/// of their signs, above 0 and below it. A quadratic falling at 0
 /// changes so between two neighbours only at its first root, so that x is what placed_root returns. NaN
 /// where that is not shown (no real root as rounded, a root at or beyond the horizon, signs not sure,
 /// the closed form more than a value off): the general search decides.
 template <typename Scalar>
 [[nodiscard]] Scalar placed_quadratic_root(const EventPolynomial<Scalar>& p, Scalar horizon) noexcept {
   constexpr Scalar unknown = std::numeric_limits<Scalar>::quiet_NaN();
-  const Scalar c0 = p.c[0], c1 = p.c[1], c2 = p.c[2];
-  const Scalar discriminant = c1 * c1 - 4 * c0 * c2;
-  if (!(discriminant > 0 && discriminant <= std::numeric_limits<Scalar>::max())) return unknown;
-  const Scalar root = 2 * c0 / (std::sqrt(discriminant) - c1);
-  if (!(root > 0 && root < horizon)) return unknown;
+  const Scalar root = falling_quadratic_root(p.c[0], p.c[1], p.c[2]);
+  if (!(root > 0 && root < horizon)) return unknown;  // also NaN, and 0 from an infinite discriminant
   using Bits = kernels::BitsOf<Scalar>;
   const Bits bits = std::bit_cast<Bits>(root);
   const std::array<Scalar, 3> points{std::bit_cast<Scalar>(static_cast<Bits>(bits - 1)), root,
@@ -532,9 +538,8 @@ template <typename Scalar>
   // A start nearer the root: the smaller root of the Taylor quadratic c0 + c1 t + c2 t², where p is
   // above 0 there beyond rounding and still falling (on a convex p it then falls all the way from 0, and
   // stays above 0 before it); below 0 there beyond rounding, it brackets the root with 0 at once.
-  const Scalar discriminant = p.c[1] * p.c[1] - 4 * p.c[0] * p.c[2];
-  if (discriminant >= 0 && p.c[2] > 0) {
-    const Scalar guess = 2 * p.c[0] / (-p.c[1] + std::sqrt(discriminant));
+  if (p.c[2] > 0) {
+    const Scalar guess = falling_quadratic_root(p.c[0], p.c[1], p.c[2]);
     if (guess > 0 && guess < horizon) {
       const Scalar at_guess = evaluate(p, guess), error = evaluation_error(p, guess);
       if (at_guess < -2 * error) return Bracket<Scalar>{Scalar(0), guess, p.c[0], at_guess, guess};
@@ -678,9 +683,8 @@ template <typename Scalar, std::size_t N>
     if (curvature <= 0 && p.c[1] < 0) {
       // Not shown convex all the way to the horizon (a long window, over which the relative motion turns):
       // convex up to twice its Taylor quadratic's root is enough, where the first root lies before that.
-      const Scalar discriminant = p.c[1] * p.c[1] - 4 * p.c[0] * p.c[2];
-      if (discriminant >= 0 && p.c[2] > 0) {
-        const Scalar near_end = 4 * p.c[0] / (-p.c[1] + std::sqrt(discriminant));
+      if (p.c[2] > 0) {
+        const Scalar near_end = 2 * detail::falling_quadratic_root(p.c[0], p.c[1], p.c[2]);
         if (near_end < horizon && detail::curvature_on(p, near_end) > 0) {
           convex_end = near_end;
           curvature = 1;

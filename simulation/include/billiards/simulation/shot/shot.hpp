@@ -93,8 +93,8 @@ class ShotReaches {
   [[nodiscard]] shot::Box box(std::size_t i) const { return {x_low_[i], x_high_[i], y_low_[i], y_high_[i]}; }
   [[nodiscard]] double end(std::size_t i) const { return end_[i]; }
   /// A bit for each ball from `base` on, `count` (at most 64, to the last ball) of them: whether its box
-  /// overlaps `reach`, it is a candidate, it moves or `moving` does, and its predictions reach `now` —
-  /// shot::Box::overlaps and the rest, without a branch, eight balls at a time.
+  /// overlaps `reach` (shot::Box::overlaps), it is a candidate, it moves or `moving` does, and its
+  /// predictions reach `now`, without a branch, eight balls at a time.
   [[nodiscard]] std::uint64_t near(const shot::Box& reach, bool moving, double now, std::size_t base,
                                    std::size_t count) const {
     const std::uint8_t any = moving ? 1 : 0;
@@ -103,11 +103,10 @@ class ShotReaches {
       std::array<std::uint8_t, 8> flags;
       for (std::size_t b = 0; b < 8; ++b) {
         const std::size_t j = base + 8 * w + b;
-        const double x_low = x_low_[j], x_high = x_high_[j], y_low = y_low_[j], y_high = y_high_[j], end = end_[j];
+        const bool overlaps = reach.overlaps({x_low_[j], x_high_[j], y_low_[j], y_high_[j]});
+        const bool reaches_now = end_[j] >= now;
         const std::uint8_t candidate = candidate_[j], moves = moving_[j];
-        flags[b] = static_cast<std::uint8_t>((x_low <= reach.x_high) & (reach.x_low <= x_high) &
-                                             (y_low <= reach.y_high) & (reach.y_low <= y_high) & (end >= now) &
-                                             candidate & (any | moves));
+        flags[b] = static_cast<std::uint8_t>(overlaps & reaches_now & candidate & (any | moves));
       }
       // The eight flags (0 or 1, a byte each) as one word, little end first; the multiply gathers their
       // low bits into its top byte (no carries: each of its bits is the sum of one term).
