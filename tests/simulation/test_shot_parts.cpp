@@ -343,3 +343,29 @@ TEST_CASE("History: the balls at any time from their states at their events", "[
   CHECK(history.at(2, cloth)[0].position.x() == 3);   // at a keyframe: its state
   CHECK(history.at(-1, cloth)[0].position.x() == 1);  // before the first: the first
 }
+
+TEST_CASE("History: each ball's keyframes apart from the others' added between them", "[simulation][shot][history]") {
+  const billiards::Cloth<double> cloth{0.2, 0.01, 0.0127, 9.81};
+  shot::History history;
+  // Three balls at rest, each moved to a new place at its own events, their keyframes interleaved.
+  for (std::size_t b = 0; b < 3; ++b) history.add(b, 0, ball({0, 0, 0}, {0, 0, 0}, {1.0 + b, 0.5, R}), false);
+  history.add(1, 1, ball({0, 0, 0}, {0, 0, 0}, {2, 0.7, R}), false);
+  history.add(0, 2, ball({0, 0, 0}, {0, 0, 0}, {1, 0.9, R}), false);
+  history.add(1, 2, ball({0, 0, 0}, {0, 0, 0}, {2, 1.1, R}), true);
+  history.add(1, 3, ball({0, 0, 0}, {0, 0, 0}, {2, 1.3, R}), true);
+  const auto y = [&](double t) {
+    std::vector<double> out;
+    for (const PoolBall& b : history.at(t, cloth)) out.push_back(b.position.y());
+    return out;
+  };
+  CHECK(y(-1) == std::vector<double>{0.5, 0.5, 0.5});
+  CHECK(y(0.5) == std::vector<double>{0.5, 0.5, 0.5});
+  CHECK(y(1) == std::vector<double>{0.5, 0.7, 0.5});
+  CHECK(y(2) == std::vector<double>{0.9, 1.1, 0.5});  // at two keyframes' time: the states they hold
+  CHECK(y(10) == std::vector<double>{0.9, 1.3, 0.5});
+  CHECK(history.at(2.5, cloth)[1].pocketed);
+  CHECK_FALSE(history.at(1.5, cloth)[1].pocketed);
+  const std::vector<PoolBall> placed = history.first();
+  REQUIRE(placed.size() == 3);
+  for (std::size_t b = 0; b < 3; ++b) CHECK(placed[b].position.x() == 1.0 + b);
+}

@@ -58,13 +58,17 @@ class EventHeap {
 /// small min-heap ordered by `Later`, the earliest of all found by a scan of the owners' earliest times
 /// (kept in one array beside the heaps). `Later` must order by the events' `time` (a double) first and
 /// break ties as it likes. clear() drops an owner's events at once; other stale events are the caller's
-/// to skip, as with EventHeap.
+/// to skip, as with EventHeap. The heaps share one array, a run of equal room for each owner, that
+/// doubles every owner's room when one's is full.
 template <class Event, class Later = std::greater<>>
 class OwnedEvents {
  public:
-  /// A queue for owners 0 … owners − 1.
-  explicit OwnedEvents(std::size_t owners = 0)
-      : heaps_(owners), times_(owners, std::numeric_limits<double>::infinity()) {}
+  /// A queue for owners 0 … owners − 1, with room for `room` events each before its array grows.
+  explicit OwnedEvents(std::size_t owners = 0, std::size_t room = 16)
+      : room_(std::max<std::size_t>(room, 1)),
+        events_(owners * room_),
+        sizes_(owners, 0),
+        times_(owners, std::numeric_limits<double>::infinity()) {}
   /// Whether no event is queued.
   [[nodiscard]] bool empty() const noexcept { return size_ == 0; }
   /// How many events are queued, stale ones included.
@@ -74,44 +78,54 @@ class OwnedEvents {
   [[nodiscard]] std::size_t earliest() const {
     double least = std::numeric_limits<double>::infinity();
     for (const double t : times_) least = std::min(least, t);
-    std::size_t best = heaps_.size();
-    for (std::size_t k = 0; k < heaps_.size(); ++k) {
-      if (times_[k] == least && !heaps_[k].empty() &&
-          (best == heaps_.size() || Later{}(heaps_[best].front(), heaps_[k].front())))
-        best = k;
+    const std::size_t owners = sizes_.size();
+    std::size_t best = owners;
+    for (std::size_t k = 0; k < owners; ++k) {
+      if (times_[k] == least && sizes_[k] != 0 && (best == owners || Later{}(top(best), top(k)))) best = k;
     }
     return best;
   }
   /// The earliest event of `owner` (which must have one).
-  [[nodiscard]] const Event& top(std::size_t owner) const { return heaps_[owner].front(); }
+  [[nodiscard]] const Event& top(std::size_t owner) const { return events_[owner * room_]; }
   /// Queues `event` as `owner`'s.
   void push(std::size_t owner, const Event& event) {
-    std::vector<Event>& heap = heaps_[owner];
-    heap.push_back(event);
-    std::push_heap(heap.begin(), heap.end(), Later{});
-    times_[owner] = heap.front().time;
+    if (sizes_[owner] == room_) widen();
+    Event* heap = events_.data() + owner * room_;
+    heap[sizes_[owner]++] = event;
+    std::push_heap(heap, heap + sizes_[owner], Later{});
+    times_[owner] = heap[0].time;
     ++size_;
   }
   /// Takes `owner`'s earliest event out and returns it (`owner` must have one).
   Event pop(std::size_t owner) {
-    std::vector<Event>& heap = heaps_[owner];
-    std::pop_heap(heap.begin(), heap.end(), Later{});
-    Event event = heap.back();
-    heap.pop_back();
-    times_[owner] = heap.empty() ? std::numeric_limits<double>::infinity() : heap.front().time;
+    Event* heap = events_.data() + owner * room_;
+    std::pop_heap(heap, heap + sizes_[owner], Later{});
+    const Event event = heap[--sizes_[owner]];
+    times_[owner] = sizes_[owner] == 0 ? std::numeric_limits<double>::infinity() : heap[0].time;
     --size_;
     return event;
   }
   /// Drops every event of `owner`.
   void clear(std::size_t owner) noexcept {
-    size_ -= heaps_[owner].size();
-    heaps_[owner].clear();
+    size_ -= sizes_[owner];
+    sizes_[owner] = 0;
     times_[owner] = std::numeric_limits<double>::infinity();
   }
 
  private:
-  std::vector<std::vector<Event>> heaps_;
-  std::vector<double> times_;  // each owner's earliest event's time, +∞ for none
+  // Every owner's room doubled, its heap kept as it is.
+  void widen() {
+    std::vector<Event> wider(2 * events_.size());
+    for (std::size_t k = 0; k < sizes_.size(); ++k)
+      std::copy_n(events_.begin() + static_cast<std::ptrdiff_t>(k * room_), sizes_[k],
+                  wider.begin() + static_cast<std::ptrdiff_t>(2 * k * room_));
+    events_.swap(wider);
+    room_ *= 2;
+  }
+  std::size_t room_;                // each owner's run in events_
+  std::vector<Event> events_;       // owner k's heap at k room_, its first sizes_[k]
+  std::vector<std::size_t> sizes_;  // each owner's count of events
+  std::vector<double> times_;       // each owner's earliest event's time, +∞ for none
   std::size_t size_ = 0;
 };
 

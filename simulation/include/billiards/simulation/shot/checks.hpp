@@ -16,6 +16,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -67,17 +68,28 @@ inline void validate(const ShotOptions& options) {
 /// both its jaws' reach (a centre comes no nearer a jaw's axis than R + ρ_jaw), so that no ball can pass
 /// between a jaw and the pocket (pooltool's geometry leaves a gap of 0.2 mm there at the corners, which
 /// its pockets' straight walls behind the jaws close).
-[[nodiscard]] inline std::vector<Pocket> capture_circles(const PoolTable& table, double R) {
+[[nodiscard]] inline std::vector<Pocket> capture_circles(const PoolTable& table, const std::vector<Jaw>& jaws,
+                                                         double R) {
   std::vector<Pocket> pockets = table.pockets();
-  const std::vector<Jaw> jaws = table.jaws();
   for (Pocket& pocket : pockets) {
-    std::vector<double> gaps;
-    for (const Jaw& jaw : jaws) gaps.push_back((jaw.centre - pocket.centre).norm() - (R + jaw.radius));
-    std::sort(gaps.begin(), gaps.end());
-    // The two nearest jaws are the pocket's own; 1 µm of overlap.
-    pocket.radius = std::max(pocket.radius, gaps[1] + 1e-6);
+    // The two nearest jaws are the pocket's own; 1 µm of overlap past the farther of them.
+    double nearest = std::numeric_limits<double>::infinity(), second = nearest;
+    for (const Jaw& jaw : jaws) {
+      const double gap = (jaw.centre - pocket.centre).norm() - (R + jaw.radius);
+      if (gap < nearest) {
+        second = nearest;
+        nearest = gap;
+      } else if (gap < second) {
+        second = gap;
+      }
+    }
+    if (jaws.size() >= 2) pocket.radius = std::max(pocket.radius, second + 1e-6);
   }
   return pockets;
+}
+/// The same, for the table's own jaws (PoolTable::jaws).
+[[nodiscard]] inline std::vector<Pocket> capture_circles(const PoolTable& table, double R) {
+  return capture_circles(table, table.jaws(), R);
 }
 
 /// The first broken invariant of balls of radius R at `centres` (those `in_play`) on `table`, whose

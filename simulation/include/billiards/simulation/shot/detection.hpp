@@ -116,22 +116,44 @@ inline void touching(std::span<double> p, double scale, double radius) {
   return nearest > R * (1 + 1e-9);
 }
 
-/// When a ball of radius R on `path` meets the straight part of `cushion` within `horizon`: the earliest
-/// root of its cushion polynomial where the centre then lies between the nose's ends (beyond them the
-/// jaws take the ball); +∞ if none.
-[[nodiscard]] inline double cushion_contact(const Path& path, const CushionSegment& cushion, double R,
-                                            double horizon) {
+/// When a ball of radius R on `path` reaches the nose line of `cushion` within `horizon`: the earliest root
+/// of its cushion polynomial; +∞ if none. Cushions on one line share it.
+[[nodiscard]] inline double nose_line_contact(const Path& path, const CushionSegment& cushion, double R,
+                                              double horizon) {
   std::array<double, 3> q =
       cushion_polynomial((path.position - cushion.start).dot(cushion.normal),
                          path.velocity.dot(cushion.normal), path.acceleration.dot(cushion.normal), R);
   touching(q, 1, R);
   constexpr double none = std::numeric_limits<double>::infinity();
   if (stays_apart(q, horizon)) return none;
-  const std::optional<double> t = earliest_contact(q, horizon);
-  if (!t) return none;
+  return earliest_contact(q, horizon).value_or(none);
+}
+
+/// Whether the centre on `path` lies between the ends of `cushion`'s nose at time t (beyond them the
+/// jaws take the ball).
+[[nodiscard]] inline bool within_nose(const Path& path, const CushionSegment& cushion, double t) {
   const Eigen::Vector2d along = cushion.end - cushion.start;
-  const double f = (path.at(*t) - cushion.start).dot(along);
-  return f >= 0 && f <= along.squaredNorm() ? *t : none;
+  const double f = (path.at(t) - cushion.start).dot(along);
+  return f >= 0 && f <= along.squaredNorm();
+}
+
+/// Whether cushions a and b lie on one nose line along an axis (a rail's two cushions beside a side
+/// pocket), so that nose_line_contact gives the same for both on every path, bit for bit.
+[[nodiscard]] inline bool same_nose_line(const CushionSegment& a, const CushionSegment& b) {
+  if (a.normal != b.normal) return false;
+  if (a.normal.x() == 0) return a.start.y() == b.start.y();
+  return a.normal.y() == 0 && a.start.x() == b.start.x();
+}
+
+/// When a ball of radius R on `path` meets the straight part of `cushion` within `horizon`: the earliest
+/// root of its cushion polynomial where the centre then lies between the nose's ends (beyond them the
+/// jaws take the ball); +∞ if none.
+[[nodiscard]] inline double cushion_contact(const Path& path, const CushionSegment& cushion, double R,
+                                            double horizon) {
+  const double t = nose_line_contact(path, cushion, R, horizon);
+  return t != std::numeric_limits<double>::infinity() && within_nose(path, cushion, t)
+             ? t
+             : std::numeric_limits<double>::infinity();
 }
 
 /// Whether a centre on `path` (relative to a point) stays farther than `distance` from it over [0,

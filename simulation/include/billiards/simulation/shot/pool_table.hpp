@@ -89,7 +89,9 @@ struct PoolTable {
     std::vector<Jaw> out;
     if (!has_pockets) return out;
     const double side_x = length / 2;
-    for (const CushionSegment& cushion : cushions()) {
+    const std::vector<CushionSegment> segments = cushions();
+    out.reserve(2 * segments.size());
+    for (const CushionSegment& cushion : segments) {
       for (const TableVector& end : {cushion.start, cushion.end}) {
         const bool at_side_pocket = std::fabs(end.x() - side_x) < side_mouth;
         const double r = at_side_pocket ? side_jaw_radius : corner_jaw_radius;

@@ -78,35 +78,39 @@ class ShotReaches {
   // Eight entries at a time from any first one: the arrays end with seven entries that are no
   // candidates.
   explicit ShotReaches(std::size_t balls = 0)
-      : x_low_(padded(balls), 0), x_high_(padded(balls), 0), y_low_(padded(balls), 0), y_high_(padded(balls), 0),
-        end_(padded(balls), std::numeric_limits<double>::infinity()), candidate_(padded(balls), 0),
-        moving_(padded(balls), 0) {}
-  void assign(std::size_t i, const shot::Box& box, double end, bool candidate, bool moving) {
-    x_low_[i] = box.x_low;
-    x_high_[i] = box.x_high;
-    y_low_[i] = box.y_low;
-    y_high_[i] = box.y_high;
-    end_[i] = end;
-    candidate_[i] = candidate;
-    moving_[i] = moving;
+      : stride_(balls + 7), bounds_(5 * stride_, 0), flags_(2 * stride_, 0) {
+    std::fill_n(bounds_.begin() + 4 * stride_, stride_, std::numeric_limits<double>::infinity());
   }
-  [[nodiscard]] shot::Box box(std::size_t i) const { return {x_low_[i], x_high_[i], y_low_[i], y_high_[i]}; }
-  [[nodiscard]] double end(std::size_t i) const { return end_[i]; }
+  void assign(std::size_t i, const shot::Box& box, double end, bool candidate, bool moving) {
+    bounds_[i] = box.x_low;
+    bounds_[stride_ + i] = box.x_high;
+    bounds_[2 * stride_ + i] = box.y_low;
+    bounds_[3 * stride_ + i] = box.y_high;
+    bounds_[4 * stride_ + i] = end;
+    flags_[i] = candidate;
+    flags_[stride_ + i] = moving;
+  }
+  [[nodiscard]] shot::Box box(std::size_t i) const {
+    return {bounds_[i], bounds_[stride_ + i], bounds_[2 * stride_ + i], bounds_[3 * stride_ + i]};
+  }
+  [[nodiscard]] double end(std::size_t i) const { return bounds_[4 * stride_ + i]; }
   /// A bit for each ball from `base` on, `count` (at most 64, to the last ball) of them: whether its box
   /// overlaps `reach` (shot::Box::overlaps), it is a candidate, it moves or `moving` does, and its
   /// predictions reach `now`, without a branch, eight balls at a time.
   [[nodiscard]] std::uint64_t near(const shot::Box& reach, bool moving, double now, std::size_t base,
                                    std::size_t count) const {
     const std::uint8_t any = moving ? 1 : 0;
+    const double *x_low = bounds_.data(), *x_high = x_low + stride_, *y_low = x_high + stride_,
+                 *y_high = y_low + stride_, *end = y_high + stride_;
+    const std::uint8_t *candidate = flags_.data(), *moves = candidate + stride_;
     std::uint64_t bits = 0;
     for (std::size_t w = 0; 8 * w < count; ++w) {
       std::array<std::uint8_t, 8> flags;
       for (std::size_t b = 0; b < 8; ++b) {
         const std::size_t j = base + 8 * w + b;
-        const bool overlaps = reach.overlaps({x_low_[j], x_high_[j], y_low_[j], y_high_[j]});
-        const bool reaches_now = end_[j] >= now;
-        const std::uint8_t candidate = candidate_[j], moves = moving_[j];
-        flags[b] = static_cast<std::uint8_t>(overlaps & reaches_now & candidate & (any | moves));
+        const bool overlaps = reach.overlaps({x_low[j], x_high[j], y_low[j], y_high[j]});
+        const bool reaches_now = end[j] >= now;
+        flags[b] = static_cast<std::uint8_t>(overlaps & reaches_now & candidate[j] & (any | moves[j]));
       }
       // The eight flags (0 or 1, a byte each) as one word, little end first; the multiply gathers their
       // low bits into its top byte (no carries: each of its bits is the sum of one term).
@@ -117,9 +121,9 @@ class ShotReaches {
   }
 
  private:
-  static std::size_t padded(std::size_t balls) { return balls + 7; }
-  std::vector<double> x_low_, x_high_, y_low_, y_high_, end_;
-  std::vector<std::uint8_t> candidate_, moving_;
+  std::size_t stride_;           // the balls and seven entries that are no candidates
+  std::vector<double> bounds_;   // x_low, x_high, y_low, y_high, end: stride_ entries each
+  std::vector<std::uint8_t> flags_;  // candidate, moving: stride_ entries each
 };
 
 /// A predicted event of a shot, stale where a ball's version has moved on since.
@@ -172,11 +176,15 @@ class Shot {
         physics_(std::move(physics)),
         options_(options),
         cushions_(table_.cushions()),
-        jaws_(table_.jaws()) {
+        jaws_(table_.jaws()),
+        on_previous_line_(cushions_.size(), false) {
+    for (std::size_t k = 1; k < cushions_.size(); ++k)
+      on_previous_line_[k] = shot::same_nose_line(cushions_[k - 1], cushions_[k]);
     shot::validate(table_, physics_);
     shot::validate(options_);
     shot::validate(balls, table_, physics_.radius);
-    pockets_ = shot::capture_circles(table_, physics_.radius);
+    pockets_ = shot::capture_circles(table_, jaws_, physics_.radius);
+    balls_.reserve(balls.size());
     for (const PoolBall& b : balls) {
       Entry e;
       e.state = {
@@ -189,7 +197,9 @@ class Shot {
       balls_.push_back(e);
     }
     queue_ = detail::OwnedEvents<Predicted>(balls_.size());
-    events_.reserve(4 * balls_.size() + 16);  // most random shots' events (a few a ball) in one allocation
+    // Most shots' events and keyframes (a break's: some ten a ball) in one allocation each.
+    events_.reserve(12 * balls_.size() + 16);
+    history_.reserve(balls_.size(), 16 * balls_.size() + 16);
     reach_ = detail::ShotReaches(balls_.size());
     for (std::size_t i = 0; i < balls_.size(); ++i) {
       begin_phase(i);
@@ -520,6 +530,7 @@ class Shot {
   ShotOptions options_;
   std::vector<CushionSegment> cushions_;
   std::vector<Jaw> jaws_;
+  std::vector<bool> on_previous_line_;  // cushion k on cushion k − 1's nose line (shot::same_nose_line)
   std::vector<Pocket> pockets_;
   std::vector<Entry> balls_;
   detail::ShotReaches reach_;
@@ -569,10 +580,19 @@ inline void Shot::predict(std::size_t i, std::size_t first_other, std::size_t sk
   if (e.phase.moving) {
     // A cushion whose line the centre's box over the whole horizon keeps farther than R from is passed
     // over: its polynomial stays above 0 there.
+    // Cushions on one nose line share its root, found once (the horizon it brings in ends at that root).
     const shot::Box reach = box;
+    double line_root = std::numeric_limits<double>::infinity();
+    bool line_solved = false;
     for (std::size_t k = 0; k < cushions_.size(); ++k) {
-      if (shot::beyond_reach(reach, cushions_[k], R)) continue;
-      found(shot::cushion_contact(me, cushions_[k], R, horizon), ShotEvent::Kind::cushion, k);
+      if (shot::beyond_reach(reach, cushions_[k], R)) {
+        line_solved = false;
+        continue;
+      }
+      if (!(line_solved && on_previous_line_[k])) line_root = shot::nose_line_contact(me, cushions_[k], R, horizon);
+      line_solved = true;
+      if (line_root != std::numeric_limits<double>::infinity() && shot::within_nose(me, cushions_[k], line_root))
+        found(line_root, ShotEvent::Kind::cushion, k);
     }
     box_to_horizon();
     for (std::size_t k = 0; k < jaws_.size(); ++k) {
