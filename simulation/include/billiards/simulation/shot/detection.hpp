@@ -179,6 +179,43 @@ inline void touching(std::span<double> p, double scale, double radius) {
   return cross * cross > needed * needed * vv;
 }
 
+/// A time after 0 before which a contact polynomial p = c0 + c1 t + … + c4 t⁴ (its coefficients as given,
+/// c0 > 0 and c4 ≥ 0) stays above 0, so that its first root comes no earlier; +∞ where p stays above 0 up
+/// to `horizon`; 0 where no such time is shown (c0 ≤ 0, an unbounded horizon). On [0, T] the cubic term
+/// c3 t³ is at least min(c3, 0) T t² and the quartic one at least 0, so that p ≥ q = c0 + c1 t + k t² with
+/// k = c2 + min(c3, 0) T there; q, positive at 0, stays so until its least positive root. T is the
+/// horizon where c3 ≥ 0 (any T then), else twice the least positive root of the Taylor quadratic (c0, c1,
+/// c2) and at most the horizon. Each rounding moves the bound down: k lowered by a bound on its rounding,
+/// q's discriminant raised by one on its own (a larger one gives a smaller root) and the root lowered by
+/// 2^−40 of itself, far more than the roundings of its square root and quotient and than the 16 units in
+/// the last place by which earliest_contact may place the root before its exact value.
+[[nodiscard]] inline double contact_lower_bound(const std::array<double, 5>& c, double horizon) {
+  constexpr double never = std::numeric_limits<double>::infinity();
+  constexpr double epsilon = std::numeric_limits<double>::epsilon();
+  if (!(c[0] > 0 && c[4] >= 0 && horizon > 0)) return 0;
+  // q's least positive root, from below; +∞ where q has none (where it stays above 0 for t ≥ 0).
+  const auto least_root = [&](double k) {
+    const double square = c[1] * c[1], product = 4 * c[0] * k;
+    const double discriminant = (square - product) + 4 * epsilon * (square + std::fabs(product));
+    if (!(discriminant >= 0)) return never;
+    const double denominator = std::sqrt(discriminant) - c[1];
+    return denominator > 0 ? 2 * c[0] / denominator * (1 - 0x1p-40) : never;
+  };
+  double T = horizon;
+  double k = c[2];
+  if (c[3] < 0) {
+    const double estimate = least_root(c[2]);
+    if (2 * estimate < T) T = 2 * estimate;
+    const double cubic = c[3] * T;
+    k = (c[2] + cubic) - 4 * epsilon * (std::fabs(c[2]) + std::fabs(cubic));
+  }
+  const double root = least_root(k);
+  if (!(root > 0)) return 0;  // NaN from an infinite T, or a root lost below the least double
+  // Past T only where T is the horizon: below it, T is twice the root of a quadratic at or above q (each
+  // rounding of least_root is monotone in k), so that q's root comes first.
+  return root <= T ? root : never;
+}
+
 /// When a ball of radius R on `path` meets `jaw` within `horizon` (its centre R + the jaw's radius from
 /// the jaw's axis); +∞ if never.
 [[nodiscard]] inline double jaw_contact(const Path& path, const Jaw& jaw, double R, double horizon) {
@@ -200,14 +237,21 @@ inline void touching(std::span<double> p, double scale, double radius) {
   return earliest_contact(p, horizon).value_or(std::numeric_limits<double>::infinity());
 }
 
+/// The contact polynomial of two balls of radius R, `relative` the second's path less the first's (their
+/// centres two radii apart), a sliver of overlap counted as touching.
+[[nodiscard]] inline std::array<double, 5> ball_contact_polynomial(const Path& relative, double R) {
+  std::array<double, 5> p =
+      contact_polynomial<double>(relative.position, relative.velocity, relative.acceleration, 2 * R);
+  touching(p, 4 * R, R);
+  return p;
+}
+
 /// When two balls of radius R meet within `horizon`, `relative` the second's path less the first's
 /// (their centres two radii apart); +∞ if never.
 [[nodiscard]] inline double ball_contact(const Path& relative, double R, double horizon) {
   if (certainly_apart(relative, 2 * R, horizon)) return std::numeric_limits<double>::infinity();
-  std::array<double, 5> p =
-      contact_polynomial<double>(relative.position, relative.velocity, relative.acceleration, 2 * R);
-  touching(p, 4 * R, R);
-  return earliest_contact(p, horizon).value_or(std::numeric_limits<double>::infinity());
+  return earliest_contact(ball_contact_polynomial(relative, R), horizon)
+      .value_or(std::numeric_limits<double>::infinity());
 }
 
 }  // namespace billiards::simulation::shot

@@ -149,13 +149,15 @@ struct PressedPiece {
 
 /// The state at the end of a phase of `duration` begun in state `s`: evolved by its duration, then set
 /// to the next phase exactly (finish) should rounding have left it short. `next` receives the phase
-/// that state begins (phase_of, with the slip computed once for that test and the phase). `start` is the
+/// that state begins (phase_of, with the slip computed once for that test and the phase) and `next_slip`
+/// that slip. `start` is the
 /// slip of `s` and `spin_end` when its spin about ẑ stops (NaN where not known): a phase that ends
 /// before the spin does, at a normal duration, ends by the one step evolve would take
 /// (billiards::detail::advance to the phase's end), without working out the phase again.
 [[nodiscard]] inline BallOnCloth<double> end_of_phase(const BallOnCloth<double>& s, Motion phase, double duration,
                                                       const Cloth<double>& cloth, Phase& next,
-                                                      const billiards::detail::Slip<double>& start, double spin_end) {
+                                                      const billiards::detail::Slip<double>& start, double spin_end,
+                                                      billiards::detail::Slip<double>& next_slip) {
   BallOnCloth<double> end = duration < spin_end && duration >= std::numeric_limits<double>::min()
                                 ? billiards::detail::advance(s, cloth, phase, start, duration, true, false)
                                 : evolve(s, cloth, duration);
@@ -165,14 +167,16 @@ struct PressedPiece {
     slip = billiards::detail::slip_of(end);
   }
   next = phase_of(end, cloth, slip);
+  next_slip = slip;
   return end;
 }
 /// The state at the end of a phase, evolved by evolve's own steps; see the overload given the slip.
 [[nodiscard]] inline BallOnCloth<double> end_of_phase(const BallOnCloth<double>& s, Motion phase, double duration,
                                                       const Cloth<double>& cloth, Phase& next) {
   // No spin end known: evolve's steps, which never read the slip passed.
+  billiards::detail::Slip<double> next_slip;
   return end_of_phase(s, phase, duration, cloth, next, billiards::detail::Slip<double>{Eigen::Vector3d::Zero(), 0},
-                      std::numeric_limits<double>::quiet_NaN());
+                      std::numeric_limits<double>::quiet_NaN(), next_slip);
 }
 /// The state at the end of a phase; see the overload that gives the next phase too.
 [[nodiscard]] inline BallOnCloth<double> end_of_phase(const BallOnCloth<double>& s, Motion phase,

@@ -126,12 +126,16 @@ class ShotReaches {
   std::vector<std::uint8_t> flags_;  // candidate, moving: stride_ entries each
 };
 
-/// A predicted event of a shot, stale where a ball's version has moved on since.
+/// A predicted event of a shot, stale where a ball's version has moved on since. A contact of two balls
+/// may be queued before its time is placed: at a time before which the two stay apart, placed when it
+/// comes first (the order of events is the same: it comes first no later than the contact would).
 struct ShotPrediction {
-  double time;                           ///< absolute (s)
+  double time;                           ///< absolute (s); a bound where `bound`
   ShotEvent::Kind kind;                  ///< what would happen
+  bool bound = false;                    ///< the time is a bound of a ball–ball contact's, to be placed
   std::size_t ball, other;               ///< the ball and the other body
   std::uint64_t version, other_version;  ///< the ball's (and the other ball's) version when predicted
+  double base = 0, horizon = 0;          ///< where `bound`: when it was predicted, and the pair's horizon
   /// The earliest first; at the same time by kind, then by balls: a deterministic order.
   bool operator>(const ShotPrediction& o) const {
     if (time != o.time) return time > o.time;
@@ -328,6 +332,10 @@ class Shot {
         continue;
       }
       if (queue_.top(owner).time > until) return false;
+      if (queue_.top(owner).bound) {
+        place(queue_.pop(owner));
+        continue;
+      }
       if (events_.size() >= options_.event_limit)
         throw EventLimitReached("billiards::simulation::Shot: the shot took more than " +
                                 std::to_string(options_.event_limit) +
@@ -361,25 +369,9 @@ class Shot {
     return sum;
   }
 
-  // The phase of ball i's reference state (`known`, where given, is phase_of's for it).
-  void begin_phase(std::size_t i, const shot::Phase* known = nullptr) {
-    Entry& e = balls_[i];
-    if (e.next) {
-      e.phase = e.next->phase;
-      e.piece = e.next->piece;
-      e.next.reset();
-    } else if (e.pocketed) {
-      e.phase = shot::Phase{};
-    } else {
-      e.slip = billiards::detail::slip_of(e.state);
-      e.phase = known ? *known : shot::phase_of(e.state, physics_.cloth, e.slip);
-      // evolve's end of the spin: the spinning phase's duration, where there is a spin
-      e.spin_end = e.state.angular_velocity.z() != 0
-                       ? billiards::detail::phase_duration(e.state, physics_.cloth, Motion::spinning, e.slip)
-                       : std::numeric_limits<double>::infinity();
-    }
-    e.unrecorded_from.reset();
-  }
+  // The phase of ball i's reference state: see the definition below the class.
+  void begin_phase(std::size_t i, const shot::Phase* known = nullptr,
+                   const billiards::detail::Slip<double>* known_slip = nullptr);
   // Ball i's state now becomes its reference state.
   void settle(std::size_t i) {
     if (!balls_[i].pocketed) settle(i, at(i, now_));
@@ -403,7 +395,7 @@ class Shot {
   }
   void push(double t, ShotEvent::Kind kind, std::size_t i, std::size_t other) {
     const std::uint64_t other_version = kind == ShotEvent::Kind::ball ? balls_[other].version : 0;
-    queue_.push(i, {t, kind, i, other, balls_[i].version, other_version});
+    queue_.push(i, {t, kind, false, i, other, balls_[i].version, other_version});
   }
 
   // The time left in ball j's phase from now, finite (the largest double for a phase without end).
@@ -420,14 +412,19 @@ class Shot {
 
   // Ball i's contacts with the balls from `first_other` on but `skip`: see the definition below the class.
   void predict_pairs(std::size_t i, std::size_t first_other, std::size_t skip, detail::ExcludedContact excluded);
+  // The path of ball j relative to ball i's reference state at time `base`: see the definition below.
+  [[nodiscard]] shot::Path relative_path(std::size_t i, std::size_t j, double base) const;
+  // A current ball–ball prediction queued at a bound of its time placed: see the definition below.
+  void place(const Predicted& p);
 
   // Ball i changed now: its old predictions are stale; its phase begins again and it is predicted against
   // everything but `skip` (the other ball of a ball–ball event, predicted with it already).
   void changed(std::size_t i, std::size_t skip, detail::ExcludedContact excluded = {},
-               const shot::Phase* known = nullptr) {
+               const shot::Phase* known = nullptr,
+               const billiards::detail::Slip<double>* known_slip = nullptr) {
     ++balls_[i].version;
     queue_.clear(i);  // every prediction of i's is stale now
-    begin_phase(i, known);
+    begin_phase(i, known, known_slip);
     keyframe(i);
     predict(i, 0, skip, excluded);
   }
@@ -459,11 +456,13 @@ class Shot {
     release_partner(i, p.kind == ShotEvent::Kind::ball ? p.other : i);
     if (p.kind == ShotEvent::Kind::ball) release_partner(p.other, i);
     std::size_t skip = balls_.size();
-    shot::Phase next;  // a transition's next phase
+    shot::Phase next;  // a transition's next phase, and its state's slip
+    billiards::detail::Slip<double> next_slip;
     switch (p.kind) {
       case ShotEvent::Kind::transition:
         // Evolved by the phase's predicted duration from its start (now − since may round a sliver short).
-        e.state = shot::end_of_phase(e.state, from, e.phase.duration, physics_.cloth, next, e.slip, e.spin_end);
+        e.state = shot::end_of_phase(e.state, from, e.phase.duration, physics_.cloth, next, e.slip, e.spin_end,
+                                     next_slip);
         e.since = now_;
         break;
       case ShotEvent::Kind::ball: {
@@ -511,7 +510,10 @@ class Shot {
         break;
       case ShotEvent::Kind::strike: break;
     }
-    changed(i, skip, {}, p.kind == ShotEvent::Kind::transition ? &next : nullptr);
+    if (p.kind == ShotEvent::Kind::transition)
+      changed(i, skip, {}, &next, &next_slip);
+    else
+      changed(i, skip);
     if (p.kind == ShotEvent::Kind::ball) changed(p.other, balls_.size());
     record(p.kind, i, p.other, from);
     if (options_.check_invariants) check(energy_before_event);
@@ -615,13 +617,13 @@ inline void Shot::predict(std::size_t i, std::size_t first_other, std::size_t sk
 }
 
 // Ball i's contacts with the balls from `first_other` on but `skip`, until the earlier of the two's
-// predictions' ends (ShotReaches::end, see predict).
+// predictions' ends (ShotReaches::end, see predict). A pair apart now is queued at a time before which it
+// stays apart (shot::contact_lower_bound) and its contact placed only when that comes first (place): most
+// pairs' contacts never come, as one of the balls changes before.
 inline void Shot::predict_pairs(std::size_t i, std::size_t first_other, std::size_t skip,
                                 detail::ExcludedContact excluded) {
   const Entry& e = balls_[i];
   const double R = physics_.radius;
-  const Eigen::Vector2d r(e.state.position.x(), e.state.position.y()),
-      v(e.state.velocity.x(), e.state.velocity.y());
   const std::size_t partner = e.phase.pressed == shot::Pressed::ball ? e.piece.partner : i;  // moving as one
   const shot::Box reach = reach_.box(i).widened(2 * R);
   const double reach_end = reach_.end(i);
@@ -637,16 +639,71 @@ inline void Shot::predict_pairs(std::size_t i, std::size_t first_other, std::siz
     }
     for (; near != 0; near &= near - 1) {
       const std::size_t j = base + static_cast<std::size_t>(std::countr_zero(near));
-      const Entry& o = balls_[j];
       const double end = std::min(reach_end, reach_.end(j));
-      const auto [position, velocity] = shot::centre_and_velocity(o.state, o.phase, now_ - o.since);
-      const shot::Path relative{position - r, velocity - v, o.phase.acceleration - e.phase.acceleration};
+      const shot::Path relative = relative_path(i, j, now_);
       const double pair_horizon = std::isfinite(end) ? end - now_ : std::numeric_limits<double>::max();
-      const double t = shot::ball_contact(relative, R, pair_horizon);
-      if (t != std::numeric_limits<double>::infinity() && !excluded(ShotEvent::Kind::ball, j, t))
-        push(now_ + t, ShotEvent::Kind::ball, i, j);
+      if (shot::certainly_apart(relative, 2 * R, pair_horizon)) continue;
+      const std::array<double, 5> polynomial = shot::ball_contact_polynomial(relative, R);
+      // Apart at first: queued at a bound of its time, placed when it comes first, if it still holds.
+      const double bound = shot::contact_lower_bound(polynomial, pair_horizon);
+      if (bound == std::numeric_limits<double>::infinity()) continue;
+      if (bound > 0) {
+        queue_.push(i, {now_ + bound, ShotEvent::Kind::ball, true, i, j, e.version, balls_[j].version, now_,
+                        pair_horizon});
+        continue;
+      }
+      const std::optional<double> t = earliest_contact(polynomial, pair_horizon);
+      if (t && !excluded(ShotEvent::Kind::ball, j, *t)) push(now_ + *t, ShotEvent::Kind::ball, i, j);
     }
   }
+}
+
+// The phase of ball i's reference state (`known`, where given, is phase_of's for it, `known_slip` the
+// state's slip).
+inline void Shot::begin_phase(std::size_t i, const shot::Phase* known,
+                              const billiards::detail::Slip<double>* known_slip) {
+  Entry& e = balls_[i];
+  if (e.next) {
+    e.phase = e.next->phase;
+    e.piece = e.next->piece;
+    e.next.reset();
+  } else if (e.pocketed) {
+    e.phase = shot::Phase{};
+  } else {
+    if (known) {
+      e.slip = *known_slip;
+      e.phase = *known;
+    } else {
+      e.slip = billiards::detail::slip_of(e.state);
+      e.phase = shot::phase_of(e.state, physics_.cloth, e.slip);
+    }
+    // evolve's end of the spin: the spinning phase's duration, where there is a spin
+    e.spin_end = e.state.angular_velocity.z() != 0
+                     ? billiards::detail::phase_duration(e.state, physics_.cloth, Motion::spinning, e.slip)
+                     : std::numeric_limits<double>::infinity();
+  }
+  e.unrecorded_from.reset();
+}
+
+// The path of ball j relative to ball i's reference state at time `base` (i's reference time: when it
+// was last predicted).
+inline shot::Path Shot::relative_path(std::size_t i, std::size_t j, double base) const {
+  const Entry &e = balls_[i], &o = balls_[j];
+  const auto [position, velocity] = shot::centre_and_velocity(o.state, o.phase, base - o.since);
+  return {position - Eigen::Vector2d(e.state.position.x(), e.state.position.y()),
+          velocity - Eigen::Vector2d(e.state.velocity.x(), e.state.velocity.y()),
+          o.phase.acceleration - e.phase.acceleration};
+}
+
+// A current ball–ball prediction queued at a bound of its time: its contact placed and queued, if any.
+// The two balls' versions being those it was predicted with, their reference states are too (every
+// change of a state changes its ball's version), so that the polynomial is the one predict_pairs had.
+inline void Shot::place(const Predicted& p) {
+  const shot::Path relative = relative_path(p.ball, p.other, p.base);
+  const std::optional<double> t =
+      earliest_contact(shot::ball_contact_polynomial(relative, physics_.radius), p.horizon);
+  if (t)
+    queue_.push(p.ball, {p.base + *t, ShotEvent::Kind::ball, false, p.ball, p.other, p.version, p.other_version});
 }
 
 // Balls i and j, that have just met along n (from i to j): pressed together from now on (their next
