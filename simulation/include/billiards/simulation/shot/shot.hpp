@@ -121,8 +121,8 @@ class ShotReaches {
   }
 
  private:
-  std::size_t stride_;           // the balls and seven entries that are no candidates
-  std::vector<double> bounds_;   // x_low, x_high, y_low, y_high, end: stride_ entries each
+  std::size_t stride_;               // the balls and seven entries that are no candidates
+  std::vector<double> bounds_;       // x_low, x_high, y_low, y_high, end: stride_ entries each
   std::vector<std::uint8_t> flags_;  // candidate, moving: stride_ entries each
 };
 
@@ -581,8 +581,8 @@ inline void Shot::predict(std::size_t i, std::size_t first_other, std::size_t sk
   };
   if (e.phase.moving) {
     // A cushion whose line the centre's box over the whole horizon keeps farther than R from is passed
-    // over: its polynomial stays above 0 there.
-    // Cushions on one nose line share its root, found once (the horizon it brings in ends at that root).
+    // over: its polynomial stays above 0 there. Cushions on one nose line share its root, found once (the
+    // horizon it brings in ends at that root).
     const shot::Box reach = box;
     double line_root = std::numeric_limits<double>::infinity();
     bool line_solved = false;
@@ -591,7 +591,8 @@ inline void Shot::predict(std::size_t i, std::size_t first_other, std::size_t sk
         line_solved = false;
         continue;
       }
-      if (!(line_solved && on_previous_line_[k])) line_root = shot::nose_line_contact(me, cushions_[k], R, horizon);
+      if (!(line_solved && on_previous_line_[k]))
+        line_root = shot::nose_line_contact(me, cushions_[k], R, horizon);
       line_solved = true;
       if (line_root != std::numeric_limits<double>::infinity() && shot::within_nose(me, cushions_[k], line_root))
         found(line_root, ShotEvent::Kind::cushion, k);
