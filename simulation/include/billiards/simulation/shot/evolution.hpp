@@ -150,10 +150,9 @@ struct PressedPiece {
 /// The state at the end of a phase of `duration` begun in state `s`: evolved by its duration, then set
 /// to the next phase exactly (finish) should rounding have left it short. `next` receives the phase
 /// that state begins (phase_of, with the slip computed once for that test and the phase) and `next_slip`
-/// that slip. `start` is the
-/// slip of `s` and `spin_end` when its spin about ẑ stops (NaN where not known): a phase that ends
-/// before the spin does, at a normal duration, ends by the one step evolve would take
-/// (billiards::detail::advance to the phase's end), without working out the phase again.
+/// that slip. `start` is the slip of `s` and `spin_end` when its spin about ẑ stops (NaN where not
+/// known): a phase that ends before the spin does, at a normal duration, ends by the one step evolve
+/// would take (billiards::detail::advance to the phase's end), without working out the phase again.
 [[nodiscard]] inline BallOnCloth<double> end_of_phase(const BallOnCloth<double>& s, Motion phase, double duration,
                                                       const Cloth<double>& cloth, Phase& next,
                                                       const billiards::detail::Slip<double>& start, double spin_end,
