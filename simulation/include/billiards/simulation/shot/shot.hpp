@@ -188,6 +188,7 @@ class Shot {
     shot::validate(options_);
     shot::validate(balls, table_, physics_.radius);
     pockets_ = shot::capture_circles(table_, jaws_, physics_.radius);
+    lay_out_circles();
     balls_.reserve(balls.size());
     for (const PoolBall& b : balls) {
       Entry e;
@@ -519,6 +520,12 @@ class Shot {
     if (options_.check_invariants) check(energy_before_event);
   }
 
+  // The cushions' lines and the jaws' and pockets' circles laid out a field at a time, and which of them
+  // a ball's box comes within reach of, many side by side: see the definitions below the class.
+  void lay_out_circles();
+  [[nodiscard]] std::uint64_t within_reach(const shot::Box& box) const;
+  [[nodiscard]] std::uint64_t near_circles(const shot::Box& box) const;
+
   // The invariants after an event (every ball, every pair): see step().
   void check(double energy_before_event);
   // Pressed contacts (pressing.hpp): entered at a contact, ended at a piece's end, released by an event.
@@ -534,6 +541,10 @@ class Shot {
   std::vector<Jaw> jaws_;
   std::vector<bool> on_previous_line_;  // cushion k on cushion k − 1's nose line (shot::same_nose_line)
   std::vector<Pocket> pockets_;
+  std::vector<double> circles_;  // lay_out_circles
+  std::vector<double> lines_;    // the cushions' starts and normals, a field at a time
+  std::size_t cushion_stride_ = 0;
+  std::size_t circle_stride_ = 0;
   std::vector<Entry> balls_;
   detail::ShotReaches reach_;
   shot::History history_;
@@ -583,27 +594,24 @@ inline void Shot::predict(std::size_t i, std::size_t first_other, std::size_t sk
     // A cushion whose line the centre's box over the whole horizon keeps farther than R from is passed
     // over: its polynomial stays above 0 there. Cushions on one nose line share its root, found once (the
     // horizon it brings in ends at that root).
-    const shot::Box reach = box;
     double line_root = std::numeric_limits<double>::infinity();
-    bool line_solved = false;
-    for (std::size_t k = 0; k < cushions_.size(); ++k) {
-      if (shot::beyond_reach(reach, cushions_[k], R)) {
-        line_solved = false;
-        continue;
-      }
-      if (!(line_solved && on_previous_line_[k]))
-        line_root = shot::nose_line_contact(me, cushions_[k], R, horizon);
-      line_solved = true;
+    for (std::uint64_t within = within_reach(box); within != 0; within &= within - 1) {
+      // Cushions on one line are within reach together (the test reads the line alone, bit for bit the
+      // same): the previous one's root is this one's.
+      const auto k = static_cast<std::size_t>(std::countr_zero(within));
+      if (!(k > 0 && on_previous_line_[k])) line_root = shot::nose_line_contact(me, cushions_[k], R, horizon);
       if (line_root != std::numeric_limits<double>::infinity() && shot::within_nose(me, cushions_[k], line_root))
         found(line_root, ShotEvent::Kind::cushion, k);
     }
     box_to_horizon();
-    for (std::size_t k = 0; k < jaws_.size(); ++k) {
-      if (!box.near(jaws_[k].centre, R + jaws_[k].radius)) continue;
+    // The jaws, then the pockets, whose circles the box comes within reach of, in order.
+    const std::uint64_t near = near_circles(box);
+    for (std::uint64_t jaws = near & ((std::uint64_t{1} << jaws_.size()) - 1); jaws != 0; jaws &= jaws - 1) {
+      const auto k = static_cast<std::size_t>(std::countr_zero(jaws));
       found(shot::jaw_contact(me, jaws_[k], R, horizon), ShotEvent::Kind::jaw, k);
     }
-    for (std::size_t k = 0; k < pockets_.size(); ++k) {
-      if (!box.near(pockets_[k].centre, pockets_[k].radius)) continue;
+    for (std::uint64_t pockets = near >> jaws_.size(); pockets != 0; pockets &= pockets - 1) {
+      const auto k = static_cast<std::size_t>(std::countr_zero(pockets));
       found(shot::pocket_entry(me, pockets_[k], horizon), ShotEvent::Kind::pocket, k);
     }
   }
@@ -705,6 +713,53 @@ inline void Shot::place(const Predicted& p) {
       earliest_contact(shot::ball_contact_polynomial(relative, physics_.radius), p.horizon);
   if (t)
     queue_.push(p.ball, {p.base + *t, ShotEvent::Kind::ball, false, p.ball, p.other, p.version, p.other_version});
+}
+
+// The cushions' nose lines (start, normal) and the jaws' and then the pockets' circles (centre, and the
+// reach at which a centre meets them: R and the jaw's radius, the capture radius) a field at a time,
+// padded to whole vectors (the lines' padding masked off, the circles' NaN centres that no box comes
+// near).
+inline void Shot::lay_out_circles() {
+  cushion_stride_ = (cushions_.size() + 7) / 8 * 8;
+  lines_.assign(4 * cushion_stride_, std::numeric_limits<double>::quiet_NaN());
+  for (std::size_t k = 0; k < cushions_.size(); ++k) {
+    lines_[k] = cushions_[k].start.x();
+    lines_[cushion_stride_ + k] = cushions_[k].start.y();
+    lines_[2 * cushion_stride_ + k] = cushions_[k].normal.x();
+    lines_[3 * cushion_stride_ + k] = cushions_[k].normal.y();
+  }
+  const std::size_t n = jaws_.size() + pockets_.size();
+  circle_stride_ = (n + 7) / 8 * 8;
+  circles_.assign(3 * circle_stride_, std::numeric_limits<double>::quiet_NaN());
+  for (std::size_t k = 0; k < n; ++k) {
+    const bool jaw = k < jaws_.size();
+    const TableVector& centre = jaw ? jaws_[k].centre : pockets_[k - jaws_.size()].centre;
+    circles_[k] = centre.x();
+    circles_[circle_stride_ + k] = centre.y();
+    circles_[2 * circle_stride_ + k] =
+        jaw ? physics_.radius + jaws_[k].radius : pockets_[k - jaws_.size()].radius;
+  }
+}
+// A bit for each cushion (a table has at most six): whether a centre within `box` may come within R of
+// its nose line (not shot::beyond_reach), without a branch, the cushions side by side.
+inline std::uint64_t Shot::within_reach(const shot::Box& box) const {
+  const double *x = lines_.data(), *y = x + cushion_stride_, *nx = y + cushion_stride_,
+               *ny = nx + cushion_stride_;
+  std::uint64_t bits = 0;
+  for (std::size_t k = 0; k < cushion_stride_; ++k) {
+    const bool beyond = shot::beyond_reach(box, x[k], y[k], nx[k], ny[k], physics_.radius);
+    bits |= static_cast<std::uint64_t>(!beyond) << k;
+  }
+  return bits & ((std::uint64_t{1} << cushions_.size()) - 1);
+}
+// A bit for each circle of lay_out_circles (a table has 12 jaws and 6 pockets, or none): whether `box`
+// comes within its reach (shot::Box::near), without a branch, the circles side by side.
+inline std::uint64_t Shot::near_circles(const shot::Box& box) const {
+  const double *x = circles_.data(), *y = x + circle_stride_, *reach = y + circle_stride_;
+  std::uint64_t bits = 0;
+  for (std::size_t k = 0; k < circle_stride_; ++k)
+    bits |= static_cast<std::uint64_t>(box.near(x[k], y[k], reach[k])) << k;
+  return bits;
 }
 
 // Balls i and j, that have just met along n (from i to j): pressed together from now on (their next
