@@ -188,7 +188,7 @@ class Shot {
     shot::validate(options_);
     shot::validate(balls, table_, physics_.radius);
     pockets_ = shot::capture_circles(table_, jaws_, physics_.radius);
-    lay_out_circles();
+    lay_out_bodies();
     balls_.reserve(balls.size());
     for (const PoolBall& b : balls) {
       Entry e;
@@ -522,7 +522,7 @@ class Shot {
 
   // The cushions' lines and the jaws' and pockets' circles laid out a field at a time, and which of them
   // a ball's box comes within reach of, many side by side: see the definitions below the class.
-  void lay_out_circles();
+  void lay_out_bodies();
   [[nodiscard]] std::uint64_t within_reach(const shot::Box& box) const;
   [[nodiscard]] std::uint64_t near_circles(const shot::Box& box) const;
 
@@ -541,8 +541,8 @@ class Shot {
   std::vector<Jaw> jaws_;
   std::vector<bool> on_previous_line_;  // cushion k on cushion k − 1's nose line (shot::same_nose_line)
   std::vector<Pocket> pockets_;
-  std::vector<double> circles_;  // lay_out_circles
-  std::vector<double> lines_;    // the cushions' starts and normals, a field at a time
+  std::vector<double> lines_;    // the cushions' nose lines, a field at a time (lay_out_bodies)
+  std::vector<double> circles_;  // the jaws' and pockets' circles, likewise
   std::size_t cushion_stride_ = 0;
   std::size_t circle_stride_ = 0;
   std::vector<Entry> balls_;
@@ -719,7 +719,7 @@ inline void Shot::place(const Predicted& p) {
 // reach at which a centre meets them: R and the jaw's radius, the capture radius) a field at a time,
 // padded to whole vectors (the lines' padding masked off, the circles' NaN centres that no box comes
 // near).
-inline void Shot::lay_out_circles() {
+inline void Shot::lay_out_bodies() {
   cushion_stride_ = (cushions_.size() + 7) / 8 * 8;
   lines_.assign(4 * cushion_stride_, std::numeric_limits<double>::quiet_NaN());
   for (std::size_t k = 0; k < cushions_.size(); ++k) {
@@ -752,8 +752,8 @@ inline std::uint64_t Shot::within_reach(const shot::Box& box) const {
   }
   return bits & ((std::uint64_t{1} << cushions_.size()) - 1);
 }
-// A bit for each circle of lay_out_circles (a table has 12 jaws and 6 pockets, or none): whether `box`
-// comes within its reach (shot::Box::near), without a branch, the circles side by side.
+// A bit for each circle of lay_out_bodies, the jaws' first (a table has 12 jaws and 6 pockets, or
+// none): whether `box` comes within its reach (shot::Box::near), without a branch, side by side.
 inline std::uint64_t Shot::near_circles(const shot::Box& box) const {
   const double *x = circles_.data(), *y = x + circle_stride_, *reach = y + circle_stride_;
   std::uint64_t bits = 0;
