@@ -111,19 +111,15 @@ inline void touching(std::span<double> p, double scale, double radius) {
 }
 
 /// Whether every point of `box` lies farther than R (and a billionth of it, for the rounding of the
-/// distances) from `cushion`'s line on the table's side: a centre kept to the box never touches it.
-/// The cushion given by its nose's start and unit normal, without a branch (so that many cushions run
-/// side by side).
+/// distances) from a cushion's nose line on the table's side, the line given by a point (start_x,
+/// start_y) and its unit normal into the table: a centre kept to the box never touches it. Without a
+/// branch, so that many cushions run side by side.
 [[nodiscard]] inline bool beyond_reach(const Box& box, double start_x, double start_y, double normal_x,
                                        double normal_y, double R) {
   const double x = normal_x >= 0 ? box.x_low : box.x_high;
   const double y = normal_y >= 0 ? box.y_low : box.y_high;
   const double nearest = (x - start_x) * normal_x + (y - start_y) * normal_y;
   return nearest > R * (1 + 1e-9);
-}
-/// beyond_reach for `cushion`.
-[[nodiscard]] inline bool beyond_reach(const Box& box, const CushionSegment& cushion, double R) {
-  return beyond_reach(box, cushion.start.x(), cushion.start.y(), cushion.normal.x(), cushion.normal.y(), R);
 }
 
 /// When a ball of radius R on `path` reaches the nose line of `cushion` within `horizon`: the earliest root
