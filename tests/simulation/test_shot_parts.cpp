@@ -211,6 +211,36 @@ TEST_CASE("Detection: the certificate of no contact holds only where the path ke
   CHECK_FALSE(shot::certainly_apart(shot::Path{{-1, 3 * D}, {1, 0}, {0, -6 * D}}, D, 2.0));
   CHECK_FALSE(shot::certainly_apart(shot::Path{{-1, 3 * D}, {1, 0}, {0, 0}}, D,
                                     std::numeric_limits<double>::max()));
+
+  // Accelerations along the velocity (a rolling ball slowing, or one sped up), a sideways part of up to
+  // 9e-4 of it, horizons up to past the stop and back: the same reference.
+  int along = 0;
+  for (int trial = 0; trial < 20000; ++trial) {
+    const Eigen::Vector2d v{2 * unit(random), 2 * unit(random)};
+    const Eigen::Vector2d sideways{-v.y(), v.x()};
+    const double k = (trial % 4 == 0 ? 1 : -1) * (0.05 + std::fabs(unit(random))) / v.norm();
+    const Eigen::Vector2d a = k * v + 9e-4 * k * unit(random) * sideways;
+    const shot::Path path{{0.3 * unit(random), 0.3 * unit(random)}, v, a};
+    const double horizon = 1.5 * std::fabs(unit(random)) / std::fabs(k);
+    if (!shot::certainly_apart(path, D, horizon)) continue;
+    ++along;
+    INFO("trial " << trial);
+    REQUIRE(nearest(path, horizon) > D);
+  }
+  CHECK(along > 12000);
+  // A rolling ball passing 2 D from the point over its whole roll (its path's drift from the straight
+  // line over the horizon, ½ |a| horizon² = 1 m, would hide it): apart; 0.5 D from it: not.
+  CHECK(shot::certainly_apart(shot::Path{{-1, 2 * D}, {1, 0}, {-0.5, 0}}, D, 2.0));
+  CHECK_FALSE(shot::certainly_apart(shot::Path{{-1, 0.5 * D}, {1, 0}, {-0.5, 0}}, D, 2.0));
+  // A sideways part of the acceleration (8e-4 of a radian) curves the path by 0.8 mm over the horizon:
+  // a path that clears by 0.4 mm straight meets the point, one that clears by 1.2 mm does not.
+  CHECK_FALSE(shot::certainly_apart(shot::Path{{-1, D + 4e-4}, {1, 0}, {-0.5, -4e-4}}, D, 2.0));
+  CHECK(shot::certainly_apart(shot::Path{{-1, D + 1.2e-3}, {1, 0}, {-0.5, -4e-4}}, D, 2.0));
+  // Rolling straight at the point: stopping 3 D short of it is apart for any horizon past the stop;
+  // stopping on it is not (the path runs out to the stop, not only to where it is at the horizon).
+  const double stop = 1 - 3 * D;
+  CHECK(shot::certainly_apart(shot::Path{{-1, 0}, {1, 0}, {-1 / (2 * stop), 0}}, D, 10.0));
+  CHECK_FALSE(shot::certainly_apart(shot::Path{{-1, 0}, {1, 0}, {-0.5, 0}}, D, 10.0));
 }
 
 TEST_CASE("Evolution: a ball's phase, its duration and acceleration, worked by hand",

@@ -329,11 +329,13 @@ template <typename Scalar, std::size_t Lanes>
 void compensated_values(const EventPolynomial<Scalar>& p, const std::array<Scalar, Lanes>& t,
                         std::array<Scalar, Lanes>& result, std::array<bool, Lanes>& sure) noexcept {
   using std::fabs;
+  // From the leading coefficient (those above it are zero: starting from c[4] gives the same values).
+  const auto degree = static_cast<std::size_t>(std::max(p.degree, 0));
   std::array<Scalar, Lanes> value, correction, size;
-  value.fill(p.c[4]);
+  value.fill(p.c[degree]);
   correction.fill(Scalar(0));
-  size.fill(fabs(p.c[4]));
-  for (int k = 3; k >= 0; --k) {
+  size.fill(fabs(p.c[degree]));
+  for (int k = static_cast<int>(degree) - 1; k >= 0; --k) {
     const Scalar coefficient = p.c[static_cast<std::size_t>(k)];
     for (std::size_t i = 0; i < Lanes; ++i) {
       const Scalar product = value[i] * t[i], product_error = std::fma(value[i], t[i], -product);

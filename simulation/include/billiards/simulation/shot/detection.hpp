@@ -170,19 +170,43 @@ inline void touching(std::span<double> p, double scale, double radius) {
 /// far above the polynomial's rounding (a few ε S² against the 2 distance · margin its value keeps above
 /// 0). A certificate of no contact that costs a few products, compared squared and without a division:
 /// the closest approach at 0 (r·v ≥ 0), at the horizon (−r·v ≥ |v|² horizon), or between, where its
-/// square is (r × v)²/|v|² (the cross product's rounding, ε |r| |v|, far below the margin's |v| 10⁻⁹ S);
-/// where it does not hold, the polynomial decides.
+/// square is (r × v)²/|v|² (the cross product's rounding, ε |r| |v|, far below the margin's |v| 10⁻⁹ S).
+///
+/// Where that fails, the acceleration's part along the velocity is taken into the line: with α = a·v/|v|²
+/// (as rounded: any α will do) and a⊥ = a − α v, r + v t + ½ a t² = r + v s(t) + ½ a⊥ t², s(t) = t +
+/// ½ α t², so that the centre lies within ½ |a⊥| horizon² (a⊥ bounded with its rounding) of the segment
+/// r + v s for s between s's least and greatest values on [0, horizon] (at the ends and at the vertex
+/// t = −1/α, widened by their rounding), and the segment's closest approach, found as above, less that
+/// drift must clear the same margin. For a rolling ball, a ball sliding without spin, and their paths
+/// relative to a ball at rest, a jaw or a pocket, the acceleration lies along the velocity: over a
+/// rolling ball's long horizon the first test's drift, ½ |a| horizon², spans much of the table, this
+/// one's is at rounding level. Where neither holds, the polynomial decides.
 [[nodiscard]] inline bool certainly_apart(const Path& path, double distance, double horizon) {
   if (!(horizon < std::numeric_limits<double>::max())) return false;
   const Eigen::Vector2d &r = path.position, &v = path.velocity, &a = path.acceleration;
   const double drift = 0.5 * (std::fabs(a.x()) + std::fabs(a.y())) * horizon * horizon;
   const double size = std::fabs(r.x()) + std::fabs(r.y()) + (std::fabs(v.x()) + std::fabs(v.y())) * horizon + drift;
   const double needed = distance + drift + 1e-9 * size + 1e-14 * size * (size / distance);
-  const double vv = v.squaredNorm(), along = -r.dot(v);
-  if (!(along > 0)) return r.squaredNorm() > needed * needed;
-  if (!(along < vv * horizon)) return (r + horizon * v).squaredNorm() > needed * needed;
-  const double cross = r.x() * v.y() - r.y() * v.x();
-  return cross * cross > needed * needed * vv;
+  const double vv = v.squaredNorm(), along = -r.dot(v), cross = r.x() * v.y() - r.y() * v.x();
+  // Whether r + v s, s in [from, to], stays farther than `beyond` from the point.
+  const auto segment_clears = [&](double from, double to, double beyond) {
+    if (!(along > from * vv)) return (r + from * v).squaredNorm() > beyond * beyond;
+    if (!(along < to * vv)) return (r + to * v).squaredNorm() > beyond * beyond;
+    return cross * cross > beyond * beyond * vv;
+  };
+  if (segment_clears(0, horizon, needed)) return true;
+  if (!(vv > 0 && drift > 0)) return false;  // no α without a velocity; no drift: the same test
+  constexpr double epsilon = std::numeric_limits<double>::epsilon();
+  const double alpha = a.dot(v) / vv;
+  const double off_x = a.x() - alpha * v.x(), off_y = a.y() - alpha * v.y();
+  const double rounding =
+      4 * epsilon * (std::fabs(a.x()) + std::fabs(a.y()) + std::fabs(alpha) * (std::fabs(v.x()) + std::fabs(v.y())));
+  const double side = 0.5 * horizon * horizon * (std::fabs(off_x) + std::fabs(off_y) + rounding);
+  const double end = horizon + 0.5 * alpha * horizon * horizon;
+  const double widening = 4 * epsilon * (horizon + std::fabs(end));
+  double low = std::min(0.0, end), high = std::max(0.0, end);
+  if (alpha < 0 && -1 / alpha < horizon) high = std::max(high, -0.5 / alpha);
+  return segment_clears(low - widening, high + widening, needed - drift + side);
 }
 
 /// A time after 0 before which a contact polynomial p = c0 + c1 t + … + c4 t⁴ (its coefficients as given,
