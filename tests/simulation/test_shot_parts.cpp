@@ -102,6 +102,70 @@ TEST_CASE("Detection: a contact's lower bound never lies after its exact first r
   }
 }
 
+// nose_line_bracket, on which a shot queues a cushion's contact before placing it, against the exact first
+// root of the nose line's polynomial as given (Sturm's sequence in exact arithmetic): the root lies
+// between its ends and nose_line_contact places it there; it is empty where no root lies before the
+// horizon. Families: balls approaching the line from up to 2 m at up to 6 m/s with the cloth's
+// accelerations either way; balls slowing to a stop within 10⁻¹⁶ to 10⁻⁶ (relative) of the line, where
+// the closed form's root is off by up to the square root of the precision (a double root), far more than
+// the bracket's width; and balls moving away.
+TEST_CASE("Detection: a cushion's bracket holds its exact first root", "[simulation][shot][detection]") {
+  std::mt19937_64 random(2027);
+  std::uniform_real_distribution<double> unit(0, 1);
+  const CushionSegment cushion{{0, 0}, {2, 0}, {0, 1}};  // the nose along the x axis, the table above it
+  for (const char* family : {"approach", "stopping at the line", "moving away"}) {
+    int bracketed = 0, roots = 0;
+    for (int k = 0; k < 3000; ++k) {
+      shot::Path path;
+      const double gap = std::pow(10.0, -9 + 9.3 * unit(random));  // of the centre from R above the line
+      path.position = {2 * unit(random), R + gap};
+      if (std::string(family) == "stopping at the line") {
+        // q = gap + v t + ½ a t² touching 0 at its vertex: a = v²/(2 gap), moved by 10^(−16…−6).
+        const double v = 0.01 + 6 * unit(random), shift = std::pow(10.0, -16 + 10 * unit(random));
+        path.velocity = {0.3 * (2 * unit(random) - 1), -v};
+        path.acceleration = {0, v * v / (2 * gap) * (1 + (unit(random) < 0.5 ? -shift : shift))};
+      } else {
+        const double sign = std::string(family) == "approach" ? -1 : 1;
+        path.velocity = {2 * unit(random) - 1, sign * (0.01 + 6 * unit(random))};
+        path.acceleration = {2 * unit(random) - 1, 4 * (2 * unit(random) - 1)};
+      }
+      const double horizon = std::pow(10.0, -3 + 4 * unit(random));
+      const std::array<double, 3> q = shot::nose_line_polynomial(path, cushion, R);
+      const auto [low, high] = shot::nose_line_bracket(path, cushion, R, horizon);
+      const std::optional<double> exact = billiards::detail::exact::earliest_contact_after_zero(q, horizon);
+      INFO(family << ": q = " << q[0] << ", " << q[1] << ", " << q[2] << ", horizon " << horizon
+                  << ", bracket " << low << ", " << high);
+      if (exact) ++roots;
+      if (low == 0 && high == 0) continue;
+      ++bracketed;
+      REQUIRE(exact);
+      REQUIRE(0 < low);
+      REQUIRE(low < *exact);
+      REQUIRE(std::nextafter(*exact, never) < high);
+      REQUIRE(high < horizon);
+      const double placed = shot::nose_line_contact(path, cushion, R, horizon);
+      REQUIRE(low < placed);
+      REQUIRE(placed < high);
+    }
+    INFO(family << ": " << bracketed << " bracketed, " << roots << " roots");
+    if (std::string(family) == "approach") CHECK(bracketed > roots * 9 / 10);
+    if (std::string(family) == "moving away") CHECK(bracketed == 0);
+  }
+}
+
+// nose_side: where along the nose a centre lies, an end's margin left undecided.
+TEST_CASE("Detection: the side of a cushion's nose a centre lies on", "[simulation][shot][detection]") {
+  const CushionSegment cushion{{0, 0}, {2, 0}, {0, 1}};
+  const shot::Path path{{-1, 0.5}, {1, 0}, {0, 0}};  // along the nose, 0.5 m in front of it
+  CHECK(shot::nose_side(path, cushion, 0.5) == 2);   // x = −0.5: before the start
+  CHECK(shot::nose_side(path, cushion, 2) == 1);     // x = 1
+  CHECK(shot::nose_side(path, cushion, 3.5) == 3);   // x = 2.5: past the end
+  CHECK(shot::nose_side(path, cushion, 1) == 0);     // x = 0: at the start
+  CHECK(shot::nose_side(path, cushion, 1 + 1e-10) == 0);
+  CHECK(shot::nose_side(path, cushion, 1 + 1e-8) == 1);
+  CHECK(shot::nose_side(path, cushion, 3 - 1e-10) == 0);  // x within 10⁻¹⁰ of the end
+}
+
 TEST_CASE("Detection: the next contact of a path, worked by hand", "[simulation][shot][detection]") {
   SECTION("two balls closing at 2 m/s from 1 m apart touch when their centres are 2R apart") {
     const shot::Path relative{{1, 0}, {-2, 0}, {0, 0}};

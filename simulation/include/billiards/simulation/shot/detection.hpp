@@ -122,17 +122,47 @@ inline void touching(std::span<double> p, double scale, double radius) {
   return nearest > R * (1 + 1e-9);
 }
 
-/// When a ball of radius R on `path` reaches the nose line of `cushion` within `horizon`: the earliest root
-/// of its cushion polynomial; +∞ if none. Cushions on one line share it.
-[[nodiscard]] inline double nose_line_contact(const Path& path, const CushionSegment& cushion, double R,
-                                              double horizon) {
+/// The cushion polynomial of a ball of radius R on `path` and the nose line of `cushion` (its distance
+/// from the line less R), a sliver of overlap counted as touching.
+[[nodiscard]] inline std::array<double, 3> nose_line_polynomial(const Path& path,
+                                                               const CushionSegment& cushion, double R) {
   std::array<double, 3> q =
       cushion_polynomial((path.position - cushion.start).dot(cushion.normal),
                          path.velocity.dot(cushion.normal), path.acceleration.dot(cushion.normal), R);
   touching(q, 1, R);
+  return q;
+}
+
+/// When a ball of radius R on `path` reaches the nose line of `cushion` within `horizon`: the earliest root
+/// of its cushion polynomial; +∞ if none. Cushions on one line share it.
+[[nodiscard]] inline double nose_line_contact(const Path& path, const CushionSegment& cushion, double R,
+                                              double horizon) {
+  const std::array<double, 3> q = nose_line_polynomial(path, cushion, R);
   constexpr double none = std::numeric_limits<double>::infinity();
   if (stays_apart(q, horizon)) return none;
   return earliest_contact(q, horizon).value_or(none);
+}
+
+/// Times (low, high) between which nose_line_contact's root lies, shown without placing it: for a ball
+/// apart from the line and approaching it (q0 > 0 > q1), the closed-form root less and more 2⁻³⁰ of
+/// itself, where q as evaluated exceeds twice its rounding bound at `low` and lies below minus that at
+/// `high`, and high < horizon. A quadratic falling at 0 is above 0 before its first root and below 0
+/// between its roots, so that its first root lies in (low, high), and nose_line_contact, within 16 units
+/// in the last place of it, returns a time in there too. {0, 0} where that is not shown (no root before
+/// the horizon, one near it, a graze): then only solving tells.
+[[nodiscard]] inline std::pair<double, double> nose_line_bracket(const Path& path,
+                                                                 const CushionSegment& cushion, double R,
+                                                                 double horizon) {
+  const std::array<double, 3> q = nose_line_polynomial(path, cushion, R);
+  if (!(q[0] > 0 && q[1] < 0)) return {0, 0};
+  const double root = billiards::detail::falling_quadratic_root(q[0], q[1], q[2]);
+  const double low = root * (1 - 0x1p-30), high = root * (1 + 0x1p-30);
+  if (!(low > 0 && high < horizon)) return {0, 0};
+  const billiards::detail::EventPolynomial<double> p{{q[0], q[1], q[2], 0, 0}, 2};
+  using billiards::detail::evaluate, billiards::detail::evaluation_error;
+  if (evaluate(p, low) > 2 * evaluation_error(p, low) && evaluate(p, high) < -2 * evaluation_error(p, high))
+    return {low, high};
+  return {0, 0};
 }
 
 /// Whether the centre on `path` lies between the ends of `cushion`'s nose at time t (beyond them the
@@ -141,6 +171,21 @@ inline void touching(std::span<double> p, double scale, double radius) {
   const Eigen::Vector2d along = cushion.end - cushion.start;
   const double f = (path.at(t) - cushion.start).dot(along);
   return f >= 0 && f <= along.squaredNorm();
+}
+
+/// Where the centre on `path` lies along `cushion`'s nose at time t, with a margin of a billionth of the
+/// nose's length squared on the projection (far above its rounding): 1 between the ends, 2 before the
+/// start, 3 past the end, 0 within the margin of an end. Where the two ends of a nose_line_bracket give
+/// the same side, within_nose gives the same at every time between: the projection, a quadratic in t,
+/// lies between its values at the ends, but for its curvature over so short a time, far below the margin.
+[[nodiscard]] inline int nose_side(const Path& path, const CushionSegment& cushion, double t) {
+  const Eigen::Vector2d along = cushion.end - cushion.start;
+  const double f = (path.at(t) - cushion.start).dot(along), length = along.squaredNorm();
+  const double margin = 1e-9 * length;
+  if (f > margin && f < length - margin) return 1;
+  if (f < -margin) return 2;
+  if (f > length + margin) return 3;
+  return 0;
 }
 
 /// Whether cushions a and b lie on one nose line along an axis (a rail's two cushions beside a side

@@ -415,8 +415,11 @@ class Shot {
   void predict_pairs(std::size_t i, std::size_t first_other, std::size_t skip, detail::ExcludedContact excluded);
   // The path of ball j relative to ball i's reference state at time `base`: see the definition below.
   [[nodiscard]] shot::Path relative_path(std::size_t i, std::size_t j, double base) const;
-  // A current ball–ball prediction queued at a bound of its time placed: see the definition below.
+  // A current prediction queued at a bound of its time placed: see the definition below.
   void place(const Predicted& p);
+  // Ball i's contact with cushion k queued at the start of a bracket of its root: see the definition below.
+  void queue_bracketed_cushion(std::size_t i, std::size_t k, std::pair<double, double> bracket,
+                               double solve_horizon, double& horizon, double& first_own);
 
   // Ball i changed now: its old predictions are stale; its phase begins again and it is predicted against
   // everything but `skip` (the other ball of a ball–ball event, predicted with it already).
@@ -593,13 +596,30 @@ inline void Shot::predict(std::size_t i, std::size_t first_other, std::size_t sk
   if (e.phase.moving) {
     // A cushion whose line the centre's box over the whole horizon keeps farther than R from is passed
     // over: its polynomial stays above 0 there. Cushions on one nose line share its root, found once (the
-    // horizon it brings in ends at that root).
-    double line_root = std::numeric_limits<double>::infinity();
+    // horizon it brings in ends at that root). A root bracketed without placing it (most: the ball
+    // changes first) is queued at the bracket's start and placed when that comes first (place), with the
+    // bracket's end as the horizon.
+    double line_root = std::numeric_limits<double>::infinity(), line_horizon = horizon;
+    std::pair<double, double> bracket{0, 0};
     for (std::uint64_t within = within_reach(box); within != 0; within &= within - 1) {
       // Cushions on one line are within reach together (the test reads the line alone, bit for bit the
       // same): the previous one's root is this one's.
       const auto k = static_cast<std::size_t>(std::countr_zero(within));
-      if (!(k > 0 && on_previous_line_[k])) line_root = shot::nose_line_contact(me, cushions_[k], R, horizon);
+      if (!(k > 0 && on_previous_line_[k])) {
+        line_horizon = horizon;
+        line_root = std::numeric_limits<double>::infinity();
+        bracket = shot::nose_line_bracket(me, cushions_[k], R, horizon);
+        if (!(bracket.first > 0)) line_root = shot::nose_line_contact(me, cushions_[k], R, horizon);
+      }
+      if (bracket.first > 0) {
+        const int side = shot::nose_side(me, cushions_[k], bracket.first);
+        if (side != 0 && side == shot::nose_side(me, cushions_[k], bracket.second)) {
+          if (side == 1) queue_bracketed_cushion(i, k, bracket, line_horizon, horizon, first_own);
+          continue;
+        }
+        if (line_root == std::numeric_limits<double>::infinity())
+          line_root = shot::nose_line_contact(me, cushions_[k], R, line_horizon);
+      }
       if (line_root != std::numeric_limits<double>::infinity() && shot::within_nose(me, cushions_[k], line_root))
         found(line_root, ShotEvent::Kind::cushion, k);
     }
@@ -704,15 +724,42 @@ inline shot::Path Shot::relative_path(std::size_t i, std::size_t j, double base)
           o.phase.acceleration - e.phase.acceleration};
 }
 
-// A current ball–ball prediction queued at a bound of its time: its contact placed and queued, if any.
-// The two balls' versions being those it was predicted with, their reference states are too (every
-// change of a state changes its ball's version), so that the polynomial is the one predict_pairs had.
+// A current prediction queued at a bound of its time: its contact placed and queued, if any. The balls'
+// versions being those it was predicted with, their reference states are too (every change of a state
+// changes its ball's version), so that the polynomial is the one predict or predict_pairs had. A ball's
+// cushion was queued at the start of a bracket of its root (shot::nose_line_bracket), which its root lies
+// past. Checked where invariants are: a contact placed before its bound would break the order of events.
 inline void Shot::place(const Predicted& p) {
-  const shot::Path relative = relative_path(p.ball, p.other, p.base);
-  const std::optional<double> t =
-      earliest_contact(shot::ball_contact_polynomial(relative, physics_.radius), p.horizon);
-  if (t)
-    queue_.push(p.ball, {p.base + *t, ShotEvent::Kind::ball, false, p.ball, p.other, p.version, p.other_version});
+  double t = std::numeric_limits<double>::infinity();
+  if (p.kind == ShotEvent::Kind::cushion) {
+    const Entry& e = balls_[p.ball];
+    const shot::Path me{{e.state.position.x(), e.state.position.y()},
+                        {e.state.velocity.x(), e.state.velocity.y()},
+                        e.phase.acceleration};
+    t = shot::nose_line_contact(me, cushions_[p.other], physics_.radius, p.horizon);
+  } else {
+    const shot::Path relative = relative_path(p.ball, p.other, p.base);
+    t = earliest_contact(shot::ball_contact_polynomial(relative, physics_.radius), p.horizon)
+            .value_or(std::numeric_limits<double>::infinity());
+  }
+  if (t == std::numeric_limits<double>::infinity()) return;
+  if (options_.check_invariants && !(p.base + t >= p.time))
+    throw BrokenInvariant("billiards::simulation::Shot: at t = " + detail::shortest(now_) + " s, ball " +
+                          std::to_string(p.ball) + "'s " + kind_name(p.kind) + " contact with " +
+                          std::to_string(p.other) + " placed at " + detail::shortest(p.base + t) +
+                          " s, before its bound " + detail::shortest(p.time) + " s");
+  queue_.push(p.ball, {p.base + t, p.kind, false, p.ball, p.other, p.version, p.other_version});
+}
+
+// Ball i's contact with cushion k, its root in `bracket` (shot::nose_line_bracket over `solve_horizon`),
+// queued at the bracket's start, to be placed when that comes first; the ball's horizon brought in to the
+// bracket's end and its first own event to its start.
+inline void Shot::queue_bracketed_cushion(std::size_t i, std::size_t k, std::pair<double, double> bracket,
+                                          double solve_horizon, double& horizon, double& first_own) {
+  queue_.push(i, {now_ + bracket.first, ShotEvent::Kind::cushion, true, i, k, balls_[i].version, 0, now_,
+                  solve_horizon});
+  horizon = std::min(horizon, bracket.second);
+  first_own = std::min(first_own, now_ + bracket.first);
 }
 
 // The cushions' nose lines (start, normal) and the jaws' and then the pockets' circles (centre, and the
