@@ -137,8 +137,9 @@ ExactContact exact_earliest(Rational p, const numeric& horizon) {
         l = mid;
       }
     }
-    // Reached from above: q > 0 just before it.
-    if (evaluate(q, l) > 0) return {true, l, h};
+    // Reached from above: q > 0 just before it. A root found exactly (q(h) = 0: a root at the horizon,
+    // or at a point of the bisection) is the point h.
+    if (evaluate(q, l) > 0) return evaluate(q, h).is_zero() ? ExactContact{true, h, h} : ExactContact{true, l, h};
     // No contact: continue after it, from a point where q is not zero and no other root lies between.
     numeric next = h;
     if (evaluate(q, h).is_zero()) {
@@ -166,10 +167,10 @@ std::string describe(const std::array<Scalar, 5>& c, Scalar horizon) {
   return text + "), T = " + billiards::detail::to_text(horizon);
 }
 
-// Whether the exact p stays above 16 ε Σ |c_k| T^k on [0, T], as detail::stays_above claims where it
-// holds: p less that bound is positive at 0 and has no root in (0, T] (its Sturm sequence).
+// Whether the exact p stays above `multiple` ε Σ |c_k| T^k on [0, T], as detail::stays_above claims
+// (16) where it holds: p less that bound is positive at 0 and has no root in (0, T] (its Sturm sequence).
 template <typename Scalar>
-bool exceeds_rounding_bound(const Rational& p, Scalar horizon) {
+bool exceeds_rounding_bound(const Rational& p, Scalar horizon, int multiple = 16) {
   const numeric T = billiards::accuracy::exact_rational(horizon);
   numeric size = 0, power = 1;
   for (const numeric& c : p) {
@@ -177,7 +178,7 @@ bool exceeds_rounding_bound(const Rational& p, Scalar horizon) {
     power *= T;
   }
   Rational q = p;
-  q[0] -= 16 * billiards::accuracy::exact_rational(std::numeric_limits<Scalar>::epsilon()) * size;
+  q[0] -= multiple * billiards::accuracy::exact_rational(std::numeric_limits<Scalar>::epsilon()) * size;
   q = trimmed(q);
   if (q.empty() || !(q[0] > 0)) return false;
   return q.size() < 2 || roots_in(sturm(q), 0, T) == 0;
@@ -204,6 +205,14 @@ void check(const std::array<Scalar, 5>& c, Scalar horizon, Row& row) {
     ++row.proven_apart;
     if (!exceeds_rounding_bound(trimmed(p), horizon))
       fail(row.unsound_proofs, "proven apart by its Bernstein coefficients, but within 16 ε Σ|c_k| T^k of 0");
+  }
+  // Touching at 0 and separating, proven apart on (0, T] by p / t (detail::separates_for_good): the
+  // exact p / t positive on all of [0, T].
+  if (billiards::detail::separates_for_good(as_held, horizon)) {
+    ++row.proven_apart;
+    const Rational held = trimmed(p), over_t(held.begin() + 1, held.end());
+    if (!exceeds_rounding_bound(over_t, horizon, 0))
+      fail(row.unsound_proofs, "touching and separating, proven apart, but p / t reaches 0 on [0, T]");
   }
   if (exact.found) ++row.contacts;
   if (exact.found && exact.low.is_zero() && exact.high.is_zero()) {
@@ -306,7 +315,7 @@ void check_tiny_gap(std::mt19937_64& random, Row& row) {
 class Families {
  public:
   explicit Families(std::uint64_t seed) : random_(seed) {}
-  static constexpr int count = 11;
+  static constexpr int count = 12;
   static const char* name(int family) {
     if (family == count) return "tiny gaps at t = 0, 1e-15 (float: 1e-6) to 1e-3 R, against the inputs' exact root";
     static const char* names[count] = {"two balls on the cloth (phases' accelerations)",
@@ -319,7 +328,8 @@ class Families {
                                        "lower degrees (c4 = 0, c3 = 0, …)",
                                        "the horizon within a few ulps of a root",
                                        "near grazes, 1e-15 to 1e-9 R either way, in 0.1 to 4 s",
-                                       "near grazes, 1e-15 to 1e-9 R either way, at 60 to 100 s"};
+                                       "near grazes, 1e-15 to 1e-9 R either way, at 60 to 100 s",
+                                       "touching at t = 0 and separating, then a graze or a miss by 1e-15 to 1"};
     return names[family];
   }
 
@@ -356,17 +366,18 @@ class Families {
         return {c, uniform(0, 5)};
       }
       case 8: {
-        // Two roots and a quadratic without any, rounded; the horizon at the first root, moved by up to
-        // 4 ulps either way: p at the horizon is within rounding of 0, from either side.
+        // Two roots and a quadratic without any, rounded (one time in four a line, whose least value on
+        // the window is at the horizon: there only the margin of the test of no contact by its terms
+        // tells the two apart); the horizon at the first root, moved by up to 4 ulps either way: p at the
+        // horizon is within rounding of 0, from either side.
         const double r1 = uniform(0.01, 2), r2 = r1 + uniform(0, 2);
-        auto [c, horizon] = from_roots({r1, r2}, positive_quadratic(), 1);
-        double end = r1;
-        const int ulps = static_cast<int>(unit_(random_) * 9) - 4;
-        for (int k = 0; k < std::abs(ulps); ++k) end = std::nextafter(end, ulps < 0 ? 0.0 : 10.0);
-        return {c, end};
+        auto [c, horizon] = unit_(random_) < 0.25 ? from_roots({r1}, {}, 1)
+                                                  : from_roots({r1, r2}, positive_quadratic(), 1);
+        return {c, near(r1)};
       }
       case 9: return graze(false);
       case 10: return graze(true);
+      case 11: return touching_then_graze();
       default: {
         auto [c, horizon] = pair();
         const int degree = static_cast<int>(unit_(random_) * 3);  // 0, 1 or 2 coefficients kept above c2
@@ -381,6 +392,12 @@ class Families {
   double uniform(double a, double b) { return a + (b - a) * unit_(random_); }
   double sign() { return unit_(random_) < 0.5 ? -1.0 : 1.0; }
   double root() { return uniform(0, 4); }
+  // `x` moved by up to 4 ulps either way.
+  double near(double x) {
+    const int ulps = static_cast<int>(unit_(random_) * 9) - 4;
+    for (int k = 0; k < std::abs(ulps); ++k) x = std::nextafter(x, ulps < 0 ? 0.0 : 10.0);
+    return x;
+  }
   std::array<double, 3> positive_quadratic() {
     // a (t² + b t + c) with b² < 4c: no real root.
     const double b = uniform(-2, 2), c = b * b / 4 + uniform(0.01, 2);
@@ -425,6 +442,24 @@ class Families {
     const Eigen::Vector2d n = normal * (distance * (1 + delta));
     const Eigen::Vector2d dr = n - u * (s * t1 + 0.5 * a * t1 * t1), dv = u * s, da = u * a;
     const std::array<double, 5> c = billiards::contact_polynomial<double>(dr, dv, da, distance);
+    return {c, unit_(random_) < 0.25 ? t1 : t1 * uniform(1, 1.5)};
+  }
+
+  // Bodies touching at t = 0 and separating (c0 = 0 < c1): p = t ((t − t1)² + σ)(α + β t), α > 0, β ≥ 0
+  // (β = 0 one time in three: a cubic), σ = ±δ t1², δ from 1e-15 to 1 (the pair meets again in a graze
+  // where σ ≤ 0, and misses by δ where σ > 0), rounded; the window ends after t1 (or, one time in four,
+  // at it). One time in four instead p = t (α − β t) with the window's end within 4 ulps of α/β.
+  std::pair<std::array<double, 5>, double> touching_then_graze() {
+    if (unit_(random_) < 0.25) {
+      // One time in four p = t (α − β t), the horizon within 4 ulps of its root α/β, either way.
+      const double alpha = uniform(0.1, 10), beta = uniform(0.1, 10);
+      return {{0, alpha, -beta, 0, 0}, near(alpha / beta)};
+    }
+    const double t1 = uniform(0.01, 4), sigma = sign() * std::pow(10.0, -uniform(0, 15)) * t1 * t1;
+    const double alpha = uniform(0.1, 10), beta = unit_(random_) < 1.0 / 3 ? 0.0 : uniform(0, 10);
+    // (t² − 2 t1 t + t1² + σ)(α + β t), times t.
+    const double a0 = t1 * t1 + sigma, a1 = -2 * t1;
+    const std::array<double, 5> c{0, a0 * alpha, a0 * beta + a1 * alpha, a1 * beta + alpha, beta};
     return {c, unit_(random_) < 0.25 ? t1 : t1 * uniform(1, 1.5)};
   }
 

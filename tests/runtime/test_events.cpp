@@ -159,6 +159,59 @@ TEMPLATE_TEST_CASE("earliest_contact at t = 0: touching or overlapping, approach
   REQUIRE(back);
   CHECK(ulps(*back, S(1)) <= 16);
   CHECK(*back > 0);
+  // Touching and separating, then grazing at t = 1: t (t − 1)² = t³ − 2t² + t, a contact at 1 exactly
+  // (p / t touches 0 there: no proof of staying apart may pass over it).
+  const std::optional<S> graze = billiards::earliest_contact(std::array<S, 5>{0, 1, -2, 1, 0}, S(2));
+  REQUIRE(graze);
+  CHECK(ulps(*graze, S(1)) <= 16);
+  // Missing that graze by 2^-20 (t ((t − 1)² + 2^-20): p / t above 0 throughout) is no contact; touching
+  // again by as much (t ((t − 1)² − 2^-20)) is one, 2^-10 before t = 1.
+  const S miss = std::ldexp(S(1), -20);
+  CHECK_FALSE(billiards::earliest_contact(std::array<S, 5>{0, 1 + miss, -2, 1, 0}, S(2)));
+  const std::optional<S> touch = billiards::earliest_contact(std::array<S, 5>{0, 1 - miss, -2, 1, 0}, S(2));
+  REQUIRE(touch);
+  CHECK(ulps(*touch, 1 - std::ldexp(S(1), -10)) <= 16);
+}
+
+// The test of no contact by the terms (c0 less every negative term at the horizon) keeps a margin above
+// its rounding: for these falling quadratics, found in exact rational arithmetic, the terms as rounded
+// sum to just above 0 at the horizon (5.6e-17, 1.1e-16, 4.4e-16) where the exact polynomial is at or
+// below 0 (−3.5e-16, −1.0e-16, −3.9e-17): a contact by the horizon, for bodies apart at 0 and, over t,
+// for bodies touching at 0 and separating.
+TEST_CASE("earliest_contact: terms above 0 by less than their rounding prove nothing", "[events]") {
+  const std::array<std::array<double, 4>, 3> cases{{{6.000191610392548, 7.105993908980331, 0.7536222604556637,
+                                                     0.7798807685392913},
+                                                    {6.7059375522575575, 8.660507776153864, 1.1010154034886839,
+                                                     0.7101912300132364},
+                                                    {7.4332100207262375, 3.643141761225411, 1.0078645239637576,
+                                                     1.4548120945688918}}};
+  for (const auto& [a, b, c, horizon] : cases) {
+    INFO("a = " << a << ", b = " << b << ", c = " << c << ", horizon " << horizon);
+    const std::optional<double> apart = billiards::earliest_contact(std::array<double, 3>{a, -b, -c}, horizon);
+    REQUIRE(apart);
+    CHECK(ulps(*apart, horizon) <= 16);
+    const std::optional<double> touching =
+        billiards::earliest_contact(std::array<double, 4>{0, a, -b, -c}, horizon);
+    REQUIRE(touching);
+    CHECK(ulps(*touching, horizon) <= 16);
+  }
+}
+
+TEMPLATE_TEST_CASE("detail::separates_for_good: touching and separating, apart to the horizon", "[events]", float,
+                   double) {
+  using S = TestType;
+  using billiards::detail::EventPolynomial, billiards::detail::separates_for_good;
+  // p / t = 1 + t: its terms alone show it above 0.
+  CHECK(separates_for_good(EventPolynomial<S>{{0, 1, 1, 0, 0}, 2}, S(10)));
+  // p / t = (1 − t)²: above 0 on [0, 1/2] (at least 1/4) by its Bernstein coefficients, not by its terms
+  // (1 − 2 · 1/2 = 0); touching 0 at t = 1 within [0, 2].
+  CHECK(separates_for_good(EventPolynomial<S>{{0, 1, -2, 1, 0}, 3}, S(0.5)));
+  CHECK_FALSE(separates_for_good(EventPolynomial<S>{{0, 1, -2, 1, 0}, 3}, S(2)));
+  // Not touching (apart, or overlapping), not separating, or no window: not this proof's to give.
+  CHECK_FALSE(separates_for_good(EventPolynomial<S>{{S(1e-3), 1, 1, 0, 0}, 2}, S(1)));
+  CHECK_FALSE(separates_for_good(EventPolynomial<S>{{S(-1e-3), 1, 1, 0, 0}, 2}, S(1)));
+  CHECK_FALSE(separates_for_good(EventPolynomial<S>{{0, 0, 1, 0, 0}, 2}, S(1)));
+  CHECK_FALSE(separates_for_good(EventPolynomial<S>{{0, 1, 1, 0, 0}, 2}, S(0)));
 }
 
 TEMPLATE_TEST_CASE("earliest_contact: a root below the smallest step of the type is reported at that step",

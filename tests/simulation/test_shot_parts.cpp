@@ -9,7 +9,9 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <optional>
 #include <random>
@@ -108,12 +110,14 @@ TEST_CASE("Detection: a contact's lower bound never lies after its exact first r
 // horizon. Families: balls approaching the line from up to 2 m at up to 6 m/s with the cloth's
 // accelerations either way; balls slowing to a stop within 10⁻¹⁶ to 10⁻⁶ (relative) of the line, where
 // the closed form's root is off by up to the square root of the precision (a double root), far more than
-// the bracket's width; and balls moving away.
+// the bracket's width; balls approaching without an acceleration across the line (a polynomial of degree
+// 1); and balls moving away. bracketed_nose_line_root, which places a bracketed root, gives what
+// nose_line_contact gives on every one of them, bit for bit.
 TEST_CASE("Detection: a cushion's bracket holds its exact first root", "[simulation][shot][detection]") {
   std::mt19937_64 random(2027);
   std::uniform_real_distribution<double> unit(0, 1);
   const CushionSegment cushion{{0, 0}, {2, 0}, {0, 1}};  // the nose along the x axis, the table above it
-  for (const char* family : {"approach", "stopping at the line", "moving away"}) {
+  for (const char* family : {"approach", "stopping at the line", "straight at the line", "moving away"}) {
     int bracketed = 0, roots = 0;
     for (int k = 0; k < 3000; ++k) {
       shot::Path path;
@@ -125,9 +129,10 @@ TEST_CASE("Detection: a cushion's bracket holds its exact first root", "[simulat
         path.velocity = {0.3 * (2 * unit(random) - 1), -v};
         path.acceleration = {0, v * v / (2 * gap) * (1 + (unit(random) < 0.5 ? -shift : shift))};
       } else {
-        const double sign = std::string(family) == "approach" ? -1 : 1;
+        const double sign = std::string(family) == "moving away" ? 1 : -1;
         path.velocity = {2 * unit(random) - 1, sign * (0.01 + 6 * unit(random))};
         path.acceleration = {2 * unit(random) - 1, 4 * (2 * unit(random) - 1)};
+        if (std::string(family) == "straight at the line") path.acceleration.y() = 0;
       }
       const double horizon = std::pow(10.0, -3 + 4 * unit(random));
       const std::array<double, 3> q = shot::nose_line_polynomial(path, cushion, R);
@@ -136,6 +141,9 @@ TEST_CASE("Detection: a cushion's bracket holds its exact first root", "[simulat
       INFO(family << ": q = " << q[0] << ", " << q[1] << ", " << q[2] << ", horizon " << horizon
                   << ", bracket " << low << ", " << high);
       if (exact) ++roots;
+      const double contact = shot::nose_line_contact(path, cushion, R, horizon);
+      REQUIRE(std::bit_cast<std::uint64_t>(shot::bracketed_nose_line_root(q, horizon)) ==
+              std::bit_cast<std::uint64_t>(contact));
       if (low == 0 && high == 0) continue;
       ++bracketed;
       REQUIRE(exact);
@@ -143,12 +151,12 @@ TEST_CASE("Detection: a cushion's bracket holds its exact first root", "[simulat
       REQUIRE(low < *exact);
       REQUIRE(std::nextafter(*exact, never) < high);
       REQUIRE(high < horizon);
-      const double placed = shot::nose_line_contact(path, cushion, R, horizon);
-      REQUIRE(low < placed);
-      REQUIRE(placed < high);
+      REQUIRE(low < contact);
+      REQUIRE(contact < high);
     }
     INFO(family << ": " << bracketed << " bracketed, " << roots << " roots");
-    if (std::string(family) == "approach") CHECK(bracketed > roots * 9 / 10);
+    if (std::string(family) == "approach" || std::string(family) == "straight at the line")
+      CHECK(bracketed > roots * 9 / 10);
     if (std::string(family) == "moving away") CHECK(bracketed == 0);
   }
 }

@@ -210,11 +210,7 @@ template <typename Scalar>
     // |Δv| = μ_s g t, at most (2/7)|u0| within the phase: every term below is built from it, so none
     // overflows where the result does not (5 μ_s g alone may), and t = 0 changes nothing.
     const Scalar speed_change = t > 0 ? cloth.sliding_friction * g * t : Scalar(0);
-    later.velocity = horizontal_velocity - speed_change * direction;
     later.position = ball.position + horizontal_velocity * t - (speed_change * t / Scalar(2)) * direction;
-    const Vector turn = (Scalar(5) * speed_change / (Scalar(2) * radius)) * up.cross(direction);
-    later.angular_velocity.x() += turn.x();
-    later.angular_velocity.y() += turn.y();
     if (ends) {
       // sliding.rolling_velocity: v0 − (2/7) u0 (the 5/7 rule), from the slip itself rather than from
       // the slide time, which may round to 0 or lose digits where μ_s g is huge beside the slip.
@@ -223,6 +219,11 @@ template <typename Scalar>
       const Vector rolling_spin = up.cross(later.velocity) / radius;
       later.angular_velocity.x() = rolling_spin.x();
       later.angular_velocity.y() = rolling_spin.y();
+    } else {
+      later.velocity = horizontal_velocity - speed_change * direction;
+      const Vector turn = (Scalar(5) * speed_change / (Scalar(2) * radius)) * up.cross(direction);
+      later.angular_velocity.x() += turn.x();
+      later.angular_velocity.y() += turn.y();
     }
   } else if (phase == Motion::rolling) {
     // rolling.velocity, .position (assumption.rolling_resistance).

@@ -601,6 +601,32 @@ template <typename Scalar>
                                 a[0] + Scalar(0.75) * a[1] + a[2] / 2 + a[3] / 4, a[0] + a[1] + a[2] + a[3] + a[4]};
   return bernstein_above(b, margin, 3);
 }
+
+/// Whether p stays above its rounding on [0, horizon] by the plainest bound: c0 less every negative term
+/// at the horizon exceeds (4 d + 4) ε Σ |c_k| horizon^k (each term c_k t^k on [0, horizon] is at least
+/// its value at the horizon where negative, at least 0 elsewhere; the margin exceeds the bound's own
+/// rounding).
+template <typename Scalar>
+[[nodiscard]] bool above_by_terms(const EventPolynomial<Scalar>& p, Scalar horizon) noexcept {
+  Scalar lowest = p.c[0], size = std::fabs(p.c[0]), power = 1;
+  for (int k = 1; k <= p.degree; ++k) {
+    power *= horizon;
+    const Scalar term = p.c[static_cast<std::size_t>(k)] * power;
+    if (term < 0) lowest += term;
+    size += std::fabs(term);
+  }
+  return lowest > Scalar(4 * p.degree + 4) * std::numeric_limits<Scalar>::epsilon() * size;
+}
+
+/// Whether bodies that touch at 0 (p.c[0] = 0) and separate (p.c[1] > 0) stay apart on (0, horizon]:
+/// p = t q with q = c1 + c2 t + … exactly, and q stays above its rounding on [0, horizon]
+/// (above_by_terms, else its Bernstein coefficients: stays_above), so that p has no root there.
+template <typename Scalar>
+[[nodiscard]] bool separates_for_good(const EventPolynomial<Scalar>& p, Scalar horizon) noexcept {
+  if (!(p.c[0] == 0 && p.c[1] > 0 && horizon > 0)) return false;
+  EventPolynomial<Scalar> q{{p.c[1], p.c[2], p.c[3], p.c[4], 0}, p.degree - 1};
+  return above_by_terms(q, horizon) || stays_above(q, horizon);
+}
 }  // namespace detail
 
 /// The earliest time t in [0, horizon] at which the bodies whose contact polynomial is `c` (c[k] the
@@ -609,7 +635,9 @@ template <typename Scalar>
 ///
 /// - At t = 0 a contact is reported only where the bodies touch or overlap (c[0] ≤ 0) and approach: the
 ///   first of c[1], c[2], … that is not zero is negative. Bodies that touch while separating, or at exact
-///   tangency (c[0] = c[1] = 0, c[2] > 0), have none there.
+///   tangency (c[0] = c[1] = 0, c[2] > 0), have none there. Bodies that touch and separate (c[0] = 0 <
+///   c[1]: a pair just after its contact) are shown apart on all of (0, horizon] at once where the
+///   polynomial over t stays above its rounding there (detail::separates_for_good).
 /// - Later, a contact is the first t where the polynomial, with its coefficients exactly as given,
 ///   reaches 0 from above: a root where it decreases, or a graze, a root where it touches 0 and rises
 ///   again (likewise at the horizon). This is decided exactly: a contact is reported if and only if
@@ -636,7 +664,8 @@ template <typename Scalar, std::size_t N>
   p.degree = static_cast<int>(N) - 1;
   p = detail::trimmed(p);
   if (p.degree < 1) return std::nullopt;  // a constant: nothing changes
-  // Touching or overlapping now: a contact iff the first non-zero change is an approach.
+  // Touching or overlapping now: a contact iff the first non-zero change is an approach; touching and
+  // separating, none later where p / t stays above its rounding.
   if (p.c[0] <= 0) {
     for (int k = 1; k <= p.degree; ++k) {
       if (p.c[static_cast<std::size_t>(k)] != 0) {
@@ -644,17 +673,10 @@ template <typename Scalar, std::size_t N>
         break;
       }
     }
-  } else {
-    // No contact where the polynomial stays above its rounding on all of [0, horizon]: c0 less every
-    // negative term at the horizon.
-    Scalar lowest = p.c[0], size = std::fabs(p.c[0]), power = 1;
-    for (int k = 1; k <= p.degree; ++k) {
-      power *= horizon;
-      const Scalar term = p.c[static_cast<std::size_t>(k)] * power;
-      if (term < 0) lowest += term;
-      size += std::fabs(term);
-    }
-    if (lowest > Scalar(4 * p.degree + 4) * std::numeric_limits<Scalar>::epsilon() * size) return std::nullopt;
+    if (detail::separates_for_good(p, horizon)) return std::nullopt;
+  } else if (detail::above_by_terms(p, horizon)) {
+    // No contact where the polynomial stays above its rounding on all of [0, horizon].
+    return std::nullopt;
   }
   if (!(horizon > 0)) return std::nullopt;
   if (p.degree == 2 && p.c[0] > 0 && p.c[1] < 0) {

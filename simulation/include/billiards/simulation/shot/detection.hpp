@@ -133,14 +133,18 @@ inline void touching(std::span<double> p, double scale, double radius) {
   return q;
 }
 
+/// The earliest root within `horizon` of a nose line's polynomial `q` (nose_line_polynomial); +∞ if none.
+[[nodiscard]] inline double nose_line_root(const std::array<double, 3>& q, double horizon) {
+  constexpr double none = std::numeric_limits<double>::infinity();
+  if (stays_apart(q, horizon)) return none;
+  return earliest_contact(q, horizon).value_or(none);
+}
+
 /// When a ball of radius R on `path` reaches the nose line of `cushion` within `horizon`: the earliest root
 /// of its cushion polynomial; +∞ if none. Cushions on one line share it.
 [[nodiscard]] inline double nose_line_contact(const Path& path, const CushionSegment& cushion, double R,
                                               double horizon) {
-  const std::array<double, 3> q = nose_line_polynomial(path, cushion, R);
-  constexpr double none = std::numeric_limits<double>::infinity();
-  if (stays_apart(q, horizon)) return none;
-  return earliest_contact(q, horizon).value_or(none);
+  return nose_line_root(nose_line_polynomial(path, cushion, R), horizon);
 }
 
 /// Times (low, high) between which nose_line_contact's root lies, shown without placing it: for a ball
@@ -150,10 +154,8 @@ inline void touching(std::span<double> p, double scale, double radius) {
 /// between its roots, so that its first root lies in (low, high), and nose_line_contact, within 16 units
 /// in the last place of it, returns a time in there too. {0, 0} where that is not shown (no root before
 /// the horizon, one near it, a graze): then only solving tells.
-[[nodiscard]] inline std::pair<double, double> nose_line_bracket(const Path& path,
-                                                                 const CushionSegment& cushion, double R,
+[[nodiscard]] inline std::pair<double, double> nose_line_bracket(const std::array<double, 3>& q,
                                                                  double horizon) {
-  const std::array<double, 3> q = nose_line_polynomial(path, cushion, R);
   if (!(q[0] > 0 && q[1] < 0)) return {0, 0};
   const double root = billiards::detail::falling_quadratic_root(q[0], q[1], q[2]);
   const double low = root * (1 - 0x1p-30), high = root * (1 + 0x1p-30);
@@ -163,6 +165,25 @@ inline void touching(std::span<double> p, double scale, double radius) {
   if (evaluate(p, low) > 2 * evaluation_error(p, low) && evaluate(p, high) < -2 * evaluation_error(p, high))
     return {low, high};
   return {0, 0};
+}
+/// nose_line_bracket for the nose line of `cushion` and a ball of radius R on `path`.
+[[nodiscard]] inline std::pair<double, double> nose_line_bracket(const Path& path,
+                                                                 const CushionSegment& cushion, double R,
+                                                                 double horizon) {
+  return nose_line_bracket(nose_line_polynomial(path, cushion, R), horizon);
+}
+
+/// nose_line_root, faster where nose_line_bracket brackets q's root: for a quadratic falling at 0 (q0 > 0
+/// > q1, q2 ≠ 0), the closed form placed exactly (billiards::detail::placed_quadratic_root) at once, as
+/// earliest_contact's first step does — the tests of no contact before it (stays_apart's and
+/// earliest_contact's own) are sound, and a placed root shows q below 0 within the horizon, so that they
+/// would not have ended the search — and elsewhere, or where that placement is not shown, nose_line_root.
+[[nodiscard]] inline double bracketed_nose_line_root(const std::array<double, 3>& q, double horizon) {
+  if (q[0] > 0 && q[1] < 0 && q[2] != 0) {
+    const billiards::detail::EventPolynomial<double> p{{q[0], q[1], q[2], 0, 0}, 2};
+    if (const double t = billiards::detail::placed_quadratic_root(p, horizon); !std::isnan(t)) return t;
+  }
+  return nose_line_root(q, horizon);
 }
 
 /// Whether the centre on `path` lies between the ends of `cushion`'s nose at time t (beyond them the

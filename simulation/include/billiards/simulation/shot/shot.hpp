@@ -413,6 +413,8 @@ class Shot {
 
   // Ball i's contacts with the balls from `first_other` on but `skip`: see the definition below the class.
   void predict_pairs(std::size_t i, std::size_t first_other, std::size_t skip, detail::ExcludedContact excluded);
+  // Ball i's centre from its reference state on, in its phase: see the definition below.
+  [[nodiscard]] shot::Path own_path(std::size_t i) const;
   // The path of ball j relative to ball i's reference state at time `base`: see the definition below.
   [[nodiscard]] shot::Path relative_path(std::size_t i, std::size_t j, double base) const;
   // A current prediction queued at a bound of its time placed: see the definition below.
@@ -576,9 +578,7 @@ inline void Shot::predict(std::size_t i, std::size_t first_other, std::size_t sk
   double horizon = remaining(i);
   double first_own = std::numeric_limits<double>::infinity();  // its earliest cushion, jaw or pocket
   const double R = physics_.radius;
-  const shot::Path me{{e.state.position.x(), e.state.position.y()},
-                      {e.state.velocity.x(), e.state.velocity.y()},
-                      e.phase.acceleration};
+  const shot::Path me = own_path(i);
   // A contact at t from now with body k (none: +∞): queued, and the horizon brought in to it.
   const auto found = [&](double t, ShotEvent::Kind kind, std::size_t k) {
     if (t == std::numeric_limits<double>::infinity() || excluded(kind, k, t)) return;
@@ -600,6 +600,7 @@ inline void Shot::predict(std::size_t i, std::size_t first_other, std::size_t sk
     // changes first) is queued at the bracket's start and placed when that comes first (place), with the
     // bracket's end as the horizon.
     double line_root = std::numeric_limits<double>::infinity(), line_horizon = horizon;
+    std::array<double, 3> line{};  // the line's polynomial
     std::pair<double, double> bracket{0, 0};
     for (std::uint64_t within = within_reach(box); within != 0; within &= within - 1) {
       // Cushions on one line are within reach together (the test reads the line alone, bit for bit the
@@ -608,8 +609,9 @@ inline void Shot::predict(std::size_t i, std::size_t first_other, std::size_t sk
       if (!(k > 0 && on_previous_line_[k])) {
         line_horizon = horizon;
         line_root = std::numeric_limits<double>::infinity();
-        bracket = shot::nose_line_bracket(me, cushions_[k], R, horizon);
-        if (!(bracket.first > 0)) line_root = shot::nose_line_contact(me, cushions_[k], R, horizon);
+        line = shot::nose_line_polynomial(me, cushions_[k], R);
+        bracket = shot::nose_line_bracket(line, horizon);
+        if (!(bracket.first > 0)) line_root = shot::nose_line_root(line, horizon);
       }
       if (bracket.first > 0) {
         const int side = shot::nose_side(me, cushions_[k], bracket.first);
@@ -618,9 +620,10 @@ inline void Shot::predict(std::size_t i, std::size_t first_other, std::size_t sk
           continue;
         }
         if (line_root == std::numeric_limits<double>::infinity())
-          line_root = shot::nose_line_contact(me, cushions_[k], R, line_horizon);
+          line_root = shot::nose_line_root(line, line_horizon);
       }
-      if (line_root != std::numeric_limits<double>::infinity() && shot::within_nose(me, cushions_[k], line_root))
+      if (line_root != std::numeric_limits<double>::infinity() &&
+          shot::within_nose(me, cushions_[k], line_root))
         found(line_root, ShotEvent::Kind::cushion, k);
     }
     box_to_horizon();
@@ -714,6 +717,13 @@ inline void Shot::begin_phase(std::size_t i, const shot::Phase* known,
   e.unrecorded_from.reset();
 }
 
+// Ball i's centre from its reference state on, in its phase.
+inline shot::Path Shot::own_path(std::size_t i) const {
+  const Entry& e = balls_[i];
+  return {{e.state.position.x(), e.state.position.y()}, {e.state.velocity.x(), e.state.velocity.y()},
+          e.phase.acceleration};
+}
+
 // The path of ball j relative to ball i's reference state at time `base` (i's reference time: when it
 // was last predicted).
 inline shot::Path Shot::relative_path(std::size_t i, std::size_t j, double base) const {
@@ -732,11 +742,9 @@ inline shot::Path Shot::relative_path(std::size_t i, std::size_t j, double base)
 inline void Shot::place(const Predicted& p) {
   double t = std::numeric_limits<double>::infinity();
   if (p.kind == ShotEvent::Kind::cushion) {
-    const Entry& e = balls_[p.ball];
-    const shot::Path me{{e.state.position.x(), e.state.position.y()},
-                        {e.state.velocity.x(), e.state.velocity.y()},
-                        e.phase.acceleration};
-    t = shot::nose_line_contact(me, cushions_[p.other], physics_.radius, p.horizon);
+    const shot::Path me = own_path(p.ball);
+    t = shot::bracketed_nose_line_root(shot::nose_line_polynomial(me, cushions_[p.other], physics_.radius),
+                                       p.horizon);
   } else {
     const shot::Path relative = relative_path(p.ball, p.other, p.base);
     t = earliest_contact(shot::ball_contact_polynomial(relative, physics_.radius), p.horizon)
