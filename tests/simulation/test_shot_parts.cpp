@@ -136,7 +136,7 @@ TEST_CASE("Detection: a cushion's bracket holds its exact first root", "[simulat
       }
       const double horizon = std::pow(10.0, -3 + 4 * unit(random));
       const std::array<double, 3> q = shot::nose_line_polynomial(path, cushion, R);
-      const auto [low, high] = shot::nose_line_bracket(path, cushion, R, horizon);
+      const auto [low, high] = shot::nose_line_bracket(q, horizon);
       const std::optional<double> exact = billiards::detail::exact::earliest_contact_after_zero(q, horizon);
       INFO(family << ": q = " << q[0] << ", " << q[1] << ", " << q[2] << ", horizon " << horizon
                   << ", bracket " << low << ", " << high);

@@ -166,12 +166,6 @@ inline void touching(std::span<double> p, double scale, double radius) {
     return {low, high};
   return {0, 0};
 }
-/// nose_line_bracket for the nose line of `cushion` and a ball of radius R on `path`.
-[[nodiscard]] inline std::pair<double, double> nose_line_bracket(const Path& path,
-                                                                 const CushionSegment& cushion, double R,
-                                                                 double horizon) {
-  return nose_line_bracket(nose_line_polynomial(path, cushion, R), horizon);
-}
 
 /// nose_line_root, faster where nose_line_bracket brackets q's root: for a quadratic falling at 0 (q0 > 0
 /// > q1, q2 ≠ 0), the closed form placed exactly (billiards::detail::placed_quadratic_root) at once, as

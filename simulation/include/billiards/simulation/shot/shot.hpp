@@ -620,7 +620,7 @@ inline void Shot::predict(std::size_t i, std::size_t first_other, std::size_t sk
           continue;
         }
         if (line_root == std::numeric_limits<double>::infinity())
-          line_root = shot::nose_line_root(line, line_horizon);
+          line_root = shot::bracketed_nose_line_root(line, line_horizon);
       }
       if (line_root != std::numeric_limits<double>::infinity() &&
           shot::within_nose(me, cushions_[k], line_root))
