@@ -250,18 +250,19 @@ def table_events(runs):
 
 
 def fastfiz_ratios(fastfiz, game, us):
-    """FastFiz's median CPU time per break over ours, a round at a time: ours from the round's own run of
-    our breaks where it has one, else `us` (the main run's)."""
+    """FastFiz's mean CPU time per break over ours (a mean too: the benchmark's time over the breaks it
+    played), a round at a time: ours from the round's own run of our breaks where it has one, else `us`
+    (the main run's)."""
     ratios = []
     for peer, breaks in fastfiz:
         ours = per_item_ns(breaks[f"shot/break/{game}"]) / 1e3 if breaks is not None else us
-        ratios.append(peer[game]["cpu_time_per_shot_us"]["median"] / ours)
+        ratios.append(peer[game]["cpu_time_per_shot_us"]["mean"] / ours)
     return ratios
 
 
 def shot_section(runs, pooltool, fastfiz=None):
     """Shots played to rest (billiards::simulation::Shot): breaks against pooltool's and FastFiz's, random shots."""
-    lines = ["| break (7-ft table, 8 m/s at the apex, b = 0.25 R, 1e-3 R jitter) | ours: µs per break | events | µs per event | pooltool: ms per break (median, seeds 1–20) | events | pooltool / ours | goal | FastFiz: µs per break (median CPU time) | events | µs per event | FastFiz / ours |",
+    lines = ["| break (7-ft table, 8 m/s at the apex, b = 0.25 R, 1e-3 R jitter) | ours: µs per break | events | µs per event | pooltool: ms per break (median, seeds 1–20) | events | pooltool / ours | goal | FastFiz: µs per break (mean CPU time) | events (mean) | µs per event | FastFiz / ours |",
              "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|"]
     found = False
     for game, name in (("9ball", "9-ball"), ("8ball", "8-ball")):
@@ -279,8 +280,8 @@ def shot_section(runs, pooltool, fastfiz=None):
         else:
             row = f"{ours} (pooltool not set up) | | | ≥ 300× |"
         if fastfiz:
-            peer_us = statistics.median([peer[game]["cpu_time_per_shot_us"]["median"] for peer, _ in fastfiz])
-            peer_events = statistics.median([peer[game]["events_per_shot"]["median"] for peer, _ in fastfiz])
+            peer_us = statistics.median([peer[game]["cpu_time_per_shot_us"]["mean"] for peer, _ in fastfiz])
+            peer_events = statistics.median([peer[game]["events_per_shot"]["mean"] for peer, _ in fastfiz])
             ratio = statistics.median(fastfiz_ratios(fastfiz, game, us))
             row += f" {peer_us:,.0f} | {peer_events:.0f} | {peer_us / peer_events:.2f} | {ratio:.2f}× |"
         else:
@@ -309,10 +310,15 @@ def shot_section(runs, pooltool, fastfiz=None):
     if fastfiz:
         first = fastfiz[0][0]
         reps = first.get("settings", {}).get("reps", "?")
+        medians = ", ".join(
+            f"{name} {statistics.median([p[game]['cpu_time_per_shot_us']['median'] for p, _ in fastfiz]):,.0f} µs "
+            f"({statistics.median([p[game]['events_per_shot']['median'] for p, _ in fastfiz]):.0f} events)"
+            for game, name in (("9ball", "9-ball"), ("8ball", "8-ball")))
         lines.append(f"- FastFiz on the same core in the same run: {first.get('engine', 'FastFiz')}, {reps} "
                      f"breaks a game after a warm-up, its thread's CPU time per break (executeShot and its "
                      f"deletion); its events count its cue strike, ball–ball, ball–rail, pocket and state-change "
-                     f"events.")
+                     f"events. Its mean is set against ours, which is a mean (our benchmark's time over the "
+                     f"breaks it played, the 64 racks in turn); its median break: {medians}.")
         if fastfiz[0][1] is not None:
             rounds = "; ".join(
                 f"{name}: " + ", ".join(f"{r:.2f}×" for r in fastfiz_ratios(fastfiz, game, None))
@@ -539,7 +545,8 @@ def main():
             with open(path, encoding="utf-8") as f:
                 peer = json.load(f)
             for game in ("9ball", "8ball"):
-                float(peer[game]["cpu_time_per_shot_us"]["median"]) / float(peer[game]["events_per_shot"]["median"])
+                for statistic in ("mean", "median"):
+                    float(peer[game]["cpu_time_per_shot_us"][statistic]) / float(peer[game]["events_per_shot"][statistic])
         except OSError as error:
             fail("--fastfiz", path, f"a readable file ({error.strerror})")
         except (UnicodeDecodeError, ValueError, KeyError, TypeError, ZeroDivisionError) as error:

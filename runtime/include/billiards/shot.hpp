@@ -116,7 +116,7 @@ template <typename Scalar>
   const kernels::shot::CushionSlip<Scalar> slip = kernels::shot::cushion_slip(
       approach, along, w.dot(n), w.dot(rail), w.z(), ball.radius, cos_nose, sin_nose);
   const Scalar normal_impulse = kernels::shot::cushion_normal_impulse(approach, cos_nose, cushion.restitution);
-  const Scalar slip_size = std::hypot(slip.first, slip.second);
+  const Scalar slip_size = detail::scaled_norm(Eigen::Matrix<Scalar, 2, 1>(slip.first, slip.second));
   const Scalar friction_impulse = cushion.friction * normal_impulse;
   const Scalar ratio = 2 * slip_size <= 7 * friction_impulse ? Scalar(2) / Scalar(7) : friction_impulse / slip_size;
   const kernels::shot::CushionVelocityChange<Scalar> dv =

@@ -3,9 +3,10 @@
 /// idea:
 /// - EventHeap, a binary heap of predicted events (the table): O(log E) a push or a pop, stale
 ///   predictions dropped when they reach the top;
-/// - OwnedEvents, a small heap of predicted events per ball and a scan of their earliest (the shot):
-///   a ball's predictions, stale together once it changes, dropped at once, so that the heaps hold few
-///   stale ones and stay shallow; the scan is O(N) a pop, as each event's predictions are;
+/// - OwnedEvents, a short run of predicted events per ball, its earliest first, and a scan of the
+///   balls' earliest (the shot): a ball's predictions, stale together once it changes, dropped at once,
+///   so that the runs hold few stale ones and stay short; a pop scans its ball's run and the balls'
+///   earliest, O(N), as each event's predictions are;
 /// - EventCalendar (event_calendar.hpp), a calendar queue holding one next event per ball (the gas):
 ///   O(1) a step on average, for the 10^3 to 10^6 balls of a gas, where a heap's O(log N) and its
 ///   scattered memory cost more than the calendar's buckets.
@@ -55,11 +56,13 @@ class EventHeap {
 };
 
 /// Predicted events kept by owner (a ball: its own events and the pairs it predicted), each owner's in a
-/// small min-heap ordered by `Later`, the earliest of all found by a scan of the owners' earliest times
-/// (kept in one array beside the heaps). `Later` must order by the events' `time` (a double) first and
-/// break ties as it likes. clear() drops an owner's events at once; other stale events are the caller's
-/// to skip, as with EventHeap. The heaps share one array, a run of equal room for each owner, that
-/// doubles every owner's room when one's is full.
+/// short run whose first is its earliest by `Later` and the rest in no order (a push compares with the
+/// first; a pop scans the rest for the next: an owner holds a few events, for which a heap's sifting of
+/// whole events costs more than the scan), the earliest of all found by a scan of the owners' earliest
+/// times (kept in one array beside the runs). `Later` must order by the events' `time` (a double) first
+/// and break ties as it likes; events equal under it come out in an unspecified order. clear() drops an
+/// owner's events at once; other stale events are the caller's to skip, as with EventHeap. The runs
+/// share one array, of equal room for each owner, that doubles every owner's room when one's is full.
 template <class Event, class Later = std::greater<>>
 class OwnedEvents {
  public:
@@ -90,18 +93,29 @@ class OwnedEvents {
   /// Queues `event` as `owner`'s.
   void push(std::size_t owner, const Event& event) {
     if (sizes_[owner] == room_) widen();
-    Event* heap = events_.data() + owner * room_;
-    heap[sizes_[owner]++] = event;
-    std::push_heap(heap, heap + sizes_[owner], Later{});
-    times_[owner] = heap[0].time;
+    Event* run = events_.data() + owner * room_;
+    const std::size_t n = sizes_[owner]++;
+    run[n] = event;
+    if (n != 0 && Later{}(run[0], run[n])) std::swap(run[0], run[n]);
+    times_[owner] = run[0].time;
     ++size_;
   }
   /// Takes `owner`'s earliest event out and returns it (`owner` must have one).
   Event pop(std::size_t owner) {
-    Event* heap = events_.data() + owner * room_;
-    std::pop_heap(heap, heap + sizes_[owner], Later{});
-    const Event event = heap[--sizes_[owner]];
-    times_[owner] = sizes_[owner] == 0 ? std::numeric_limits<double>::infinity() : heap[0].time;
+    Event* run = events_.data() + owner * room_;
+    const Event event = run[0];
+    const std::size_t n = --sizes_[owner];
+    if (n == 0) {
+      times_[owner] = std::numeric_limits<double>::infinity();
+    } else {
+      std::size_t best = 1;
+      for (std::size_t k = 2; k <= n; ++k) {
+        if (Later{}(run[best], run[k])) best = k;
+      }
+      run[0] = run[best];
+      run[best] = run[n];
+      times_[owner] = run[0].time;
+    }
     --size_;
     return event;
   }
@@ -113,7 +127,7 @@ class OwnedEvents {
   }
 
  private:
-  // Every owner's room doubled, its heap kept as it is.
+  // Every owner's room doubled, its run kept as it is.
   void widen() {
     std::vector<Event> wider(2 * events_.size());
     for (std::size_t k = 0; k < sizes_.size(); ++k)
@@ -123,7 +137,7 @@ class OwnedEvents {
     room_ *= 2;
   }
   std::size_t room_;                // each owner's run in events_
-  std::vector<Event> events_;       // owner k's heap at k room_, its first sizes_[k]
+  std::vector<Event> events_;       // owner k's run at k room_, its first sizes_[k]
   std::vector<std::size_t> sizes_;  // each owner's count of events
   std::vector<double> times_;       // each owner's earliest event's time, +∞ for none
   std::size_t size_ = 0;

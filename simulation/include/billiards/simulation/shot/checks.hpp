@@ -76,12 +76,8 @@ inline void validate(const ShotOptions& options) {
     double nearest = std::numeric_limits<double>::infinity(), second = nearest;
     for (const Jaw& jaw : jaws) {
       const double gap = (jaw.centre - pocket.centre).norm() - (R + jaw.radius);
-      if (gap < nearest) {
-        second = nearest;
-        nearest = gap;
-      } else if (gap < second) {
-        second = gap;
-      }
+      second = std::min(second, std::max(nearest, gap));  // without a branch: the square roots overlap
+      nearest = std::min(nearest, gap);
     }
     if (jaws.size() >= 2) pocket.radius = std::max(pocket.radius, second + 1e-6);
   }
