@@ -45,13 +45,14 @@ else
   echo "bench/run.sh: pooltool's harness is not set up ($peer/setup.sh); its breaks are left out" >&2
 fi
 # FastFiz's breaks on the same core, where ../shared/peers/fastfiz/setup.sh has built its harness (into
-# FASTFIZ_WORK, default ~/.cache/fastfiz-peer): three rounds, each our breaks then FastFiz's, alternating,
+# FASTFIZ_WORK, default ~/.cache/fastfiz-peer): five rounds, each our breaks then FastFiz's, alternating,
 # so that both sides see the machine as it is within seconds of each other; report.py takes the median
-# of the three rounds' ratios.
+# of the five rounds' ratios (a shared machine changes speed from minute to minute, and not by the same
+# factor for both programs).
 fastfiz="${FASTFIZ_WORK:-$HOME/.cache/fastfiz-peer}/bench_break"
 fastfiz_arguments=""
 if [ -x "$fastfiz" ]; then
-  for round in 1 2 3; do
+  for round in 1 2 3 4 5; do
     taskset -c $core "$bench" --benchmark_filter='^shot/break/' --benchmark_min_time=0.2 --benchmark_repetitions=3 \
       --benchmark_report_aggregates_only=true --benchmark_format=json --benchmark_out="$work/breaks$round.json" > /dev/null
     taskset -c $core "$fastfiz" --game both --reps 1000 > "$work/fastfiz$round.json"
