@@ -91,13 +91,18 @@ class OwnedEvents {
   /// The earliest event of `owner` (which must have one).
   [[nodiscard]] const Event& top(std::size_t owner) const { return events_[owner * room_]; }
   /// Queues `event` as `owner`'s.
-  void push(std::size_t owner, const Event& event) {
+  [[gnu::always_inline]] inline void push(std::size_t owner, const Event& event) {
     if (sizes_[owner] == room_) widen();
     Event* run = events_.data() + owner * room_;
     const std::size_t n = sizes_[owner]++;
-    run[n] = event;
-    if (n != 0 && Later{}(run[0], run[n])) std::swap(run[0], run[n]);
-    times_[owner] = run[0].time;
+    // Compared and stored from `event` itself, never read back from where it was just written.
+    if (n == 0 || Later{}(run[0], event)) {
+      if (n != 0) run[n] = run[0];
+      run[0] = event;
+      times_[owner] = event.time;
+    } else {
+      run[n] = event;
+    }
     ++size_;
   }
   /// Takes `owner`'s earliest event out and returns it (`owner` must have one).

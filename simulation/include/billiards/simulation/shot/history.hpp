@@ -51,7 +51,12 @@ class History {
       pieces_.push_back({*acceleration, *spin_acceleration});
     }
     const auto index = static_cast<std::uint32_t>(frames_.size());
-    frames_.push_back({time, state, pocketed, piece, last_[ball]});
+    Keyframe& frame = frames_.emplace_back();  // filled in place: no copy of a whole keyframe
+    frame.time = time;
+    frame.state = state;
+    frame.pocketed = pocketed;
+    frame.piece = piece;
+    frame.previous = last_[ball];
     if (first_[ball] == none) first_[ball] = index;
     last_[ball] = index;
   }

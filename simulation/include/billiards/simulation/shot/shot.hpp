@@ -436,7 +436,7 @@ class Shot {
   }
 
   void record(ShotEvent::Kind kind, std::size_t i, std::size_t other, Motion from) {
-    ShotEvent event;
+    ShotEvent& event = events_.emplace_back();  // filled in place: no copy of a whole event
     event.time = now_;
     event.kind = kind;
     event.first = i;
@@ -446,7 +446,6 @@ class Shot {
     event.first_after = shot::as_pool_ball(balls_[i].state, balls_[i].pocketed);
     event.second_after =
         kind == ShotEvent::Kind::ball ? shot::as_pool_ball(balls_[other].state, false) : event.first_after;
-    events_.push_back(event);
   }
 
   void resolve(const Predicted& p) {
