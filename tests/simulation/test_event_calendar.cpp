@@ -152,8 +152,10 @@ TEST_CASE("the event calendar rejects a NaN time or one before now") {
 
 // The shot's queue, billiards::simulation::detail::OwnedEvents, against a std::multiset of every event
 // queued: random pushes by random owners (times drawn from few values, so that ties are common and the
-// order between them is the events' own), pops of the earliest and clears of an owner's events. Each
-// step the owner named earliest must hold the reference's first event.
+// order between them is the events' own, or from many, so that one owner holds the least time), pops of
+// the earliest and clears of an owner's events, for one owner up to more than 64 (the owners' times are
+// scanned two at a time up to 64). Each step the owner named earliest must hold the reference's first
+// event.
 TEST_CASE("OwnedEvents pops the earliest of all owners' events, and clear drops one owner's", "[queue]") {
   struct Event {
     double time;
@@ -162,19 +164,21 @@ TEST_CASE("OwnedEvents pops the earliest of all owners' events, and clear drops 
     bool operator>(const Event& o) const { return time > o.time || (time == o.time && key > o.key); }
     bool operator<(const Event& o) const { return o > *this; }
   };
-  constexpr std::size_t owners = 7;
+  const std::size_t owners = GENERATE(std::size_t{1}, std::size_t{7}, std::size_t{10}, std::size_t{16},
+                                      std::size_t{64}, std::size_t{65}, std::size_t{70});
   // Room for one event an owner: the shared array widens again and again; for sixteen: rarely.
   const std::size_t room = GENERATE(std::size_t{1}, std::size_t{16});
+  const int values = GENERATE(20, 1 << 30);
   billiards::simulation::detail::OwnedEvents<Event> queue(owners, room);
   std::multiset<Event> reference;
   std::mt19937_64 random(11);
-  std::uniform_int_distribution<int> action(0, 9), value(0, 20);
+  std::uniform_int_distribution<int> action(0, 9), value(0, values), key(0, 20);
   std::uniform_int_distribution<std::size_t> who(0, owners - 1);
   int pops = 0, clears = 0;
   for (int step = 0; step < 20000; ++step) {
     const int a = action(random);
     if (a < 5 || reference.empty()) {
-      const Event e{static_cast<double>(value(random)) / 4, value(random), who(random)};
+      const Event e{static_cast<double>(value(random)) / 4, key(random), who(random)};
       queue.push(e.owner, e);
       reference.insert(e);
     } else if (a < 9) {

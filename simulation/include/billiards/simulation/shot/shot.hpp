@@ -26,11 +26,16 @@
 
 #include <Eigen/Core>
 
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
 #include <algorithm>
 #include <array>
 #include <bit>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <limits>
 #include <optional>
 #include <stdexcept>
@@ -99,28 +104,52 @@ class ShotReaches {
   /// predictions reach `now`, without a branch, eight balls at a time.
   [[nodiscard]] std::uint64_t near(const shot::Box& reach, bool moving, double now, std::size_t base,
                                    std::size_t count) const {
-    const std::uint8_t any = moving ? 1 : 0;
-    const double *x_low = bounds_.data(), *x_high = x_low + stride_, *y_low = x_high + stride_,
-                 *y_high = y_low + stride_, *end = y_high + stride_;
+    static_assert(std::endian::native == std::endian::little, "the flags are read as little-endian words");
+    const std::uint64_t any = moving ? 0x0101010101010101ull : 0;
     const std::uint8_t *candidate = flags_.data(), *moves = candidate + stride_;
     std::uint64_t bits = 0;
     for (std::size_t w = 0; 8 * w < count; ++w) {
-      std::array<std::uint8_t, 8> flags;
-      for (std::size_t b = 0; b < 8; ++b) {
-        const std::size_t j = base + 8 * w + b;
-        const bool overlaps = reach.overlaps({x_low[j], x_high[j], y_low[j], y_high[j]});
-        const bool reaches_now = end[j] >= now;
-        flags[b] = static_cast<std::uint8_t>(overlaps & reaches_now & candidate[j] & (any | moves[j]));
-      }
-      // The eight flags (0 or 1, a byte each) as one word, little end first; the multiply gathers their
-      // low bits into its top byte (no carries: each of its bits is the sum of one term).
-      const std::uint64_t eight = std::bit_cast<std::uint64_t>(flags);
-      bits |= ((eight * 0x0102040810204080ull) >> 56) << (8 * w);
+      const std::size_t j = base + 8 * w;
+      // The eight balls' flags (0 or 1, a byte each) read as one word, little end first; the multiply
+      // gathers their low bits into its top byte (no carries: each of its bits is the sum of one term).
+      std::uint64_t candidates = 0, moving_ones = 0;
+      std::memcpy(&candidates, candidate + j, 8);
+      std::memcpy(&moving_ones, moves + j, 8);
+      const std::uint64_t flags = candidates & (moving_ones | any);
+      bits |= (((flags * 0x0102040810204080ull) >> 56) & reaching(reach, now, j)) << (8 * w);
     }
     return bits;
   }
 
  private:
+  // A bit for each of the eight entries from j: whether its box overlaps `reach` and its end is at or
+  // after `now`; two entries at a time where the processor compares pairs of doubles (every x86-64),
+  // the bits then gathered from the comparisons' sign bits, which are the same comparisons.
+  [[nodiscard]] std::uint64_t reaching(const shot::Box& reach, double now, std::size_t j) const {
+    const double *x_low = bounds_.data() + j, *x_high = x_low + stride_, *y_low = x_high + stride_,
+                 *y_high = y_low + stride_, *end = y_high + stride_;
+    std::uint64_t bits = 0;
+#if defined(__SSE2__)
+    const __m128d reach_x_low = _mm_set1_pd(reach.x_low), reach_x_high = _mm_set1_pd(reach.x_high),
+                  reach_y_low = _mm_set1_pd(reach.y_low), reach_y_high = _mm_set1_pd(reach.y_high),
+                  from = _mm_set1_pd(now);
+    for (std::size_t k = 0; k < 8; k += 2) {
+      __m128d m = _mm_cmple_pd(_mm_loadu_pd(x_low + k), reach_x_high);
+      m = _mm_and_pd(m, _mm_cmple_pd(reach_x_low, _mm_loadu_pd(x_high + k)));
+      m = _mm_and_pd(m, _mm_cmple_pd(_mm_loadu_pd(y_low + k), reach_y_high));
+      m = _mm_and_pd(m, _mm_cmple_pd(reach_y_low, _mm_loadu_pd(y_high + k)));
+      m = _mm_and_pd(m, _mm_cmple_pd(from, _mm_loadu_pd(end + k)));
+      bits |= static_cast<std::uint64_t>(_mm_movemask_pd(m)) << k;
+    }
+#else
+    for (std::size_t k = 0; k < 8; ++k) {
+      const bool overlaps = reach.overlaps({x_low[k], x_high[k], y_low[k], y_high[k]});
+      bits |= static_cast<std::uint64_t>(overlaps & (end[k] >= now)) << k;
+    }
+#endif
+    return bits;
+  }
+
   std::size_t stride_;               // the balls and seven entries that are no candidates
   std::vector<double> bounds_;       // x_low, x_high, y_low, y_high, end: stride_ entries each
   std::vector<std::uint8_t> flags_;  // candidate, moving: stride_ entries each
