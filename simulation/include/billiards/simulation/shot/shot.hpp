@@ -239,9 +239,12 @@ class Shot {
       begin_phase(i);
       keyframe(i);
     }
-    // Every ball's own events first (its path's box), then each pair once.
+    // Every ball's own events first (its path's box), then each pair once: none where every ball is at
+    // rest (a rack), as a pair meets only where one of its balls moves.
     for (std::size_t i = 0; i < balls_.size(); ++i) predict(i, balls_.size());
-    for (std::size_t i = 0; i < balls_.size(); ++i) {
+    const bool any_moving =
+        std::any_of(balls_.begin(), balls_.end(), [](const Entry& e) { return e.phase.moving; });
+    for (std::size_t i = 0; any_moving && i < balls_.size(); ++i) {
       if (!balls_[i].pocketed) predict_pairs(i, i + 1, balls_.size(), {});
     }
     energy_scale_ = last_energy_ = energy();
