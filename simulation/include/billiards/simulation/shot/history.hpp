@@ -51,12 +51,7 @@ class History {
       pieces_.push_back({*acceleration, *spin_acceleration});
     }
     const auto index = static_cast<std::uint32_t>(frames_.size());
-    Keyframe& frame = frames_.emplace_back();  // filled in place: no copy of a whole keyframe
-    frame.time = time;
-    frame.state = state;
-    frame.pocketed = pocketed;
-    frame.piece = piece;
-    frame.previous = last_[ball];
+    frames_.emplace_back(time, state, pocketed, piece, last_[ball]);  // made in place, written once
     if (first_[ball] == none) first_[ball] = index;
     last_[ball] = index;
   }
@@ -77,6 +72,8 @@ class History {
  private:
   static constexpr std::uint32_t none = ~std::uint32_t{0};
   struct Keyframe {
+    Keyframe(double t, const BallOnCloth<double>& s, bool p, std::uint32_t k, std::uint32_t before)
+        : time(t), state(s), pocketed(p), piece(k), previous(before) {}
     double time;
     BallOnCloth<double> state;
     bool pocketed;

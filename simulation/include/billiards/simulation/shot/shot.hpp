@@ -468,16 +468,17 @@ class Shot {
   }
 
   void record(ShotEvent::Kind kind, std::size_t i, std::size_t other, Motion from) {
-    ShotEvent& event = events_.emplace_back();  // filled in place: no copy of a whole event
+    // Filled in place from the balls' states, nothing read back from where it was just written.
+    const Entry &e = balls_[i], &o = balls_[kind == ShotEvent::Kind::ball ? other : i];
+    ShotEvent& event = events_.emplace_back();
     event.time = now_;
     event.kind = kind;
     event.first = i;
     event.second = other;
     event.from = from;
-    event.to = balls_[i].phase.motion;
-    event.first_after = shot::as_pool_ball(balls_[i].state, balls_[i].pocketed);
-    event.second_after =
-        kind == ShotEvent::Kind::ball ? shot::as_pool_ball(balls_[other].state, false) : event.first_after;
+    event.to = e.phase.motion;
+    event.first_after = shot::as_pool_ball(e.state, e.pocketed);
+    event.second_after = shot::as_pool_ball(o.state, o.pocketed);
   }
 
   void resolve(const Predicted& p) {
