@@ -229,6 +229,38 @@ TEST_CASE("A large gas reports its collisions by the caller's numbers after renu
   CHECK(a.velocities() == b.velocities());
 }
 
+TEST_CASE("A gas beyond the caches calls the callback once a collision, with the pair that touches",
+          "[simulation][gas]") {
+  // From 2^13 balls on neighbour lists and 2^15 on cells the engines run another loop (the one that
+  // asks memory ahead), where the callback is called through a pointer.
+  const GasMethod method = GENERATE(GasMethod::neighbour_lists, GasMethod::cells);
+  gas::Options options;
+  options.dimension = 2;
+  options.balls = method == GasMethod::cells ? 33000 : 8400;
+  options.packing_fraction = 0.3;
+  Gas<2> g(gas::lattice<2>(options), 0, method);
+  std::uint64_t calls = 0;
+  double worst = 0, previous = 0;
+  bool ordered = true;
+  const std::uint64_t done = g.run_events(3000, [&](const GasEvent& c) {
+    ++calls;
+    ordered = ordered && c.time >= previous && c.time == g.time();
+    previous = c.time;
+    if (calls % 60 != 0) return;  // the positions are a copy of every ball's
+    const auto p = g.positions();
+    worst = std::max(worst, std::fabs(g.nearest_image(p[c.first], p[c.second]).norm() - 1));
+  });
+  CHECK(done == 3000);
+  CHECK(calls == 3000);
+  CHECK(ordered);
+  CHECK(worst < 1e-9);
+  // A callback that is a plain function takes the same path.
+  static std::uint64_t counted = 0;
+  counted = 0;
+  CHECK(g.run(500, std::numeric_limits<double>::infinity(), +[](const GasEvent&) { ++counted; }) == 500);
+  CHECK(counted == 500);
+}
+
 TEST_CASE("A gas built from another's state runs on as it would have", "[simulation][gas]") {
   gas::Options options;
   options.dimension = 3;

@@ -18,9 +18,15 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 namespace billiards::simulation::detail {
+
+// The callback of a run without one.
+struct NoCallback {
+  void operator()(const GasEvent&) const {}
+};
 
 template <int D, class Engine>
 class GasEngine {
@@ -179,12 +185,28 @@ class GasEngine {
   // Runs the engine's events (its run_all) until `collisions` more collisions or until the next event
   // lies beyond `until`. From Engine::look_ahead_from balls, beyond the caches, the engine's loop that
   // asks memory ahead, compiled as one function with everything it calls inlined (flatten) and kept
-  // out of the loop of smaller gases.
+  // out of the loop of smaller gases. That function is large, so it is compiled twice at most: for a
+  // run without a callback, and for every callback behind a pointer (an indirect call a collision,
+  // beside the microsecond a collision costs there), not once for each caller's type.
   template <typename OnCollision>
   std::uint64_t run_events(std::uint64_t collisions, double until, OnCollision& on_collision) {
-    if (size() >= Engine::look_ahead_from) return run_beyond_caches(collisions, until, on_collision);
-    return engine().template run_all<false>(collisions, until, on_collision);
+    if (size() < Engine::look_ahead_from)
+      return engine().template run_all<false>(collisions, until, on_collision);
+    if constexpr (std::is_same_v<std::remove_cv_t<OnCollision>, NoCallback>) {
+      return run_beyond_caches(collisions, until, on_collision);
+    } else {
+      auto forward = [&on_collision](const GasEvent& e) { on_collision(e); };
+      const auto call = [](void* f, const GasEvent& e) { (*static_cast<decltype(forward)*>(f))(e); };
+      ErasedCallback erased{&forward, call};
+      return run_beyond_caches(collisions, until, erased);
+    }
   }
+  // A callback behind a pointer: `call(callback, event)`.
+  struct ErasedCallback {
+    void* callback;
+    void (*call)(void*, const GasEvent&);
+    void operator()(const GasEvent& event) const { call(callback, event); }
+  };
   template <typename OnCollision>
   [[gnu::noinline, gnu::flatten]] std::uint64_t run_beyond_caches(std::uint64_t collisions, double until,
                                                                   OnCollision& on_collision) {

@@ -103,7 +103,7 @@ class Gas {
     return std::visit([&](auto& e) { return e.run_collisions(count, on_event); }, engine_);
   }
   /// Runs at most `count` more collisions; see the overload with a callback.
-  std::uint64_t run_events(std::uint64_t count) { return run_events(count, ignore_event); }
+  std::uint64_t run_events(std::uint64_t count) { return run_events(count, detail::NoCallback{}); }
 
   /// Runs until `count` more collisions or the gas's time `until` (+∞: no limit), whichever comes first,
   /// calling `on_event(const GasEvent&)` after each collision; where it stops at `until`, that is the
@@ -114,7 +114,7 @@ class Gas {
     return std::visit([&](auto& e) { return e.run(count, until, on_event); }, engine_);
   }
   /// Runs until `count` more collisions or the time `until`; see the overload with a callback.
-  std::uint64_t run(std::uint64_t count, double until) { return run(count, until, ignore_event); }
+  std::uint64_t run(std::uint64_t count, double until) { return run(count, until, detail::NoCallback{}); }
 
   /// Runs every collision up to the gas's time `until`, calling `on_event(const GasEvent&)` after each,
   /// and makes `until` the time now; returns the number of collisions run. Throws std::invalid_argument
@@ -124,7 +124,7 @@ class Gas {
     return std::visit([&](auto& e) { return e.run_until(until, on_event); }, engine_);
   }
   /// Runs every collision up to the gas's time `until`; see the overload with a callback.
-  std::uint64_t run_until(double until) { return run_until(until, ignore_event); }
+  std::uint64_t run_until(double until) { return run_until(until, detail::NoCallback{}); }
 
   /// Starts a new span of measurement at the time now (see measured()).
   void reset_measurements() {
@@ -223,8 +223,6 @@ class Gas {
   auto visit(F&& f) const {
     return std::visit(f, engine_);
   }
-  // A callback that does nothing: a run without one compiles to the loop it was before.
-  static void ignore_event(const GasEvent&) {}
 
   Engine engine_;
 };
