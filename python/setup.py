@@ -53,11 +53,33 @@ def compile_in_parallel(compiler, jobs: int) -> None:
     compiler.compile = compile
 
 
+# The sources compiled together, as CMake's unity groups do (python/CMakeLists.txt): the templates they
+# share (the shot's engine, the games' rules) compiled once a group, not once a file.
+unity_groups = {"shot": ("engines.cpp", "batch.cpp", "games.cpp"),
+                "rest": ("table_gas.cpp", "files.cpp", "runtime.cpp", "module.cpp")}
+
+
+def unity_sources(folder: Path) -> list:
+    """One source a group of `unity_groups`, written under `folder` (rewritten only where it changed),
+    each including its group's files from src/."""
+    sources = []
+    for name, files in unity_groups.items():
+        target = folder / f"unity_{name}.cpp"
+        text = "".join(f'#include "{here / "src" / file}"\n' for file in files)
+        target.parent.mkdir(parents=True, exist_ok=True)
+        if not target.exists() or target.read_text() != text:
+            target.write_text(text)
+        sources.append(str(target))
+    return sources
+
+
 class BuildWithVersion(build_ext):
     def build_extensions(self):
         generated = version_header(Path(self.build_temp) / "version")
         for extension in self.extensions:
             extension.include_dirs.append(str(generated))
+            extension.sources = unity_sources(Path(self.build_temp) / "unity")
+            extension.depends = [str(here / "src" / file) for files in unity_groups.values() for file in files]
         compile_in_parallel(self.compiler, len(os.sched_getaffinity(0)))
         super().build_extensions()
 
@@ -74,8 +96,7 @@ if not (root / "runtime" / "include").is_dir():
     sys.exit("billiards: build the package from the project's source tree (pip install ./python): "
              f"{root / 'runtime' / 'include'} is missing")
 
-sources = [str(Path("src") / name) for name in ("module.cpp", "runtime.cpp", "engines.cpp", "batch.cpp", "files.cpp",
-                                                                   "table_gas.cpp", "games.cpp")]
+sources = [str(Path("src") / file) for files in unity_groups.values() for file in files]
 extension = Extension(
     "billiards._billiards",
     sources=sources,
