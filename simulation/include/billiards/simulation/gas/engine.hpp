@@ -207,11 +207,11 @@ class GasEngine {
     void (*call)(void*, const GasEvent&);
     void operator()(const GasEvent& event) const { call(callback, event); }
   };
+  // Defined below the class, not inline, so that a program may take the loops compiled once (gas.hpp's
+  // end, BILLIARDS_GAS_LOOPS_COMPILED) instead of compiling them itself.
   template <typename OnCollision>
   [[gnu::noinline, gnu::flatten]] std::uint64_t run_beyond_caches(std::uint64_t collisions, double until,
-                                                                  OnCollision& on_collision) {
-    return engine().template run_all<true>(collisions, until, on_collision);
-  }
+                                                                  OnCollision& on_collision);
 
   // After a collision: every N collisions the calendar's width fitted to the times again, and from
   // reorder_from balls the balls renumbered by cell (the engine's reorder, which refiles).
@@ -333,5 +333,12 @@ class GasEngine {
   std::uint64_t span_collisions_ = 0, span_own_events_ = 0;
   double largest_overlap_ = 0, largest_gap_ = 0;
 };
+
+template <int D, class Engine>
+template <typename OnCollision>
+std::uint64_t GasEngine<D, Engine>::run_beyond_caches(std::uint64_t collisions, double until,
+                                                      OnCollision& on_collision) {
+  return engine().template run_all<true>(collisions, until, on_collision);
+}
 
 }  // namespace billiards::simulation::detail

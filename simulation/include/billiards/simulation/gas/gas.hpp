@@ -228,3 +228,24 @@ class Gas {
 };
 
 }  // namespace billiards::simulation
+
+// Where BILLIARDS_GAS_LOOPS_COMPILED is defined, the engines' loops beyond the caches (the largest code
+// of the gas: GasEngine::run_beyond_caches, everything it calls inlined) are not compiled here but
+// taken from an object that compiles them once (the project's own programs and tests link
+// billiards_gas_loops, simulation/gas_loops.cpp, which defines it for them). Nothing changes elsewhere.
+#if defined(BILLIARDS_GAS_LOOPS_COMPILED)
+namespace billiards::simulation::detail {
+extern template std::uint64_t GasEngine<2, CellGas<2>>::run_beyond_caches(std::uint64_t, double, NoCallback&);
+extern template std::uint64_t GasEngine<3, CellGas<3>>::run_beyond_caches(std::uint64_t, double, NoCallback&);
+extern template std::uint64_t GasEngine<2, ListGas<2>>::run_beyond_caches(std::uint64_t, double, NoCallback&);
+extern template std::uint64_t GasEngine<3, ListGas<3>>::run_beyond_caches(std::uint64_t, double, NoCallback&);
+extern template std::uint64_t GasEngine<2, CellGas<2>>::run_beyond_caches(
+    std::uint64_t, double, GasEngine<2, CellGas<2>>::ErasedCallback&);
+extern template std::uint64_t GasEngine<3, CellGas<3>>::run_beyond_caches(
+    std::uint64_t, double, GasEngine<3, CellGas<3>>::ErasedCallback&);
+extern template std::uint64_t GasEngine<2, ListGas<2>>::run_beyond_caches(
+    std::uint64_t, double, GasEngine<2, ListGas<2>>::ErasedCallback&);
+extern template std::uint64_t GasEngine<3, ListGas<3>>::run_beyond_caches(
+    std::uint64_t, double, GasEngine<3, ListGas<3>>::ErasedCallback&);
+}  // namespace billiards::simulation::detail
+#endif
