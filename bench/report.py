@@ -249,20 +249,25 @@ def table_events(runs):
     return "\n".join(lines)
 
 
+def cpu_ns(b):
+    """The benchmark's CPU time per iteration (its real time where the JSON has none)."""
+    return b.get("cpu_time", b["real_time"]) * TIME_UNITS[b["time_unit"]]
+
+
 def fastfiz_ratios(fastfiz, game, us):
-    """FastFiz's mean CPU time per break over ours (a mean too: the benchmark's time over the breaks it
-    played), a round at a time: ours from the round's own run of our breaks where it has one, else `us`
-    (the main run's)."""
+    """FastFiz's mean CPU time per break over ours (CPU time too, like for like, and a mean: the
+    benchmark's CPU time over the breaks it played), a round at a time: ours from the round's own run of
+    our breaks where it has one, else `us` (the main run's, µs)."""
     ratios = []
     for peer, breaks in fastfiz:
-        ours = per_item_ns(breaks[f"shot/break/{game}"]) / 1e3 if breaks is not None else us
+        ours = cpu_ns(breaks[f"shot/break/{game}"]) / 1e3 if breaks is not None else us
         ratios.append(peer[game]["cpu_time_per_shot_us"]["mean"] / ours)
     return ratios
 
 
 def shot_section(runs, pooltool, fastfiz=None):
     """Shots played to rest (billiards::simulation::Shot): breaks against pooltool's and FastFiz's, random shots."""
-    lines = ["| break (7-ft table, 8 m/s at the apex, b = 0.25 R, 1e-3 R jitter) | ours: µs per break | events | µs per event | pooltool: ms per break (median, seeds 1–20) | events | pooltool / ours | goal | FastFiz: µs per break (mean CPU time) | events (mean) | µs per event | FastFiz / ours |",
+    lines = ["| break (7-ft table, 8 m/s at the apex, b = 0.25 R, 1e-3 R jitter) | ours: µs per break | events | µs per event | pooltool: ms per break (median, seeds 1–20) | events | pooltool / ours | goal | FastFiz: µs per break (mean CPU time) | events (mean) | µs per event | FastFiz / ours (CPU time) |",
              "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|"]
     found = False
     for game, name in (("9ball", "9-ball"), ("8ball", "8-ball")):
@@ -282,7 +287,7 @@ def shot_section(runs, pooltool, fastfiz=None):
         if fastfiz:
             peer_us = statistics.median([peer[game]["cpu_time_per_shot_us"]["mean"] for peer, _ in fastfiz])
             peer_events = statistics.median([peer[game]["events_per_shot"]["mean"] for peer, _ in fastfiz])
-            ratio = statistics.median(fastfiz_ratios(fastfiz, game, us))
+            ratio = statistics.median(fastfiz_ratios(fastfiz, game, cpu_ns(b) / 1e3))
             row += f" {peer_us:,.0f} | {peer_events:.0f} | {peer_us / peer_events:.2f} | {ratio:.2f}× |"
         else:
             row += " (FastFiz not set up) | | | |"
@@ -317,7 +322,7 @@ def shot_section(runs, pooltool, fastfiz=None):
         lines.append(f"- FastFiz on the same core in the same run: {first.get('engine', 'FastFiz')}, {reps} "
                      f"breaks a game after a warm-up, its thread's CPU time per break (executeShot and its "
                      f"deletion); its events count its cue strike, ball–ball, ball–rail, pocket and state-change "
-                     f"events. Its mean is set against ours, which is a mean (our benchmark's time over the "
+                     f"events. Its mean is set against ours, which is a mean (our benchmark's CPU time over the "
                      f"breaks it played, the 64 racks in turn); its median break: {medians}.")
         if fastfiz[0][1] is not None:
             rounds = "; ".join(
