@@ -61,11 +61,11 @@ unity_groups = {"shot": ("engines.cpp", "batch.cpp", "games.cpp"),
 
 def unity_sources(folder: Path) -> list:
     """One source a group of `unity_groups`, written under `folder` (rewritten only where it changed),
-    each including its group's files from src/."""
+    each including its group's files by name (src/ is on the include path: no path is quoted)."""
     sources = []
     for name, files in unity_groups.items():
         target = folder / f"unity_{name}.cpp"
-        text = "".join(f'#include "{here / "src" / file}"\n' for file in files)
+        text = "".join(f'#include "{file}"\n' for file in files)
         target.parent.mkdir(parents=True, exist_ok=True)
         if not target.exists() or target.read_text() != text:
             target.write_text(text)
@@ -77,7 +77,7 @@ class BuildWithVersion(build_ext):
     def build_extensions(self):
         generated = version_header(Path(self.build_temp) / "version")
         for extension in self.extensions:
-            extension.include_dirs.append(str(generated))
+            extension.include_dirs += [str(generated), str(here / "src")]
             extension.sources = unity_sources(Path(self.build_temp) / "unity")
             extension.depends = [str(here / "src" / file) for files in unity_groups.values() for file in files]
         compile_in_parallel(self.compiler, len(os.sched_getaffinity(0)))
