@@ -79,7 +79,7 @@ class BuildWithVersion(build_ext):
         for extension in self.extensions:
             extension.include_dirs += [str(generated), str(here / "src")]
             extension.sources = unity_sources(Path(self.build_temp) / "unity")
-            extension.depends = [str(here / "src" / file) for files in unity_groups.values() for file in files]
+            extension.depends = [str(here / source) for source in sources]  # src/…, as listed below
         compile_in_parallel(self.compiler, len(os.sched_getaffinity(0)))
         super().build_extensions()
 
